@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages pound needs. Idempotent: when everything is present it
+# returns in about a second without touching apt.
+set -euo pipefail
+PKGS=(build-essential cmake pkg-config
+      libopenmpi-dev openmpi-bin
+      libeigen3-dev libhdf5-dev libboost-program-options-dev libfftw3-dev
+      libgtest-dev librandom123-dev
+      python3 python3-numpy python3-matplotlib python3-h5py)
+missing=()
+for p in "${PKGS[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#PKGS[@]} Debian packages present"
+  exit 0
+fi
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+echo "install-deps: installing ${missing[*]}"
+$SUDO apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"

@@ -1,0 +1,98 @@
+// pound impact: two free bodies colliding once through a chosen contact model.
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+
+#include "app/commands.hpp"
+#include "contact/registry.hpp"
+#include "io/json.hpp"
+#include "io/options.hpp"
+#include "solver/free_impact.hpp"
+
+namespace pound::app {
+namespace {
+
+std::vector<OptionSpec> impact_specs() {
+  return {
+      {"model", "", "hc-linear", "contact model: " + contact_model_names()},
+      {"e", "-", "0.65", "coefficient of restitution, in (0, 1]"},
+      {"k", "N/m or N/m^1.5", "", "contact stiffness (N/m linear laws, N/m^1.5 Hertz laws)"},
+      {"m1", "kg", "1", "mass of body 1 (moving towards body 2)"},
+      {"m2", "kg", "1", "mass of body 2 (at rest)"},
+      {"v0", "m/s", "1", "approach velocity"},
+      {"dt", "s", "", "fixed integration step (default: adaptive steps)"},
+      {"rtol", "-", "1e-10", "relative tolerance of the adaptive steps"},
+      {"v0-min", "m/s", "1e-9", "smallest approach velocity used by v0-scaled damping"},
+      {"json", "", "", "print one JSON object", true},
+  };
+}
+
+void print(const ImpactResult& r, bool json) {
+  if (json) {
+    JsonWriter w;
+    w.begin_object()
+        .field("e_eff", r.e_eff)
+        .field("contact_duration_s", r.contact_duration_s)
+        .field("impulse_Ns", r.impulse_Ns)
+        .field("peak_force_N", r.peak_force_N)
+        .field("max_penetration_m", r.max_penetration_m)
+        .field("v1_after", r.v1_after)
+        .field("v2_after", r.v2_after)
+        .field("contact_phases", r.contact_phases)
+        .field("internal_energy1_J", r.internal_energy1_J)
+        .field("internal_energy2_J", r.internal_energy2_J)
+        .end_object();
+    std::cout << w.str() << "\n";
+    return;
+  }
+  std::printf("e_eff               %.9g\n", r.e_eff);
+  std::printf("contact duration    %.9g s\n", r.contact_duration_s);
+  std::printf("impulse             %.9g N s\n", r.impulse_Ns);
+  std::printf("peak force          %.9g N\n", r.peak_force_N);
+  std::printf("max penetration     %.9g m\n", r.max_penetration_m);
+  std::printf("velocities after    %.9g, %.9g m/s\n", r.v1_after, r.v2_after);
+  if (!std::isnan(r.internal_energy1_J))
+    std::printf("internal energy     %.9g, %.9g J\n", r.internal_energy1_J, r.internal_energy2_J);
+}
+
+}  // namespace
+
+int run_impact(int argc, const char* const* argv) {
+  Options opt("impact", "Two free bodies (no springs, no ground motion) colliding once.",
+              impact_specs());
+  opt.parse(argc, argv);
+  if (opt.help_requested()) {
+    std::cout << opt.help_text();
+    return 0;
+  }
+  const std::string model = opt.get_string("model");
+  const auto& info = find_contact_model(model, opt.where("model"));
+  FreeImpactSpec spec;
+  spec.m1 = opt.get_positive("m1");
+  spec.m2 = opt.get_positive("m2");
+  spec.v0 = opt.get_positive("v0");
+  ContactParameters p;
+  p.e = opt.get_double("e");
+  if (!(p.e > 0 && p.e <= 1)) throw opt.invalid("e", "valid: e in (0, 1]");
+  if (!info.stiffness_unit.empty()) {
+    if (!opt.has("k"))
+      throw InputError(opt.where("k") + ": missing; model '" + model +
+                       "' needs a contact stiffness --k [" + info.stiffness_unit + "]");
+    p.k = opt.get_positive("k");
+  }
+  p.m1 = spec.m1;
+  p.m2 = spec.m2;
+  p.v0_min = opt.get_positive("v0-min");
+  IntegratorSettings integ;
+  integ.rtol = opt.get_positive("rtol");
+  integ.atol = 1e-16;
+  if (opt.given("dt")) {
+    integ.control = StepControl::fixed;
+    integ.dt = opt.get_positive("dt");
+  }
+  const auto law = info.make(p);
+  print(simulate_free_impact(*law, spec, integ), opt.flag("json"));
+  return 0;
+}
+
+}  // namespace pound::app

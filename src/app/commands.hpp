@@ -1,0 +1,8 @@
+#pragma once
+// The subcommands of the `pound` program. Each parses its options, calls the library and
+// reports; argv[0] is the subcommand name.
+namespace pound::app {
+int run_impact(int argc, const char* const* argv);
+int run_simulate(int argc, const char* const* argv);
+int run_motion(int argc, const char* const* argv);
+}  // namespace pound::app

@@ -1,0 +1,65 @@
+// pound: probabilistic seismic pounding assessment. Dispatches to the subcommands and turns
+// every error into one line on stderr and a non-zero exit code.
+#include <cstring>
+#include <exception>
+#include <iostream>
+#include <string>
+
+#include "app/commands.hpp"
+#include "core/error.hpp"
+#include "pound/version.hpp"
+
+namespace {
+
+struct Command {
+  const char* name;
+  int (*run)(int, const char* const*);
+  const char* summary;
+};
+
+const Command kCommands[] = {
+    {"impact", pound::app::run_impact, "two free bodies colliding once through a contact model"},
+    {"simulate", pound::app::run_simulate,
+     "buildings in a row under a ground motion, with and without pounding"},
+    {"motion", pound::app::run_motion,
+     "ground motions: response spectra, design spectra, spectrum-compatible generation"},
+};
+
+void usage(std::ostream& out) {
+  out << "pound " << pound::kVersion << " (" << pound::kGitRevision
+      << "): probabilistic seismic pounding assessment\n\nUsage: pound COMMAND [options]\n\n"
+         "Commands:\n";
+  for (const auto& c : kCommands) out << "  " << c.name << "\t" << c.summary << "\n";
+  out << "\n'pound COMMAND --help' lists the command's options with units and defaults.\n";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h")) {
+    usage(std::cout);
+    return argc < 2 ? 2 : 0;
+  }
+  if (!std::strcmp(argv[1], "--version")) {
+    std::cout << "pound " << pound::kVersion << " " << pound::kGitRevision << "\n";
+    return 0;
+  }
+  for (const auto& c : kCommands) {
+    if (std::strcmp(argv[1], c.name) != 0) continue;
+    try {
+      return c.run(argc - 1, argv + 1);
+    } catch (const pound::InputError& e) {
+      std::cerr << "pound " << c.name << ": error: " << e.what() << "\n";
+      return 2;
+    } catch (const pound::NumericalError& e) {
+      std::cerr << "pound " << c.name << ": numerical failure: " << e.what() << "\n";
+      return 3;
+    } catch (const std::exception& e) {
+      std::cerr << "pound " << c.name << ": internal error: " << e.what() << "\n";
+      return 1;
+    }
+  }
+  std::cerr << "pound: error: unknown command '" << argv[1]
+            << "'; valid commands: impact, simulate, motion (see 'pound --help')\n";
+  return 2;
+}

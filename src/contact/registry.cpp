@@ -1,0 +1,56 @@
+#include "contact/registry.hpp"
+
+#include "contact/hertzdamp.hpp"
+#include "contact/hertzdamp_ye.hpp"
+#include "contact/hunt_crossley.hpp"
+#include "contact/kelvin_ye.hpp"
+#include "contact/lve.hpp"
+#include "contact/mlve.hpp"
+#include "contact/nlve.hpp"
+#include "contact/stereomechanical.hpp"
+#include "core/error.hpp"
+
+namespace pound {
+namespace {
+template <class Law>
+std::unique_ptr<ContactLaw> make(const ContactParameters& p) {
+  return std::make_unique<Law>(p);
+}
+template <int TenthsOfExponent>
+std::unique_ptr<ContactLaw> make_hc(const ContactParameters& p) {
+  return std::make_unique<HuntCrossley>(p, TenthsOfExponent / 10.0);
+}
+}  // namespace
+
+const std::vector<ContactModelInfo>& contact_models() {
+  static const std::vector<ContactModelInfo> models = {
+      {"stereomechanical", "Goldsmith 1960", "", true, make<Stereomechanical>},
+      {"lve", "Anagnostopoulos 1988 (Th. 3.1)", "N/m", true, make<LinearViscoelastic>},
+      {"mlve", "Mahmoud & Jankowski 2011 (Th. 3.2)", "N/m", true,
+       make<ModifiedLinearViscoelastic>},
+      {"nlve", "Jankowski 2005 (Th. 3.3)", "N/m^1.5", true, make<NonlinearViscoelastic>},
+      {"hertzdamp", "Muthukumar & DesRoches 2006", "N/m^1.5", true, make<Hertzdamp>},
+      {"hertzdamp-ye", "Ye, Li & Zhu 2009", "N/m^1.5", true, make<HertzdampYe>},
+      {"kelvin-ye", "Ye, Li & Zhu 2009", "N/m", true, make<KelvinYe>},
+      {"hc-linear", "exact Hunt-Crossley, Khatiwada et al. 2014 (Th. 4.20)", "N/m", true,
+       make_hc<10>},
+      {"hc-hertz", "exact Hunt-Crossley, Khatiwada et al. 2014 (Th. 4.20)", "N/m^1.5", true,
+       make_hc<15>},
+  };
+  return models;
+}
+
+std::string contact_model_names() {
+  std::string s;
+  for (const auto& m : contact_models()) s += (s.empty() ? "" : ", ") + m.name;
+  return s;
+}
+
+const ContactModelInfo& find_contact_model(const std::string& name, const std::string& where) {
+  for (const auto& m : contact_models())
+    if (m.name == name) return m;
+  throw InputError(where + ": unknown contact model '" + name + "'; valid: " +
+                   contact_model_names() + ", sears");
+}
+
+}  // namespace pound

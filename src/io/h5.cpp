@@ -1,0 +1,92 @@
+#include "io/h5.hpp"
+
+#include "core/error.hpp"
+
+namespace pound::h5 {
+namespace {
+
+void check(herr_t status, const std::string& what) {
+  if (status < 0) throw InputError("HDF5: " + what + " failed");
+}
+
+std::string parent_of(const std::string& path) {
+  const auto slash = path.rfind('/');
+  return slash == 0 || slash == std::string::npos ? "/" : path.substr(0, slash);
+}
+
+}  // namespace
+
+File::File(const std::string& path) : path_(path) {
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors become exceptions, not prints
+  id_ = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  if (id_ < 0) throw InputError(path + ": cannot create the HDF5 file");
+}
+
+File::~File() {
+  if (id_ >= 0) H5Fclose(id_);
+}
+
+void File::flush() { check(H5Fflush(id_, H5F_SCOPE_GLOBAL), "flush of " + path_); }
+
+void ensure_group(hid_t file, const std::string& path) {
+  if (path.empty() || path == "/") return;
+  ensure_group(file, parent_of(path));
+  if (H5Lexists(file, path.c_str(), H5P_DEFAULT) > 0) return;
+  const hid_t g = H5Gcreate2(file, path.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  if (g < 0) throw InputError("HDF5: cannot create group " + path);
+  H5Gclose(g);
+}
+
+void write(hid_t file, const std::string& path, const std::vector<double>& data,
+           std::size_t rows, std::size_t cols, const std::string& units) {
+  ensure_group(file, parent_of(path));
+  hsize_t dims[2] = {rows, cols};
+  const hid_t space = H5Screate_simple(cols ? 2 : 1, dims, nullptr);
+  const hid_t ds = H5Dcreate2(file, path.c_str(), H5T_NATIVE_DOUBLE, space, H5P_DEFAULT,
+                              H5P_DEFAULT, H5P_DEFAULT);
+  if (ds < 0) throw InputError("HDF5: cannot create dataset " + path);
+  if (!data.empty()) check(H5Dwrite(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()), "write of " + path);
+  H5Dclose(ds);
+  H5Sclose(space);
+  if (!units.empty()) attribute(file, path, "units", units);
+}
+
+void write(hid_t file, const std::string& path, const std::vector<int>& data) {
+  ensure_group(file, parent_of(path));
+  hsize_t dims[1] = {data.size()};
+  const hid_t space = H5Screate_simple(1, dims, nullptr);
+  const hid_t ds = H5Dcreate2(file, path.c_str(), H5T_NATIVE_INT, space, H5P_DEFAULT,
+                              H5P_DEFAULT, H5P_DEFAULT);
+  if (ds < 0) throw InputError("HDF5: cannot create dataset " + path);
+  if (!data.empty()) check(H5Dwrite(ds, H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()), "write of " + path);
+  H5Dclose(ds);
+  H5Sclose(space);
+}
+
+void attribute(hid_t file, const std::string& object, const std::string& name,
+               const std::string& value) {
+  const hid_t type = H5Tcopy(H5T_C_S1);
+  H5Tset_size(type, H5T_VARIABLE);
+  H5Tset_cset(type, H5T_CSET_UTF8);
+  const hid_t space = H5Screate(H5S_SCALAR);
+  const hid_t attr = H5Acreate_by_name(file, object.c_str(), name.c_str(), type, space,
+                                       H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  if (attr < 0) throw InputError("HDF5: cannot create attribute " + object + ":" + name);
+  const char* p = value.c_str();
+  check(H5Awrite(attr, type, &p), "attribute " + name);
+  H5Aclose(attr);
+  H5Sclose(space);
+  H5Tclose(type);
+}
+
+void attribute(hid_t file, const std::string& object, const std::string& name, double value) {
+  const hid_t space = H5Screate(H5S_SCALAR);
+  const hid_t attr = H5Acreate_by_name(file, object.c_str(), name.c_str(), H5T_NATIVE_DOUBLE,
+                                       space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  if (attr < 0) throw InputError("HDF5: cannot create attribute " + object + ":" + name);
+  check(H5Awrite(attr, H5T_NATIVE_DOUBLE, &value), "attribute " + name);
+  H5Aclose(attr);
+  H5Sclose(space);
+}
+
+}  // namespace pound::h5

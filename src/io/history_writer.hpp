@@ -1,0 +1,26 @@
+#pragma once
+// Writes the time histories of a row simulation (`pound simulate --histories FILE.h5`).
+// Schema (SI units in each dataset's "units" attribute):
+//   /row/dof_building, /row/dof_floor      building index (0-based) and floor (1-based) of
+//                                          each displacement column
+//   /row/site_pair, /row/site_floor        pair index (0-based) and floor of each contact column
+//   /pounding/time [steps]                 s
+//   /pounding/displacement [steps, dofs]   m, relative to the ground
+//   /pounding/abs_acceleration [steps, dofs]  m/s^2
+//   /pounding/contact_force [steps, sites] N
+//   /free/...                              the same without pounding
+//   /motion/time, /motion/acceleration     s, m/s^2
+// Root attributes: config (resolved study), engine_version, git_revision.
+#include <string>
+
+#include "motion/ground_motion.hpp"
+#include "simulation/simulate_row.hpp"
+#include "structure/building_row.hpp"
+
+namespace pound {
+
+/// Writes the file atomically (a temporary renamed into place).
+void write_histories(const std::string& path, const BuildingRow& row, const GroundMotion& motion,
+                     const RowSimulation& sim, const std::string& config_text);
+
+}  // namespace pound

@@ -1,0 +1,271 @@
+#include "io/options.hpp"
+
+#include <algorithm>
+#include <boost/program_options.hpp>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+
+#include "io/ini.hpp"
+
+namespace po = boost::program_options;
+
+namespace pound {
+namespace {
+
+// Matches a key against a declared pattern in which '#' stands for a positive integer.
+bool key_matches(const std::string& pattern, const std::string& key) {
+  std::size_t i = 0, j = 0;
+  while (i < pattern.size() && j < key.size()) {
+    if (pattern[i] == '#') {
+      std::size_t k = j;
+      while (k < key.size() && std::isdigit(static_cast<unsigned char>(key[k]))) ++k;
+      if (k == j || key[j] == '0') return false;
+      j = k;
+      ++i;
+    } else {
+      if (pattern[i] != key[j]) return false;
+      ++i;
+      ++j;
+    }
+  }
+  return i == pattern.size() && j == key.size();
+}
+
+// Expands a pattern for command-line registration (building1..building9).
+std::vector<std::string> expand(const std::string& pattern) {
+  const auto p = pattern.find('#');
+  if (p == std::string::npos) return {pattern};
+  std::vector<std::string> out;
+  for (int n = 1; n <= 9; ++n) {
+    for (const auto& rest : expand(pattern.substr(p + 1)))
+      out.push_back(pattern.substr(0, p) + std::to_string(n) + rest);
+  }
+  return out;
+}
+
+std::string trim(const std::string& s) {
+  const auto b = s.find_first_not_of(" \t");
+  if (b == std::string::npos) return "";
+  return s.substr(b, s.find_last_not_of(" \t") - b + 1);
+}
+
+}  // namespace
+
+double parse_number(const std::string& text, const std::string& where) {
+  const std::string t = trim(text);
+  errno = 0;
+  char* end = nullptr;
+  const double v = std::strtod(t.c_str(), &end);
+  if (t.empty() || end != t.c_str() + t.size() || errno == ERANGE || !std::isfinite(v))
+    throw InputError(where + ": '" + t + "' is not a finite number");
+  return v;
+}
+
+std::vector<double> parse_number_list(const std::string& text, const std::string& where) {
+  std::string s = text;
+  std::replace(s.begin(), s.end(), ',', ' ');
+  std::istringstream in(s);
+  std::vector<double> out;
+  std::string tok;
+  while (in >> tok) out.push_back(parse_number(tok, where));
+  if (out.empty()) throw InputError(where + ": expected a list of numbers, got nothing");
+  return out;
+}
+
+Options::Options(std::string command, std::string summary, std::vector<OptionSpec> specs)
+    : command_(std::move(command)), summary_(std::move(summary)), specs_(std::move(specs)) {}
+
+const OptionSpec* Options::find_spec(const std::string& key) const {
+  for (const auto& s : specs_)
+    if (key_matches(s.key, key)) return &s;
+  return nullptr;
+}
+
+std::string Options::valid_keys_hint(const std::string& key) const {
+  // List declared keys of the same section, or all when the section is unknown.
+  const auto dot = key.rfind('.');
+  const std::string section = dot == std::string::npos ? "" : key.substr(0, dot);
+  std::string list;
+  for (const auto& s : specs_) {
+    if (s.flag) continue;
+    const auto sd = s.key.rfind('.');
+    const std::string ssec = sd == std::string::npos ? "" : s.key.substr(0, sd);
+    if (!section.empty() && !key_matches(ssec, section)) continue;
+    if (section.empty() && !ssec.empty()) continue;
+    list += (list.empty() ? "" : ", ") + s.key;
+  }
+  if (list.empty())
+    for (const auto& s : specs_)
+      if (!s.flag) list += (list.empty() ? "" : ", ") + s.key;
+  return list;
+}
+
+void Options::parse(int argc, const char* const* argv) {
+  po::options_description desc;
+  desc.add_options()("help,h", "")("config", po::value<std::string>(), "");
+  for (const auto& s : specs_) {
+    for (const auto& name : expand(s.key)) {
+      if (s.flag)
+        desc.add_options()(name.c_str(), po::bool_switch(), "");
+      else
+        desc.add_options()(name.c_str(), po::value<std::string>(), "");
+    }
+  }
+  po::variables_map vm;
+  try {
+    po::store(po::command_line_parser(argc, argv)
+                  .options(desc)
+                  .style(po::command_line_style::unix_style ^
+                         po::command_line_style::allow_guessing)
+                  .run(),
+              vm);
+  } catch (const po::error& e) {
+    throw InputError(command_ + ": command line: " + e.what() + " (see 'pound " + command_ +
+                     " --help')");
+  }
+  help_ = vm.count("help") > 0;
+  for (const auto& kv : vm) {
+    if (kv.first == "help" || kv.first == "config") continue;
+    const auto* spec = find_spec(kv.first);
+    if (spec && spec->flag) {
+      if (kv.second.as<bool>()) values_[kv.first] = Value{"true", "", 0};
+    } else if (!kv.second.defaulted()) {
+      values_[kv.first] = Value{kv.second.as<std::string>(), "", 0};
+    }
+  }
+  if (vm.count("config")) {
+    config_path_ = vm["config"].as<std::string>();
+    for (const auto& e : read_ini(config_path_)) {
+      const auto* spec = find_spec(e.key);
+      if (!spec || spec->flag) {
+        throw InputError(e.file + ":" + std::to_string(e.line) + ": unknown key '" + e.key +
+                         "' for 'pound " + command_ + "'; valid keys: " + valid_keys_hint(e.key));
+      }
+      values_.emplace(e.key, Value{e.value, e.file, e.line});  // command line wins
+    }
+  }
+}
+
+const Options::Value* Options::lookup(const std::string& key) const {
+  const auto it = values_.find(key);
+  return it == values_.end() ? nullptr : &it->second;
+}
+
+bool Options::given(const std::string& key) const { return lookup(key) != nullptr; }
+
+bool Options::has(const std::string& key) const {
+  if (given(key)) return true;
+  const auto* s = find_spec(key);
+  return s && !s->default_value.empty();
+}
+
+bool Options::flag(const std::string& key) const {
+  const auto* v = lookup(key);
+  return v && v->text == "true";
+}
+
+std::string Options::where(const std::string& key) const {
+  const auto* v = lookup(key);
+  if (v && !v->file.empty()) return v->file + ":" + std::to_string(v->line) + ": key '" + key + "'";
+  if (v) return "command line: --" + key;
+  return (config_path_.empty() ? std::string("command line") : config_path_) + ": key '" + key +
+         "'";
+}
+
+InputError Options::invalid(const std::string& key, const std::string& valid) const {
+  const auto* v = lookup(key);
+  std::string msg = where(key);
+  if (v) msg += " = '" + v->text + "'";
+  return InputError(msg + ": " + valid);
+}
+
+std::string Options::get_string(const std::string& key) const {
+  if (const auto* v = lookup(key)) return v->text;
+  const auto* s = find_spec(key);
+  if (!s) throw std::logic_error("option '" + key + "' was never declared");
+  if (s->default_value.empty())
+    throw InputError(where(key) + ": missing; " + s->help +
+                     (s->unit.empty() ? "" : " [" + s->unit + "]"));
+  return s->default_value;
+}
+
+std::string Options::get_path(const std::string& key) const {
+  const std::string p = get_string(key);
+  const auto* v = lookup(key);
+  if (p.empty() || p[0] == '/' || !v || v->file.empty()) return p;
+  const auto slash = v->file.rfind('/');
+  return slash == std::string::npos ? p : v->file.substr(0, slash + 1) + p;
+}
+
+double Options::get_double(const std::string& key) const {
+  return parse_number(get_string(key), where(key));
+}
+
+long Options::get_int(const std::string& key) const {
+  const double v = get_double(key);
+  if (v != std::floor(v) || std::fabs(v) > 1e15) throw invalid(key, "must be a whole number");
+  return static_cast<long>(v);
+}
+
+std::vector<double> Options::get_doubles(const std::string& key) const {
+  return parse_number_list(get_string(key), where(key));
+}
+
+double Options::get_positive(const std::string& key) const {
+  const double v = get_double(key);
+  if (!(v > 0)) throw invalid(key, "must be > 0");
+  return v;
+}
+
+double Options::get_nonnegative(const std::string& key) const {
+  const double v = get_double(key);
+  if (!(v >= 0)) throw invalid(key, "must be >= 0");
+  return v;
+}
+
+int Options::count_numbered(const std::string& prefix) const {
+  int n = 0;
+  for (const auto& kv : values_) {
+    if (kv.first.compare(0, prefix.size(), prefix) != 0) continue;
+    std::size_t k = prefix.size();
+    int num = 0;
+    while (k < kv.first.size() && std::isdigit(static_cast<unsigned char>(kv.first[k])))
+      num = num * 10 + (kv.first[k++] - '0');
+    if (k > prefix.size() && k < kv.first.size() && kv.first[k] == '.') n = std::max(n, num);
+  }
+  return n;
+}
+
+std::string Options::resolved_text() const {
+  std::map<std::string, std::string> all;
+  for (const auto& s : specs_)
+    if (s.key.find('#') == std::string::npos && !s.default_value.empty() && !s.flag)
+      all[s.key] = s.default_value;
+  for (const auto& kv : values_) all[kv.first] = kv.second.text;
+  std::string out;
+  for (const auto& kv : all) out += kv.first + " = " + kv.second + "\n";
+  return out;
+}
+
+std::string Options::help_text() const {
+  std::ostringstream out;
+  out << "Usage: pound " << command_ << " [--config STUDY.ini] [options]\n" << summary_ << "\n\n";
+  out << "Every option can also be given as 'key = value' in the study file; INI sections\n"
+         "give the part before the dot ([building1] masses = ... is building1.masses).\n"
+         "The command line wins over the file. '#' stands for 1, 2, 3, ...\n\n";
+  out << "  --config FILE                study file (INI)\n";
+  for (const auto& s : specs_) {
+    std::string lhs = "  --" + s.key;
+    if (!s.flag) lhs += " ARG";
+    if (lhs.size() < 31) lhs.resize(31, ' ');
+    out << lhs << " " << s.help;
+    if (!s.unit.empty() && s.unit != "-") out << " [" << s.unit << "]";
+    if (!s.default_value.empty()) out << " (default " << s.default_value << ")";
+    out << "\n";
+  }
+  return out.str();
+}
+
+}  // namespace pound

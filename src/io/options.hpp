@@ -1,0 +1,91 @@
+#pragma once
+// Options of one subcommand, from the command line and an INI study file (--config FILE), the
+// command line winning. Every option is declared once with its unit, default and meaning;
+// the declarations drive --help, the unknown-key check and the error messages, which name the
+// file and line (or the command-line flag), the key and what would be valid.
+//
+// A key may contain '#', standing for a positive integer: "building#.masses" declares
+// building1.masses, building2.masses, ...
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/error.hpp"
+
+namespace pound {
+
+struct OptionSpec {
+  std::string key;            ///< dotted key; section "a" and key "b" in INI give "a.b"
+  std::string unit;           ///< SI unit or "-" for dimensionless, "" for text and flags
+  std::string default_value;  ///< "" means no default (optional unless required)
+  std::string help;           ///< one line: what it means and what is valid
+  bool flag = false;          ///< a switch without value (command line only, e.g. --json)
+};
+
+class Options {
+ public:
+  Options(std::string command, std::string summary, std::vector<OptionSpec> specs);
+
+  /// Parses argv (after the subcommand name). Reads --config FILE when given. Throws
+  /// InputError on unknown options or keys, repeated keys and syntax errors.
+  void parse(int argc, const char* const* argv);
+
+  bool help_requested() const { return help_; }
+  std::string help_text() const;
+
+  /// True when the key was given (command line or file) or has a default.
+  bool has(const std::string& key) const;
+  /// True when the key was given by the user.
+  bool given(const std::string& key) const;
+  bool flag(const std::string& key) const;
+
+  std::string get_string(const std::string& key) const;
+  double get_double(const std::string& key) const;
+  long get_int(const std::string& key) const;
+  /// A file path; a relative path given in the study file is taken relative to the study
+  /// file's folder, one given on the command line relative to the working directory.
+  std::string get_path(const std::string& key) const;
+  std::vector<double> get_doubles(const std::string& key) const;
+
+  /// Doubles with a check: lo < x (or lo <= x) and x <= hi; `what` names the quantity.
+  double get_positive(const std::string& key) const;
+  double get_nonnegative(const std::string& key) const;
+
+  /// Highest N for which any "prefix#." key was given (0 when none).
+  int count_numbered(const std::string& prefix) const;
+
+  /// Where a value came from: "study.ini:12: key 'gap'" or "command line: --gap".
+  std::string where(const std::string& key) const;
+  /// An InputError saying that the key's value is invalid and what is valid.
+  InputError invalid(const std::string& key, const std::string& valid) const;
+
+  /// The resolved configuration (given keys and defaults), as INI-like "key = value" lines,
+  /// sorted by key. Stored in result files and echoed at start.
+  std::string resolved_text() const;
+  const std::string& config_path() const { return config_path_; }
+
+ private:
+  struct Value {
+    std::string text;
+    std::string file;  // "" for the command line
+    int line = 0;
+  };
+  const OptionSpec* find_spec(const std::string& key) const;
+  const Value* lookup(const std::string& key) const;
+  std::string valid_keys_hint(const std::string& key) const;
+
+  std::string command_, summary_;
+  std::vector<OptionSpec> specs_;
+  std::map<std::string, Value> values_;
+  std::string config_path_;
+  bool help_ = false;
+};
+
+/// Parses a list of numbers separated by commas and/or white space. Throws InputError with
+/// `where` in the message on a non-number.
+std::vector<double> parse_number_list(const std::string& text, const std::string& where);
+/// Parses one finite number; throws InputError naming `where`.
+double parse_number(const std::string& text, const std::string& where);
+
+}  // namespace pound

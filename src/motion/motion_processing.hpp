@@ -1,0 +1,39 @@
+#pragma once
+// Operations on a ground-acceleration record: integration, baseline correction, truncation
+// and scaling. Pure functions: a new GroundMotion in, a new GroundMotion out.
+#include <vector>
+
+#include "motion/ground_motion.hpp"
+
+namespace pound {
+
+/// Ground velocity [m/s] and displacement [m] at the samples, starting from rest, for the
+/// piecewise-linear acceleration between samples (exact integration of that interpolant):
+///   v_{i+1} = v_i + dt (a_i + a_{i+1}) / 2
+///   d_{i+1} = d_i + dt v_i + dt^2 (2 a_i + a_{i+1}) / 6
+struct GroundKinematics {
+  std::vector<double> velocity;      ///< [m/s]
+  std::vector<double> displacement;  ///< [m]
+  double final_velocity() const { return velocity.empty() ? 0.0 : velocity.back(); }
+  double final_displacement() const { return displacement.empty() ? 0.0 : displacement.back(); }
+};
+GroundKinematics integrate(const GroundMotion& motion);
+
+/// Baseline correction. A correction acceleration a_c(t) = sum_{k=0}^{3} c_k (t/T)^k (T the
+/// duration) is subtracted; its displacement is a polynomial in t^2..t^5. The coefficients
+/// minimise the squared difference between the record's displacement and the correction's
+/// displacement over all samples (the classic least-squares polynomial fit to the
+/// displacement drift), subject to the two equality constraints that the corrected final
+/// velocity and final displacement are zero (to round-off; both use the same exact
+/// integration as integrate()). Solved as a 6x6 KKT system. Records shorter than 8 samples
+/// are returned unchanged.
+GroundMotion baseline_correct(const GroundMotion& motion);
+
+/// The first `seconds` [s] of a record (samples with t <= seconds, to 1e-9 dt). Throws
+/// InputError when seconds <= 0.
+GroundMotion truncate(const GroundMotion& motion, double seconds);
+
+/// The record multiplied by `factor` [-].
+GroundMotion scale(const GroundMotion& motion, double factor);
+
+}  // namespace pound

@@ -1,0 +1,57 @@
+#pragma once
+// Readers for recorded ground motions. Three formats:
+//
+//  * PEER NGA `.AT2`: four header lines (the third names the units, "... IN UNITS OF G"; the
+//    fourth gives "NPTS= n, DT= dt SEC" or "n dt NPTS, DT"), then the values, any number per
+//    line. The value count must equal NPTS.
+//  * Plain columns: one column (acceleration, dt from the spec or a "# dt: X" header line) or
+//    two columns (time [s], acceleration). Lines starting with '#' are header lines; a header
+//    line "# units: g|m/s2|cm/s2" (or one containing "(g)", "[g]", ...) states the units.
+//  * Fixed width, like the 1940 El Centro file: '#' header lines saying "N points at equal
+//    spacing of DT sec" and "The units are (g)", then 10-character fields (FORTRAN 8F10.5).
+//    The last data line may be padded with zeros to a full line; values beyond N must be 0.
+//
+// Units are never guessed: they come from the spec or from the header; when both are given
+// they must agree. Every error is an InputError "FILE:LINE: what is wrong; what is valid".
+#include <optional>
+#include <string>
+
+#include "motion/ground_motion.hpp"
+#include "motion/motion_processing.hpp"
+
+namespace pound {
+
+enum class AccelUnits { g, m_per_s2, cm_per_s2 };
+enum class MotionFormat { automatic, peer_at2, columns, fixed_width };
+
+struct MotionFileSpec {
+  std::string path;
+  /// automatic: a .AT2 extension -> peer_at2; a '#' header naming "(g)" and "... spacing of
+  /// DT sec" like the El Centro file -> fixed_width; otherwise columns.
+  MotionFormat format = MotionFormat::automatic;
+  /// Units of the values in the file; required unless the header states them.
+  std::optional<AccelUnits> units;
+  /// Sample spacing [s]; required for one-column files unless the header states it.
+  double dt = 0.0;
+};
+
+/// Reads a record; the acceleration is converted to m/s^2 (g -> kGravity). The name is the
+/// file path. Throws InputError naming the file and line on: a file that cannot be opened, a
+/// non-numeric or non-finite value, a non-uniform time step, a missing or conflicting unit or
+/// dt, a value count different from the header's, and an empty record.
+GroundMotion read_motion(const MotionFileSpec& spec);
+
+/// "g", "m/s2" (also "m/s^2"), "cm/s2" (also "cm/s^2", "gal"). Throws InputError
+/// "WHERE: 'text' is not a unit of acceleration; valid: g, m/s2, cm/s2".
+AccelUnits parse_accel_units(const std::string& text, const std::string& where);
+
+/// Factor converting a value in `units` to m/s^2.
+double to_m_per_s2(AccelUnits units);
+
+/// "g", "m/s2" or "cm/s2".
+const char* units_name(AccelUnits units);
+
+/// "automatic", "at2", "columns", "fixed-width"; parse_motion_format accepts the same names.
+MotionFormat parse_motion_format(const std::string& text, const std::string& where);
+
+}  // namespace pound

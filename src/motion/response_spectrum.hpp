@@ -1,0 +1,84 @@
+#pragma once
+// Elastic single-degree-of-freedom response spectra by the exact piecewise-linear recurrence
+// of Nigam & Jennings (1969), "Calculation of response spectra from strong-motion
+// earthquake records", BSSA 59(2):909-922.
+//
+// The oscillator  x'' + 2 zeta omega x' + omega^2 x = -a_g(t)  (x relative displacement [m])
+// is advanced exactly for the ground acceleration interpolated linearly between samples. The
+// response is exact at every step for that interpolant; sub-stepping only adds points at
+// which the peak is looked for (steps of at most max_step_fraction * T), which matters at
+// short periods (El Centro NS, 5 %, T = 0.2 s: PSA 0.793 g without, 0.820 g with T/20).
+// Peaks are taken over the record's duration (no free-vibration tail).
+#include <vector>
+
+#include "motion/ground_motion.hpp"
+
+namespace pound {
+
+struct ResponseSpectrumOptions {
+  /// Largest step used to look for peaks, as a fraction of the period [-]: each record step
+  /// dt is split into ceil(dt / (fraction T)) equal sub-steps. 0 = no sub-stepping.
+  double max_step_fraction = 0.05;
+};
+
+/// Peaks at the given periods for one damping ratio.
+struct ResponseSpectrum {
+  double damping = 0.05;        ///< fraction of critical [-]
+  std::vector<double> period;   ///< T [s]
+  std::vector<double> sd;       ///< peak relative displacement [m]
+  std::vector<double> psv;      ///< pseudo-velocity omega * sd [m/s]
+  std::vector<double> psa;      ///< pseudo-acceleration omega^2 * sd [m/s^2]
+  std::vector<double> sa_abs;   ///< peak absolute acceleration |x'' + a_g| [m/s^2]
+};
+
+/// Exact one-step propagator of the oscillator over a step h for a linearly varying ground
+/// acceleration (Nigam & Jennings 1969, eq. 6-7 form):
+///   x1 = a11 x0 + a12 v0 + b11 ag0 + b12 ag1,   v1 = a21 x0 + a22 v0 + b21 ag0 + b22 ag1.
+struct SdofStep {
+  double a11, a12, a21, a22, b11, b12, b21, b22;
+  /// period T > 0 [s], damping 0 <= zeta < 1 [-], step h > 0 [s]
+  static SdofStep make(double period, double damping, double h);
+};
+
+/// Relative displacement [m] and velocity [m/s] at the record's samples, from rest.
+struct SdofHistory {
+  std::vector<double> x, v;
+};
+SdofHistory sdof_history(const GroundMotion& motion, double period, double damping);
+
+/// Evaluates spectra of many records of one sample spacing at fixed periods and damping;
+/// the step coefficients are computed once (the generator calls this in its iterations).
+class SpectrumCalculator {
+ public:
+  /// periods >= 0 [s] (T = 0 gives the peak ground acceleration), damping in [0, 1) [-],
+  /// dt > 0 [s]. Throws InputError on invalid values.
+  SpectrumCalculator(std::vector<double> periods, double damping, double dt,
+                     ResponseSpectrumOptions options = {});
+  /// Spectrum of accel [m/s^2] sampled at dt.
+  ResponseSpectrum compute(const std::vector<double>& accel) const;
+  /// Only the pseudo-acceleration [m/s^2] (the generator's inner loop), into psa.
+  void compute_psa(const std::vector<double>& accel, std::vector<double>& psa) const;
+  const std::vector<double>& periods() const { return periods_; }
+
+ private:
+  struct PerPeriod {
+    double omega = 0.0;  // 0 for T = 0
+    int substeps = 1;
+    SdofStep step{};
+  };
+  // Peak |x| and peak |x'' + a_g| for one period.
+  void peaks(const PerPeriod& p, const std::vector<double>& accel, double& sd,
+             double& sa) const;
+  std::vector<double> periods_;
+  double damping_, dt_;
+  std::vector<PerPeriod> per_;
+};
+
+/// Response spectrum of a record at the given periods [s] and damping [-].
+ResponseSpectrum response_spectrum(const GroundMotion& motion, const std::vector<double>& periods,
+                                   double damping, ResponseSpectrumOptions options = {});
+
+/// n periods spaced evenly in log T from t_min to t_max [s] (both included), n >= 2.
+std::vector<double> log_spaced_periods(double t_min, double t_max, int n);
+
+}  // namespace pound

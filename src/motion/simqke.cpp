@@ -1,0 +1,244 @@
+#include "motion/simqke.hpp"
+
+#include <fftw3.h>
+
+#include <Random123/philox.h>
+#include <algorithm>
+#include <cmath>
+#include <mutex>
+#include <string>
+
+#include "core/error.hpp"
+#include "motion/motion_processing.hpp"
+#include "motion/response_spectrum.hpp"
+
+namespace pound {
+namespace {
+
+// FFTW's planner is not thread-safe: plans are made and destroyed under this lock.
+std::mutex& planner_mutex() {
+  static std::mutex m;
+  return m;
+}
+
+// Smallest size >= n of the form 2^a 3^b 5^c, even (fast FFTW sizes).
+std::size_t good_fft_size(std::size_t n) {
+  for (std::size_t m = std::max<std::size_t>(n, 2);; ++m) {
+    if (m % 2) continue;
+    std::size_t r = m;
+    for (std::size_t p : {2u, 3u, 5u})
+      while (r % p == 0) r /= p;
+    if (r == 1) return m;
+  }
+}
+
+}  // namespace
+
+double philox_uniform(std::uint64_t seed, std::uint64_t index, std::uint32_t i) {
+  using Rng = r123::Philox4x32;
+  const Rng::key_type key = {{static_cast<std::uint32_t>(seed),
+                              static_cast<std::uint32_t>(seed >> 32)}};
+  const Rng::ctr_type ctr = {{i, 0u, static_cast<std::uint32_t>(index),
+                              static_cast<std::uint32_t>(index >> 32)}};
+  const Rng::ctr_type r = Rng()(ctr, key);
+  // 27 + 26 bits -> [0, 1) with 53-bit resolution (the usual two-word construction).
+  const double hi = double(r[0] >> 5), lo = double(r[1] >> 6);
+  return (hi * 67108864.0 + lo) / 9007199254740992.0;
+}
+
+SpectrumMatch compare_spectra(const std::vector<double>& computed,
+                              const std::vector<double>& target) {
+  SpectrumMatch m;
+  if (computed.empty() || computed.size() != target.size()) return m;
+  m.min_ratio = 1e300;
+  m.max_ratio = 0.0;
+  double sum = 0.0;
+  for (std::size_t i = 0; i < computed.size(); ++i) {
+    const double r = computed[i] / target[i];
+    m.min_ratio = std::min(m.min_ratio, r);
+    m.max_ratio = std::max(m.max_ratio, r);
+    sum += r;
+  }
+  m.mean_ratio = sum / double(computed.size());
+  return m;
+}
+
+struct SimqkeGenerator::Impl {
+  SimqkeSettings settings;
+  double duration = 0.0;
+  std::size_t n = 0, nfft = 0, nbins = 0;
+  std::vector<double> envelope;       // I(t_i), i < n
+  std::vector<double> amp0;           // first-guess A_k
+  std::vector<double> target_psa;     // at the matching periods [m/s^2]
+  std::vector<std::size_t> bin_j;     // matching-period interval of bin k
+  std::vector<double> bin_w;          // weight of j + 1 in log period
+  std::unique_ptr<SpectrumCalculator> spectra;
+  double* real = nullptr;             // nfft reals
+  fftw_complex* spec = nullptr;       // nbins complex
+  fftw_plan c2r = nullptr, r2c = nullptr;
+
+  ~Impl() {
+    std::lock_guard<std::mutex> lock(planner_mutex());
+    if (c2r) fftw_destroy_plan(c2r);
+    if (r2c) fftw_destroy_plan(r2c);
+    if (real) fftw_free(real);
+    if (spec) fftw_free(spec);
+  }
+
+  // Ratio target / computed at bin k, interpolated in log period.
+  double bin_ratio(const std::vector<double>& ratio, std::size_t k) const {
+    const std::size_t j = bin_j[k];
+    return ratio[j] + bin_w[k] * (ratio[std::min(j + 1, ratio.size() - 1)] - ratio[j]);
+  }
+
+  // The enveloped, baseline-corrected motion for amplitudes amp and phases phi.
+  GroundMotion synthesise(const std::vector<double>& amp, const std::vector<double>& cosphi,
+                          const std::vector<double>& sinphi) {
+    for (std::size_t k = 0; k < nbins; ++k) {
+      spec[k][0] = 0.5 * amp[k] * cosphi[k];
+      spec[k][1] = 0.5 * amp[k] * sinphi[k];
+    }
+    fftw_execute(c2r);  // real_j = sum_k A_k cos(w_k t_j + phi_k); destroys spec
+    GroundMotion m{"", settings.dt, std::vector<double>(n)};
+    for (std::size_t i = 0; i < n; ++i) m.accel[i] = real[i] * envelope[i];
+    return baseline_correct(m);
+  }
+
+  // The motion with its Fourier amplitudes (zero-padded to nfft) multiplied by the ratio,
+  // phases kept, then baseline-corrected.
+  GroundMotion correct(const GroundMotion& m, const std::vector<double>& ratio) {
+    std::copy(m.accel.begin(), m.accel.end(), real);
+    std::fill(real + n, real + nfft, 0.0);
+    fftw_execute(r2c);
+    spec[0][0] = spec[0][1] = 0.0;
+    for (std::size_t k = 1; k < nbins; ++k) {
+      const double f = bin_ratio(ratio, k) / double(nfft);
+      spec[k][0] *= f;
+      spec[k][1] *= f;
+    }
+    fftw_execute(c2r);
+    GroundMotion out{"", settings.dt, std::vector<double>(real, real + n)};
+    return baseline_correct(out);
+  }
+};
+
+SimqkeGenerator::SimqkeGenerator(const DesignSpectrum& target, double duration,
+                                 SimqkeSettings settings)
+    : impl_(std::make_unique<Impl>()) {
+  Impl& d = *impl_;
+  d.settings = settings;
+  d.duration = duration;
+  const double dt = settings.dt;
+  if (!(dt > 0.0)) throw InputError("motion generator: dt must be > 0 s");
+  if (!(duration >= 10.0 * dt)) throw InputError("motion generator: duration must be >= 10 dt");
+  if (!(settings.match_t_min > 0.0 && settings.match_t_max > settings.match_t_min &&
+        settings.match_periods >= 2))
+    throw InputError("motion generator: need 0 < match_t_min < match_t_max, >= 2 periods");
+  if (!(settings.max_iterations >= 0 && settings.tolerance > 0.0))
+    throw InputError("motion generator: max_iterations >= 0 and tolerance > 0 required");
+  d.n = static_cast<std::size_t>(std::llround(duration / dt)) + 1;
+  d.nfft = good_fft_size(2 * d.n);
+  d.nbins = d.nfft / 2 + 1;
+
+  const Envelope env(settings.envelope, duration);
+  d.envelope.resize(d.n);
+  for (std::size_t i = 0; i < d.n; ++i) d.envelope[i] = env(dt * double(i));
+
+  const std::vector<double> periods =
+      log_spaced_periods(settings.match_t_min, settings.match_t_max, settings.match_periods);
+  d.target_psa = target.sample(periods);
+  d.spectra = std::make_unique<SpectrumCalculator>(periods, target.damping(), dt);
+
+  // First guess of the amplitudes and the bins' places among the matching periods.
+  const double zeta = std::max(target.damping(), 0.005);
+  const double dw = 2.0 * M_PI / (double(d.nfft) * dt);
+  const double f_nyq = 0.5 / dt;
+  const double f_max = settings.max_frequency > 0.0 ? std::min(settings.max_frequency, f_nyq)
+                                                    : 0.8 * f_nyq;
+  const double f_min = 1.0 / (1.5 * settings.match_t_max);
+  const double ts = env.strong_duration();
+  d.amp0.assign(d.nbins, 0.0);
+  d.bin_j.assign(d.nbins, 0);
+  d.bin_w.assign(d.nbins, 0.0);
+  const double lt0 = std::log(periods.front());
+  const double dlt = std::log(periods.back() / periods.front()) / double(periods.size() - 1);
+  for (std::size_t k = 1; k < d.nbins; ++k) {
+    const double w = dw * double(k), f = w / (2.0 * M_PI);
+    const double x = (std::log(1.0 / f) - lt0) / dlt;
+    if (x <= 0.0) {
+      d.bin_j[k] = 0;
+    } else if (x >= double(periods.size() - 1)) {
+      d.bin_j[k] = periods.size() - 1;
+    } else {
+      d.bin_j[k] = static_cast<std::size_t>(x);
+      d.bin_w[k] = x - double(d.bin_j[k]);
+    }
+    if (f < f_min || f > f_max) continue;
+    const double nu = std::max(1.5, w * ts / (2.0 * M_PI * std::log(2.0)));
+    const double r = std::sqrt(2.0 * std::log(2.0 * nu));
+    const double sa = target.sa(1.0 / f);
+    const double g = 4.0 * zeta * (sa / r) * (sa / r) / (M_PI * w);
+    d.amp0[k] = std::sqrt(2.0 * g * dw);
+  }
+
+  std::lock_guard<std::mutex> lock(planner_mutex());
+  d.real = fftw_alloc_real(d.nfft);
+  d.spec = fftw_alloc_complex(d.nbins);
+  if (!d.real || !d.spec) throw NumericalError("motion generator: FFT buffers not allocated");
+  d.c2r = fftw_plan_dft_c2r_1d(int(d.nfft), d.spec, d.real, FFTW_ESTIMATE);
+  d.r2c = fftw_plan_dft_r2c_1d(int(d.nfft), d.real, d.spec, FFTW_ESTIMATE);
+  if (!d.c2r || !d.r2c) throw NumericalError("motion generator: no FFTW plan");
+}
+
+SimqkeGenerator::~SimqkeGenerator() = default;
+
+const std::vector<double>& SimqkeGenerator::match_periods() const {
+  return impl_->spectra->periods();
+}
+const std::vector<double>& SimqkeGenerator::match_target() const { return impl_->target_psa; }
+
+GeneratedMotion SimqkeGenerator::generate(std::uint64_t seed, std::uint64_t index) {
+  Impl& d = *impl_;
+  std::vector<double> cosphi(d.nbins), sinphi(d.nbins);
+  for (std::size_t k = 0; k < d.nbins; ++k) {
+    const double phi = 2.0 * M_PI * philox_uniform(seed, index, std::uint32_t(k));
+    cosphi[k] = std::cos(phi);
+    sinphi[k] = std::sin(phi);
+  }
+  std::vector<double> psa, ratio(d.target_psa.size());
+  GeneratedMotion best;
+  double best_dev = 1e300;
+  GroundMotion m = d.synthesise(d.amp0, cosphi, sinphi);
+  for (int it = 0;; ++it) {
+    if (it > 0) m = d.correct(m, ratio);
+    d.spectra->compute_psa(m.accel, psa);
+    double dev = 0.0;
+    for (std::size_t j = 0; j < psa.size(); ++j) {
+      if (!(psa[j] > 0.0) || !std::isfinite(psa[j]))
+        throw NumericalError("motion generator: non-positive response spectrum at T = " +
+                             std::to_string(d.spectra->periods()[j]) + " s");
+      ratio[j] = d.target_psa[j] / psa[j];
+      dev = std::max(dev, std::fabs(psa[j] / d.target_psa[j] - 1.0));
+    }
+    if (dev < best_dev) {
+      best_dev = dev;
+      best.motion = m;
+      best.iterations = it;
+      best.match = compare_spectra(psa, d.target_psa);
+    }
+    if (dev <= d.settings.tolerance || it >= d.settings.max_iterations) break;
+  }
+  best.motion.name = "simqke seed " + std::to_string(seed) + " index " + std::to_string(index);
+  const GroundKinematics kin = integrate(best.motion);
+  best.final_velocity = kin.final_velocity();
+  best.final_displacement = kin.final_displacement();
+  return best;
+}
+
+GroundMotion generate_spectrum_compatible(const DesignSpectrum& target, double duration,
+                                          std::uint64_t seed, const SimqkeSettings& settings) {
+  SimqkeGenerator g(target, duration, settings);
+  return g.generate(seed, 0).motion;
+}
+
+}  // namespace pound

@@ -1,0 +1,61 @@
+#include "sears/contact_law.hpp"
+
+#include <cmath>
+
+#include "core/error.hpp"
+
+namespace pound::sears {
+
+double ContactLaw::force(double delta_m) const {
+  if (!(delta_m > 0.0)) return 0.0;
+  const double f = kind == ContactKind::flat ? stiffness * delta_m
+                                             : stiffness * delta_m * std::sqrt(delta_m);
+  return std::fmin(f, force_cap_N);
+}
+
+double ContactLaw::potential(double delta_m) const {
+  if (!(delta_m > 0.0)) return 0.0;
+  const double p = exponent();
+  // Overlap at which the cap is reached, then elastic part plus a constant-force part.
+  const double d_cap = std::isinf(force_cap_N) ? delta_m
+                                               : std::pow(force_cap_N / stiffness, 1.0 / p);
+  const double d_el = std::fmin(delta_m, d_cap);
+  const double e_el = stiffness * std::pow(d_el, p + 1.0) / (p + 1.0);
+  return delta_m > d_cap ? e_el + force_cap_N * (delta_m - d_cap) : e_el;
+}
+
+double ContactLaw::solve_implicit(double delta_pred_m, double S) const {
+  if (!(delta_pred_m > 0.0)) return 0.0;
+  double f = 0.0;
+  if (kind == ContactKind::flat) {
+    f = stiffness * delta_pred_m / (1.0 + stiffness * S);
+  } else {
+    // h(d) = d + S k d^1.5 - delta_pred is convex and increasing on d >= 0; Newton from
+    // d = delta_pred (where h >= 0) decreases monotonically to the root in (0, delta_pred].
+    double d = delta_pred_m;
+    for (int it = 0; it < 100; ++it) {
+      const double s = std::sqrt(d);
+      const double h = d + S * stiffness * d * s - delta_pred_m;
+      const double step = h / (1.0 + 1.5 * S * stiffness * s);
+      d -= step;
+      if (!(d > 0.0)) d = 0.5 * (d + step);  // stay inside (0, delta_pred]
+      if (std::fabs(step) <= 1e-15 * d) break;
+    }
+    f = stiffness * d * std::sqrt(d);
+  }
+  return std::fmin(f, force_cap_N);
+}
+
+double ContactLaw::lumped_duration(double m_red, double v0) const {
+  if (kind == ContactKind::flat) return M_PI * std::sqrt(m_red / stiffness);
+  const double delta_max = std::pow(5.0 * m_red * v0 * v0 / (4.0 * stiffness), 0.4);
+  return 2.9432 * delta_max / v0;
+}
+
+void validate(const ContactLaw& law) {
+  if (!(std::isfinite(law.stiffness) && law.stiffness > 0.0))
+    throw InputError("contact stiffness must be finite and > 0");
+  if (!(law.force_cap_N > 0.0)) throw InputError("force cap must be > 0 [N]");
+}
+
+}  // namespace pound::sears

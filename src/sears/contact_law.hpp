@@ -1,0 +1,38 @@
+#pragma once
+// Contact force of the damped Sears model (physics.md section 3):
+//     flat  (Th. 8.1): F = k_L delta
+//     hertz (Th. 7.1): F = k delta^1.5
+// for overlap delta > 0, F = 0 otherwise (never tensile), then F = min(F, PF_max) when a force
+// cap is given (Th. 9.1). There is no dashpot: the model loses energy only through the damped
+// internal vibration of the bars.
+#include <limits>
+
+namespace pound::sears {
+
+enum class ContactKind { flat, hertz };
+
+struct ContactLaw {
+  ContactKind kind = ContactKind::flat;
+  double stiffness = 0.0;  ///< k_L [N/m] (flat) or k [N/m^1.5] (hertz)
+  double force_cap_N = std::numeric_limits<double>::infinity();  ///< PF_max [N]
+
+  /// Exponent of the force-overlap law: 1 (flat) or 1.5 (hertz).
+  double exponent() const { return kind == ContactKind::flat ? 1.0 : 1.5; }
+  /// Contact force [N] for overlap delta [m].
+  double force(double delta_m) const;
+  /// Stored contact energy, the integral of force(delta) from 0 to delta [J].
+  double potential(double delta_m) const;
+  /// Solves F = force(delta_pred - S F) for F >= 0: the force at the end of a step whose
+  /// overlap is an affine function of that force, delta = delta_pred - S F, with S > 0 the
+  /// step compliance [m/N]. Unique because force() is non-decreasing. [N]
+  double solve_implicit(double delta_pred_m, double compliance_m_per_N) const;
+  /// Duration of an elastic lumped-mass impact with reduced mass m* [kg] at approach velocity
+  /// v0 [m/s], ignoring the cap: pi sqrt(m*/k) (flat) or 2.9432 delta_max / v0 with
+  /// delta_max = (5 m* v0^2 / (4 k))^(2/5) (hertz; Goldsmith, Impact, 1960, sec. 4.2) [s].
+  double lumped_duration(double reduced_mass_kg, double v0_m_s) const;
+};
+
+/// Throws InputError unless the stiffness is finite and > 0 and the cap is > 0.
+void validate(const ContactLaw& law);
+
+}  // namespace pound::sears

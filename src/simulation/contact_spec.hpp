@@ -1,0 +1,22 @@
+#pragma once
+// Which contact model acts between the buildings of a row, with its parameters.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "contact/contact_law.hpp"
+#include "structure/building_row.hpp"
+
+namespace pound {
+
+struct ContactSpec {
+  std::string model = "lve";  ///< a registered lumped model name (see contact/registry.hpp)
+  ContactParameters params;   ///< k, e, v0_min, xi_relation; m1, m2 are set per site
+};
+
+/// One law per contact site of the row, with that site's floor masses.
+std::vector<std::unique_ptr<ContactLaw>> make_site_laws(const ContactSpec& spec,
+                                                        const BuildingRow& row,
+                                                        const AssembledRow& assembled);
+
+}  // namespace pound

@@ -1,0 +1,49 @@
+#pragma once
+// One simulation of a row of buildings under one ground motion, run twice: with pounding and
+// without (the same equations and steps with the contacts switched off), and the response
+// measures of physics.md section 4. A pure function: the kernel of a Monte Carlo sample.
+#include <vector>
+
+#include "motion/ground_motion.hpp"
+#include "simulation/contact_spec.hpp"
+#include "solver/integrator_settings.hpp"
+#include "solver/row_solver.hpp"
+#include "structure/building_row.hpp"
+
+namespace pound {
+
+struct FloorResponse {
+  int building = 0;  ///< 0-based building index
+  int floor = 0;     ///< 1-based floor number
+  double disp_pounding = 0.0, disp_free = 0.0;  ///< peak |u| [m]
+  double disp_amplification = 0.0;              ///< disp_pounding / disp_free [-] (mu_max/u_max)
+  double drift_ratio_pounding = 0.0, drift_ratio_free = 0.0;  ///< peak storey drift / height [-]
+  double drift_amplification = 0.0;                           ///< [-]
+  double accel_pounding = 0.0, accel_free = 0.0;  ///< peak absolute acceleration [m/s^2]
+};
+
+struct SiteResponse {
+  int pair = 0;   ///< 0-based pair index (buildings pair and pair+1)
+  int floor = 0;  ///< 1-based floor level
+  int impacts = 0;
+  double peak_force = 0.0;        ///< [N]
+  double peak_penetration = 0.0;  ///< [m]
+  double first_contact = -1.0;    ///< [s]
+};
+
+struct RowSimulation {
+  std::vector<FloorResponse> floors;
+  std::vector<SiteResponse> sites;
+  RowResult pounding, free;  ///< the raw runs (histories when requested)
+};
+
+struct RowSimulationOptions {
+  double extra_time = 0.0;       ///< free vibration after the record ends [s]
+  bool record_history = false;   ///< keep time histories of both runs
+};
+
+RowSimulation simulate_row(const BuildingRow& row, const GroundMotion& motion,
+                           const ContactSpec& contact, const IntegratorSettings& integ,
+                           const RowSimulationOptions& opt = {});
+
+}  // namespace pound

@@ -1,0 +1,64 @@
+#pragma once
+// Time integration of buildings in a row with lumped-mass contacts (physics.md sections 1-2):
+//   M u'' + C u' + K u = -M 1 ag(t) + P(u, u')
+// by Dormand-Prince 5(4) with exact location of every contact event: the instants where a
+// penetration delta crosses zero are found by Illinois iteration on re-taken Runge-Kutta steps,
+// so no step straddles the start or end of a contact, where the force (and for the
+// stereomechanical model the velocity) is discontinuous. Steps also end on every sample of the
+// ground-motion record, where ag(t) has kinks. Kernel only: no files, no printing.
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "contact/contact_law.hpp"
+#include "motion/ground_motion.hpp"
+#include "solver/integrator_settings.hpp"
+#include "structure/building_row.hpp"
+
+namespace pound {
+
+struct SiteResult {
+  int impacts = 0;                ///< contact phases started
+  double peak_force = 0.0;        ///< [N] (NaN for instantaneous impacts: no force history)
+  double peak_penetration = 0.0;  ///< [m]
+  double impulse = 0.0;           ///< total impulse transmitted [N s]
+  double first_contact = -1.0;    ///< time of the first contact [s], -1 when none
+  double last_separation = -1.0;  ///< time of the last separation [s], -1 when none
+};
+
+/// Time histories, one entry per accepted step and per event.
+struct History {
+  std::vector<double> t;                 ///< [s]
+  std::vector<Eigen::VectorXd> u;        ///< floor displacements relative to the ground [m]
+  std::vector<Eigen::VectorXd> a_abs;    ///< absolute floor accelerations [m/s^2]
+  std::vector<Eigen::VectorXd> force;    ///< contact force per site [N]
+};
+
+struct RowResult {
+  Eigen::VectorXd peak_disp;       ///< max |u| per floor DOF [m]
+  Eigen::VectorXd peak_drift;      ///< max |u_j - u_{j-1}| per floor DOF (its storey) [m]
+  Eigen::VectorXd peak_abs_accel;  ///< max |u'' + ag| per floor DOF [m/s^2]
+  std::vector<SiteResult> sites;
+  Eigen::VectorXd u_end, v_end;    ///< state at the end [m], [m/s]
+  double t_end = 0.0;              ///< time reached [s]
+  long steps = 0, rejected = 0, events = 0;
+  History history;
+};
+
+struct RowProblem {
+  const AssembledRow* row = nullptr;
+  const GroundMotion* motion = nullptr;  ///< null: no ground motion
+  /// One law per contact site; empty: no pounding (the buildings move independently).
+  std::vector<const ContactLaw*> laws;
+  Eigen::VectorXd u0, v0;  ///< initial state (empty: at rest) [m], [m/s]
+  double t_end = 0.0;      ///< [s]
+  bool record_history = false;
+  /// Stop as soon as every contact has ended and all sites separate (free impacts).
+  bool stop_after_separation = false;
+};
+
+/// Integrates the problem. Throws NumericalError on a non-finite state, step-size underflow or
+/// an accumulation of instantaneous impacts (chatter).
+RowResult solve(const RowProblem& p, const IntegratorSettings& s);
+
+}  // namespace pound

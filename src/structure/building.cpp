@@ -1,0 +1,78 @@
+#include "structure/building.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <cmath>
+
+#include "core/error.hpp"
+
+namespace pound {
+
+void validate(const Building& b, const std::string& where) {
+  const auto n = b.masses.size();
+  if (n == 0) throw InputError(where + ": a building needs at least one floor mass");
+  if (b.stiffnesses.size() != n)
+    throw InputError(where + ": " + std::to_string(n) + " floor masses but " +
+                     std::to_string(b.stiffnesses.size()) +
+                     " storey stiffnesses; give one per storey");
+  if (b.storey_heights.size() != n)
+    throw InputError(where + ": " + std::to_string(n) + " floors but " +
+                     std::to_string(b.storey_heights.size()) + " storey heights");
+  for (std::size_t j = 0; j < n; ++j) {
+    const std::string f = " of floor " + std::to_string(j + 1);
+    if (!(b.masses[j] > 0.0 && std::isfinite(b.masses[j])))
+      throw InputError(where + ": mass" + f + " must be a finite number > 0 kg");
+    if (!(b.stiffnesses[j] > 0.0 && std::isfinite(b.stiffnesses[j])))
+      throw InputError(where + ": storey stiffness" + f + " must be a finite number > 0 N/m");
+    if (!(b.storey_heights[j] > 0.0 && std::isfinite(b.storey_heights[j])))
+      throw InputError(where + ": storey height" + f + " must be a finite number > 0 m");
+  }
+  if (!(b.damping_ratio >= 0.0 && b.damping_ratio < 1.0))
+    throw InputError(where + ": damping ratio must be in [0, 1)");
+}
+
+BuildingMatrices assemble(const Building& b) {
+  const int n = b.floors();
+  BuildingMatrices out;
+  out.M = Eigen::MatrixXd::Zero(n, n);
+  out.K = Eigen::MatrixXd::Zero(n, n);
+  for (int j = 0; j < n; ++j) {
+    out.M(j, j) = b.masses[j];
+    // Storey j joins floor j-1 (the ground for j = 0) and floor j.
+    const double k = b.stiffnesses[j];
+    out.K(j, j) += k;
+    if (j > 0) {
+      out.K(j - 1, j - 1) += k;
+      out.K(j - 1, j) -= k;
+      out.K(j, j - 1) -= k;
+    }
+  }
+  out.C = Eigen::MatrixXd::Zero(n, n);
+  out.periods = Eigen::VectorXd::Zero(n);
+  bool has_stiffness = false;
+  for (double k : b.stiffnesses) has_stiffness = has_stiffness || k > 0.0;
+  if (!has_stiffness) return out;
+
+  // K phi = w^2 M phi; M is diagonal so the symmetric form M^-1/2 K M^-1/2 is used.
+  const Eigen::VectorXd s = out.M.diagonal().cwiseSqrt().cwiseInverse();
+  const Eigen::MatrixXd A = s.asDiagonal() * out.K * s.asDiagonal();
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(A);
+  const Eigen::VectorXd w = eig.eigenvalues().cwiseMax(0.0).cwiseSqrt();  // ascending
+  for (int i = 0; i < n; ++i) out.periods(i) = 2.0 * M_PI / w(i);
+  const double xi = b.damping_ratio;
+  if (b.damping == DampingKind::modal) {
+    // C = M Phi diag(2 xi w_i) Phi^T M with mass-normalised Phi = M^-1/2 V (Chopra 11.4).
+    const Eigen::MatrixXd Phi = s.asDiagonal() * eig.eigenvectors();
+    const Eigen::VectorXd d = 2.0 * xi * w;
+    out.C = out.M * Phi * d.asDiagonal() * Phi.transpose() * out.M;
+  } else if (n == 1) {
+    out.C(0, 0) = 2.0 * xi * w(0) * b.masses[0];
+  } else {
+    // Rayleigh damping with ratio xi on modes 1 and 2 (Chopra 11.4.1).
+    const double a0 = 2.0 * xi * w(0) * w(1) / (w(0) + w(1));
+    const double a1 = 2.0 * xi / (w(0) + w(1));
+    out.C = a0 * out.M + a1 * out.K;
+  }
+  return out;
+}
+
+}  // namespace pound

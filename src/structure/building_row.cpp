@@ -1,0 +1,44 @@
+#include "structure/building_row.hpp"
+
+#include <algorithm>
+
+namespace pound {
+
+int colliding_levels(const BuildingRow& row, int pair) {
+  return std::min(row.buildings[pair].floors(), row.buildings[pair + 1].floors());
+}
+
+AssembledRow assemble(const BuildingRow& row) {
+  AssembledRow out;
+  int n = 0;
+  for (const auto& b : row.buildings) {
+    out.offset.push_back(n);
+    n += b.floors();
+  }
+  out.M = Eigen::MatrixXd::Zero(n, n);
+  out.C = Eigen::MatrixXd::Zero(n, n);
+  out.K = Eigen::MatrixXd::Zero(n, n);
+  for (std::size_t b = 0; b < row.buildings.size(); ++b) {
+    const auto m = assemble(row.buildings[b]);
+    const int o = out.offset[b], nb = row.buildings[b].floors();
+    out.M.block(o, o, nb, nb) = m.M;
+    out.C.block(o, o, nb, nb) = m.C;
+    out.K.block(o, o, nb, nb) = m.K;
+    out.periods.push_back(m.periods);
+  }
+  out.inv_mass = out.M.diagonal().cwiseInverse();
+  for (int p = 0; p + 1 < static_cast<int>(row.buildings.size()); ++p) {
+    for (int j = 0; j < colliding_levels(row, p); ++j) {
+      ContactSite s;
+      s.pair = p;
+      s.level = j;
+      s.dof_left = out.offset[p] + j;
+      s.dof_right = out.offset[p + 1] + j;
+      s.gap = row.gaps.at(p).at(j);
+      out.sites.push_back(s);
+    }
+  }
+  return out;
+}
+
+}  // namespace pound

@@ -1,0 +1,44 @@
+#pragma once
+// Buildings standing in a row, left to right (physics.md section 1; thesis chapter 2: two
+// buildings, a building between two others, a building at the end of a row). Floor j of
+// building b and floor j of building b+1 can collide when both exist, so buildings of
+// unequal height collide up to the lower roof.
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "structure/building.hpp"
+
+namespace pound {
+
+struct BuildingRow {
+  std::vector<Building> buildings;
+  /// gaps[p][j]: at-rest gap between building p and p+1 at floor level j+1 [m], one entry
+  /// per colliding level (min of the two floor counts).
+  std::vector<std::vector<double>> gaps;
+};
+
+/// One floor level of one adjacent pair where contact can happen.
+struct ContactSite {
+  int pair = 0;     ///< building pair index p (buildings p and p+1)
+  int level = 0;    ///< floor level, 0-based (floor level+1)
+  int dof_left = 0;   ///< global DOF of the left building's floor
+  int dof_right = 0;  ///< global DOF of the right building's floor
+  double gap = 0.0;   ///< at-rest gap [m]
+};
+
+/// The assembled row: block-diagonal matrices over all floors, building after building.
+struct AssembledRow {
+  Eigen::MatrixXd M, C, K;
+  Eigen::VectorXd inv_mass;           ///< 1 / M_ii [1/kg]
+  std::vector<int> offset;            ///< first global DOF of each building
+  std::vector<Eigen::VectorXd> periods;  ///< per building [s]
+  std::vector<ContactSite> sites;
+  int dofs() const { return static_cast<int>(inv_mass.size()); }
+};
+
+/// Number of colliding levels of pair p (min floor count).
+int colliding_levels(const BuildingRow& row, int pair);
+AssembledRow assemble(const BuildingRow& row);
+
+}  // namespace pound

@@ -1,0 +1,187 @@
+#include "study/row_options.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "contact/registry.hpp"
+#include "contact/restitution.hpp"
+#include "motion/motion_processing.hpp"
+#include "motion/motion_reader.hpp"
+
+namespace pound {
+
+std::vector<OptionSpec> row_option_specs() {
+  return {
+      {"building#.name", "", "", "label of the building"},
+      {"building#.masses", "kg", "", "floor masses, floor 1 first (list)"},
+      {"building#.stiffnesses", "N/m", "", "storey stiffnesses, storey 1 first (list)"},
+      {"building#.storey_heights", "m", "3.0",
+       "storey heights for drift ratios (one value for all storeys, or a list)"},
+      {"building#.damping", "-", "0.05", "inherent damping ratio, in [0, 1)"},
+      {"building#.damping_type", "", "rayleigh",
+       "rayleigh (ratio on modes 1 and 2) or modal (ratio on every mode)"},
+      {"pair#.gap", "m", "0",
+       "at-rest gap between building # and #+1 (one value, or one per colliding floor)"},
+      {"contact.model", "", "lve",
+       "contact model: " + contact_model_names()},
+      {"contact.e", "-", "0.65", "coefficient of restitution, in (0, 1]"},
+      {"contact.k", "N/m or N/m^1.5", "",
+       "contact stiffness (N/m for linear laws, N/m^1.5 for Hertz laws)"},
+      {"contact.k_factor", "-", "",
+       "contact stiffness as a multiple of the larger storey stiffness (when k is not given)"},
+      {"contact.v0_min", "m/s", "0.001",
+       "smallest approach velocity used by v0-scaled damping (Hertzdamp, Ye, Hunt-Crossley)"},
+      {"contact.xi_relation", "", "exact",
+       "MLVe damping-restitution relation: exact or published (Mahmoud & Jankowski 2011)"},
+      {"motion.file", "", "", "ground-motion record (.AT2, one/two columns, or fixed width)"},
+      {"motion.format", "", "automatic", "automatic, at2, columns or fixed-width"},
+      {"motion.units", "", "", "units of the record values when the file does not state "
+                               "them: g, m/s2 or cm/s2"},
+      {"motion.dt", "s", "", "sample spacing of a one-column record without a header"},
+      {"motion.scale", "-", "1", "factor applied to the record"},
+      {"motion.duration", "s", "", "use only the first seconds of the record"},
+      {"motion.baseline", "", "false", "baseline-correct the record (true/false)"},
+      {"integrator.control", "", "adaptive",
+       "adaptive (error-controlled Dormand-Prince 5(4)) or fixed"},
+      {"integrator.rtol", "-", "1e-8", "relative local-error tolerance"},
+      {"integrator.atol", "m", "1e-10", "absolute local-error tolerance (m and m/s)"},
+      {"integrator.dt", "s", "", "step of the fixed-step integrator"},
+      {"integrator.h_max", "s", "", "largest adaptive step (default min(record dt, T_min/20))"},
+      {"simulation.extra_time", "s", "0", "free vibration simulated after the record ends"},
+  };
+}
+
+namespace {
+
+bool parse_bool(const Options& opt, const std::string& key) {
+  const std::string v = opt.get_string(key);
+  if (v == "true" || v == "yes" || v == "1" || v == "on") return true;
+  if (v == "false" || v == "no" || v == "0" || v == "off") return false;
+  throw opt.invalid(key, "valid: true or false");
+}
+
+std::vector<double> positive_list(const Options& opt, const std::string& key, std::size_t n,
+                                  const std::string& what) {
+  std::vector<double> v = opt.get_doubles(key);
+  if (v.size() == 1 && n > 1) v.assign(n, v[0]);
+  if (v.size() != n)
+    throw opt.invalid(key, "expected " + std::to_string(n) + " values (one per floor), got " +
+                               std::to_string(v.size()));
+  for (double x : v)
+    if (!(x > 0)) throw opt.invalid(key, what + " must be > 0");
+  return v;
+}
+
+}  // namespace
+
+BuildingRow row_from_options(const Options& opt) {
+  BuildingRow row;
+  const int nb = opt.count_numbered("building");
+  if (nb == 0)
+    throw InputError((opt.config_path().empty() ? std::string("command line") : opt.config_path()) +
+                     ": no buildings; give [building1] masses = ... and stiffnesses = ...");
+  for (int b = 1; b <= nb; ++b) {
+    const std::string pre = "building" + std::to_string(b) + ".";
+    Building bd;
+    bd.name = opt.given(pre + "name") ? opt.get_string(pre + "name") : "building" + std::to_string(b);
+    const auto masses = opt.get_doubles(pre + "masses");
+    for (double m : masses)
+      if (!(m > 0)) throw opt.invalid(pre + "masses", "every floor mass must be > 0 kg");
+    bd.masses = masses;
+    bd.stiffnesses = positive_list(opt, pre + "stiffnesses", masses.size(), "every storey stiffness");
+    bd.storey_heights = positive_list(opt, pre + "storey_heights", masses.size(), "every storey height");
+    bd.damping_ratio = opt.get_double(pre + "damping");
+    if (!(bd.damping_ratio >= 0 && bd.damping_ratio < 1))
+      throw opt.invalid(pre + "damping", "valid: a damping ratio in [0, 1)");
+    const std::string dt = opt.get_string(pre + "damping_type");
+    if (dt == "rayleigh")
+      bd.damping = DampingKind::rayleigh;
+    else if (dt == "modal")
+      bd.damping = DampingKind::modal;
+    else
+      throw opt.invalid(pre + "damping_type", "valid: rayleigh or modal");
+    validate(bd, opt.where(pre + "masses"));
+    row.buildings.push_back(bd);
+  }
+  for (int p = 1; p < nb; ++p) {
+    const std::string key = "pair" + std::to_string(p) + ".gap";
+    const auto levels = static_cast<std::size_t>(colliding_levels(row, p - 1));
+    std::vector<double> g = opt.get_doubles(key);
+    if (g.size() == 1) g.assign(levels, g[0]);
+    if (g.size() != levels)
+      throw opt.invalid(key, "expected one gap or " + std::to_string(levels) +
+                                 " (one per colliding floor), in m");
+    for (double x : g)
+      if (!(x >= 0)) throw opt.invalid(key, "gaps must be >= 0 m");
+    row.gaps.push_back(g);
+  }
+  for (int p = nb; p <= opt.count_numbered("pair"); ++p)
+    if (opt.given("pair" + std::to_string(p) + ".gap"))
+      throw opt.invalid("pair" + std::to_string(p) + ".gap",
+                        "there are only " + std::to_string(nb) + " buildings, so pairs 1.." +
+                            std::to_string(nb - 1));
+  return row;
+}
+
+ContactSpec contact_from_options(const Options& opt, const BuildingRow& row) {
+  ContactSpec c;
+  c.model = opt.get_string("contact.model");
+  const auto& info = find_contact_model(c.model, opt.where("contact.model"));
+  c.params.e = opt.get_double("contact.e");
+  if (!(c.params.e > 0 && c.params.e <= 1)) throw opt.invalid("contact.e", "valid: e in (0, 1]");
+  if (!info.stiffness_unit.empty()) {
+    if (opt.given("contact.k")) {
+      c.params.k = opt.get_positive("contact.k");
+    } else if (opt.given("contact.k_factor")) {
+      double kmax = 0;
+      for (const auto& b : row.buildings)
+        for (double k : b.stiffnesses) kmax = std::max(kmax, k);
+      c.params.k = opt.get_positive("contact.k_factor") * kmax;
+    } else {
+      throw InputError(opt.where("contact.k") + ": missing; model '" + c.model +
+                       "' needs a contact stiffness k [" + info.stiffness_unit +
+                       "] or k_factor (a multiple of the larger storey stiffness, commonly 20-100)");
+    }
+  }
+  c.params.v0_min = opt.get_positive("contact.v0_min");
+  c.params.xi_relation = opt.get_string("contact.xi_relation");
+  if (c.params.xi_relation != "exact" && c.params.xi_relation != "published")
+    throw opt.invalid("contact.xi_relation", "valid: exact or published");
+  return c;
+}
+
+IntegratorSettings integrator_from_options(const Options& opt) {
+  IntegratorSettings s;
+  const std::string c = opt.get_string("integrator.control");
+  if (c == "adaptive")
+    s.control = StepControl::adaptive;
+  else if (c == "fixed")
+    s.control = StepControl::fixed;
+  else
+    throw opt.invalid("integrator.control", "valid: adaptive or fixed");
+  s.rtol = opt.get_positive("integrator.rtol");
+  s.atol = opt.get_positive("integrator.atol");
+  if (opt.given("integrator.dt")) s.dt = opt.get_positive("integrator.dt");
+  if (s.control == StepControl::fixed && !(s.dt > 0))
+    throw opt.invalid("integrator.dt", "fixed-step integration needs dt > 0 s");
+  if (opt.given("integrator.h_max")) s.h_max = opt.get_positive("integrator.h_max");
+  return s;
+}
+
+GroundMotion motion_from_options(const Options& opt) {
+  MotionFileSpec spec;
+  spec.path = opt.get_path("motion.file");
+  spec.format = parse_motion_format(opt.get_string("motion.format"), opt.where("motion.format"));
+  if (opt.given("motion.units"))
+    spec.units = parse_accel_units(opt.get_string("motion.units"), opt.where("motion.units"));
+  if (opt.given("motion.dt")) spec.dt = opt.get_positive("motion.dt");
+  GroundMotion g = read_motion(spec);
+  if (opt.given("motion.duration")) g = truncate(g, opt.get_positive("motion.duration"));
+  const double s = opt.get_double("motion.scale");
+  if (!(s > 0)) throw opt.invalid("motion.scale", "valid: a factor > 0");
+  if (s != 1.0) g = scale(g, s);
+  if (parse_bool(opt, "motion.baseline")) g = baseline_correct(g);
+  return g;
+}
+
+}  // namespace pound

@@ -1,0 +1,28 @@
+#pragma once
+// The study-file keys shared by every command that simulates buildings in a row
+// (`pound simulate`, later `pound campaign`), and their translation into the library's
+// structs. Every key carries its unit and default; see docs/study-file.md.
+#include <vector>
+
+#include "io/options.hpp"
+#include "motion/ground_motion.hpp"
+#include "simulation/contact_spec.hpp"
+#include "solver/integrator_settings.hpp"
+#include "structure/building_row.hpp"
+
+namespace pound {
+
+/// [building#], [pair#], [contact], [motion], [integrator], [simulation] keys.
+std::vector<OptionSpec> row_option_specs();
+
+/// Buildings and gaps. Needs building1 (and building2.. for a row); validates masses,
+/// stiffnesses, heights, damping and gaps with errors naming file, line and key.
+BuildingRow row_from_options(const Options& opt);
+/// The contact model and its parameters (k may be given as k_factor times the larger storey
+/// stiffness of the row).
+ContactSpec contact_from_options(const Options& opt, const BuildingRow& row);
+IntegratorSettings integrator_from_options(const Options& opt);
+/// Reads, truncates, scales and (optionally) baseline-corrects the record.
+GroundMotion motion_from_options(const Options& opt);
+
+}  // namespace pound

@@ -1,0 +1,121 @@
+// Response spectra: closed-form step and harmonic responses, and the published El Centro
+// values of the fixture (motions/README.md).
+#include "motion/response_spectrum.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "motion/motion_reader.hpp"
+
+namespace pound {
+namespace {
+
+GroundMotion elcentro() {
+  MotionFileSpec spec;
+  spec.path = std::string(POUND_SOURCE_DIR) + "/motions/elcentro-1940-ns.dat";
+  return read_motion(spec);
+}
+
+// Constant ground acceleration a0 from rest: x(t) = -a0/w^2 (1 - e^{-z w t}(cos wd t +
+// z/sqrt(1-z^2) sin wd t)); exact for a piecewise-linear input, so the recurrence must
+// reproduce it to round-off at every sample.
+TEST(ResponseSpectrum, StepResponseIsExact) {
+  const double T = 0.7, z = 0.05, a0 = 2.5, dt = 0.013;
+  GroundMotion m{"step", dt, std::vector<double>(500, a0)};
+  const SdofHistory h = sdof_history(m, T, z);
+  const double w = 2 * M_PI / T, q = std::sqrt(1 - z * z), wd = w * q;
+  for (std::size_t i = 0; i < m.accel.size(); i += 37) {
+    const double t = dt * double(i);
+    const double e = std::exp(-z * w * t);
+    const double x = -a0 / (w * w) * (1 - e * (std::cos(wd * t) + z / q * std::sin(wd * t)));
+    const double v = -a0 / (w * w) * e * (w * w / wd) * std::sin(wd * t);
+    EXPECT_NEAR(h.x[i], x, 1e-13) << "t = " << t;
+    EXPECT_NEAR(h.v[i], v, 1e-12) << "t = " << t;
+  }
+}
+
+// Peak of the step response: SD = a0/w^2 (1 + exp(-pi z / sqrt(1 - z^2))), reached at
+// t = pi / wd; a step of pi / (40 wd) lands on it.
+TEST(ResponseSpectrum, StepResponsePeak) {
+  const double T = 1.0, z = 0.05, a0 = 1.0;
+  const double w = 2 * M_PI / T, wd = w * std::sqrt(1 - z * z);
+  GroundMotion m{"step", M_PI / wd / 40.0, std::vector<double>(400, a0)};
+  const ResponseSpectrum r = response_spectrum(m, {T}, z);
+  const double sd = a0 / (w * w) * (1 + std::exp(-M_PI * z / std::sqrt(1 - z * z)));
+  EXPECT_NEAR(r.sd[0], sd, 1e-12);
+  EXPECT_NEAR(r.psa[0], w * w * sd, 1e-10);
+  EXPECT_NEAR(r.psv[0], w * sd, 1e-11);
+}
+
+// Harmonic input a_g = A sin(W t) from rest: steady state plus the free vibration that
+// cancels its initial conditions. With 200 samples per forcing period the only error is the
+// linear interpolation of the sine, O((W dt)^2 / 12) ~ 1e-4 relative.
+TEST(ResponseSpectrum, HarmonicInputClosedForm) {
+  const double T = 0.5, z = 0.05, A = 3.0;
+  const double w = 2 * M_PI / T, q = std::sqrt(1 - z * z), wd = w * q;
+  for (const double beta : {0.5, 1.0, 1.6}) {
+    const double W = beta * w, dt = 2 * M_PI / W / 200.0;
+    const std::size_t n = std::size_t(30.0 * T / dt);
+    GroundMotion m{"sine", dt, {}};
+    for (std::size_t i = 0; i < n; ++i) m.accel.push_back(A * std::sin(W * dt * double(i)));
+    // Steady state of x'' + 2 z w x' + w^2 x = -A sin(W t): x = C sin W t + D cos W t.
+    const double den = std::pow(w * w - W * W, 2) + std::pow(2 * z * w * W, 2);
+    const double C = -A * (w * w - W * W) / den, D = A * 2 * z * w * W / den;
+    // Free vibration with x(0) = -D, v(0) = -C W.
+    const double x0 = -D, v0 = -C * W;
+    double peak = 0.0, abs_peak = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double t = dt * double(i), e = std::exp(-z * w * t);
+      const double x = C * std::sin(W * t) + D * std::cos(W * t) +
+                       e * (x0 * std::cos(wd * t) + (v0 + z * w * x0) / wd * std::sin(wd * t));
+      peak = std::max(peak, std::fabs(x));
+      (void)abs_peak;
+    }
+    const ResponseSpectrum r = response_spectrum(m, {T}, z);
+    EXPECT_NEAR(r.sd[0] / peak, 1.0, 2e-4) << "beta = " << beta;
+    if (beta == 1.0) {
+      // At resonance the 30-cycle response approaches A / (2 z w^2) (1 - e^{-z w t}).
+      EXPECT_NEAR(r.sd[0], A / (2 * z * w * w) * (1 - std::exp(-z * w * 30 * T)), 2e-3 * r.sd[0]);
+    }
+  }
+}
+
+TEST(ResponseSpectrum, ElCentroPublishedValues) {
+  const GroundMotion m = elcentro();
+  const std::vector<double> T = {0.2, 0.5, 1.0, 2.0};
+  const ResponseSpectrum plain = response_spectrum(m, T, 0.05, {0.0});
+  const ResponseSpectrum fine = response_spectrum(m, T, 0.05, {0.05});
+  // motions/README.md: PSA 0.916 g (0.5 s), 0.454 g (1 s), 0.137 g (2 s); 0.2 s: 0.793 g
+  // without sub-stepping, 0.820 g with steps of T/20. Published to three digits.
+  EXPECT_NEAR(plain.psa[0] / kGravity, 0.793, 0.0006);
+  EXPECT_NEAR(fine.psa[0] / kGravity, 0.820, 0.0006);
+  EXPECT_NEAR(plain.psa[1] / kGravity, 0.916, 0.0006);
+  EXPECT_NEAR(plain.psa[2] / kGravity, 0.454, 0.0006);
+  EXPECT_NEAR(plain.psa[3] / kGravity, 0.137, 0.0006);
+  // Pseudo-quantities are consistent, and the absolute acceleration at 5 % damping is
+  // within a few percent of the pseudo-acceleration at these periods.
+  for (std::size_t i = 0; i < T.size(); ++i) {
+    const double w = 2 * M_PI / T[i];
+    EXPECT_NEAR(fine.psv[i], w * fine.sd[i], 1e-12);
+    EXPECT_NEAR(fine.sa_abs[i] / fine.psa[i], 1.0, 0.05);
+  }
+}
+
+TEST(ResponseSpectrum, ZeroPeriodIsPga) {
+  const GroundMotion m = elcentro();
+  const ResponseSpectrum r = response_spectrum(m, {0.0, 0.01}, 0.05);
+  EXPECT_DOUBLE_EQ(r.psa[0], m.pga());
+  EXPECT_NEAR(r.psa[1] / m.pga(), 1.0, 0.02);  // a stiff oscillator follows the ground
+}
+
+TEST(ResponseSpectrum, LogSpacedPeriods) {
+  const auto t = log_spaced_periods(0.05, 4.0, 100);
+  ASSERT_EQ(t.size(), 100u);
+  EXPECT_DOUBLE_EQ(t.front(), 0.05);
+  EXPECT_DOUBLE_EQ(t.back(), 4.0);
+  EXPECT_NEAR(t[1] / t[0], std::pow(80.0, 1.0 / 99.0), 1e-12);
+}
+
+}  // namespace
+}  // namespace pound
