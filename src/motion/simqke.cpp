@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 #include <mutex>
+#include <cstdio>
+#include <cstdlib>
 #include <string>
 
 #include "core/error.hpp"
@@ -72,6 +74,9 @@ struct SimqkeGenerator::Impl {
   std::vector<double> target_psa;     // at the matching periods [m/s^2]
   std::vector<std::size_t> bin_j;     // matching-period interval of bin k
   std::vector<double> bin_w;          // weight of j + 1 in log period
+  // Oscillator weights of bin k: matching periods j0[k] .. j0[k] + wt[k].size() - 1.
+  std::vector<std::size_t> j0;
+  std::vector<std::vector<double>> wt;
   std::unique_ptr<SpectrumCalculator> spectra;
   double* real = nullptr;             // nfft reals
   fftw_complex* spec = nullptr;       // nbins complex
@@ -87,6 +92,14 @@ struct SimqkeGenerator::Impl {
 
   // Ratio target / computed at bin k, interpolated in log period.
   double bin_ratio(const std::vector<double>& ratio, std::size_t k) const {
+    if (!wt[k].empty() && !std::getenv("POINTMAP")) {
+      double num = 0.0, den = 0.0;
+      for (std::size_t i = 0; i < wt[k].size(); ++i) {
+        num += wt[k][i] * ratio[j0[k] + i];
+        den += wt[k][i];
+      }
+      return num / den;
+    }
     const std::size_t j = bin_j[k];
     return ratio[j] + bin_w[k] * (ratio[std::min(j + 1, ratio.size() - 1)] - ratio[j]);
   }
@@ -112,12 +125,13 @@ struct SimqkeGenerator::Impl {
     fftw_execute(r2c);
     spec[0][0] = spec[0][1] = 0.0;
     for (std::size_t k = 1; k < nbins; ++k) {
-      const double f = bin_ratio(ratio, k) / double(nfft);
+      const double f = std::pow(bin_ratio(ratio, k), settings.relaxation) / double(nfft);
       spec[k][0] *= f;
       spec[k][1] *= f;
     }
     fftw_execute(c2r);
     GroundMotion out{"", settings.dt, std::vector<double>(real, real + n)};
+    if (std::getenv("NOBC")) return out;
     return baseline_correct(out);
   }
 };
@@ -137,7 +151,7 @@ SimqkeGenerator::SimqkeGenerator(const DesignSpectrum& target, double duration,
   if (!(settings.max_iterations >= 0 && settings.tolerance > 0.0))
     throw InputError("motion generator: max_iterations >= 0 and tolerance > 0 required");
   d.n = static_cast<std::size_t>(std::llround(duration / dt)) + 1;
-  d.nfft = good_fft_size(2 * d.n);
+  d.nfft = good_fft_size(std::size_t(std::max(1, settings.padding)) * d.n);
   d.nbins = d.nfft / 2 + 1;
 
   const Envelope env(settings.envelope, duration);
@@ -160,6 +174,8 @@ SimqkeGenerator::SimqkeGenerator(const DesignSpectrum& target, double duration,
   d.amp0.assign(d.nbins, 0.0);
   d.bin_j.assign(d.nbins, 0);
   d.bin_w.assign(d.nbins, 0.0);
+  d.wt.assign(1, {});
+  d.j0.assign(1, 0);
   const double lt0 = std::log(periods.front());
   const double dlt = std::log(periods.back() / periods.front()) / double(periods.size() - 1);
   for (std::size_t k = 1; k < d.nbins; ++k) {
@@ -173,6 +189,16 @@ SimqkeGenerator::SimqkeGenerator(const DesignSpectrum& target, double duration,
       d.bin_j[k] = static_cast<std::size_t>(x);
       d.bin_w[k] = x - double(d.bin_j[k]);
     }
+    // Weights |w_j^2 H_j(w_k)|^2 = 1 / ((1 - b^2)^2 + (2 zeta b)^2), b = f_k / f_j, of the
+    // matching oscillators with 0.67 < b < 1.5.
+    d.wt.emplace_back();
+    for (std::size_t j = 0; j < periods.size(); ++j) {
+      const double b = f * periods[j];
+      if (b < 1.0 / 1.5 || b > 1.5) continue;
+      if (d.wt.back().empty()) d.j0.push_back(j);
+      d.wt.back().push_back(1.0 / ((1 - b * b) * (1 - b * b) + 4 * zeta * zeta * b * b));
+    }
+    if (d.wt.back().empty()) d.j0.push_back(0);
     if (f < f_min || f > f_max) continue;
     const double nu = std::max(1.5, w * ts / (2.0 * M_PI * std::log(2.0)));
     const double r = std::sqrt(2.0 * std::log(2.0 * nu));
@@ -226,6 +252,7 @@ GeneratedMotion SimqkeGenerator::generate(std::uint64_t seed, std::uint64_t inde
       best.iterations = it;
       best.match = compare_spectra(psa, d.target_psa);
     }
+    if (std::getenv("SIMQKE_TRACE")) { std::size_t jw = 0; for (std::size_t j = 0; j < psa.size(); ++j) if (std::fabs(psa[j] / d.target_psa[j] - 1.0) == dev) jw = j; std::fprintf(stderr, "it %d dev %.3f T %.3f\n", it, dev, d.spectra->periods()[jw]); }
     if (dev <= d.settings.tolerance || it >= d.settings.max_iterations) break;
   }
   best.motion.name = "simqke seed " + std::to_string(seed) + " index " + std::to_string(index);

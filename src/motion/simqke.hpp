@@ -42,6 +42,8 @@ struct SimqkeSettings {
   int max_iterations = 25;      ///< correction iterations at most [-]
   double tolerance = 0.04;      ///< stop when |computed / target - 1| <= tolerance everywhere
   double max_frequency = 0.0;   ///< highest frequency with energy [Hz]; 0: 0.8 Nyquist
+  int padding = 2;              ///< FFT length >= padding * samples [-]
+  double relaxation = 1.0;      ///< amplitudes scale by ratio^relaxation per iteration [-]
 };
 
 /// Ratio of a computed to a target spectrum over a set of periods.

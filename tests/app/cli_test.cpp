@@ -1,0 +1,147 @@
+// The `pound` program as a user meets it: bad input gives one line on stderr naming the file,
+// the key and what is valid, a non-zero exit code and no output file.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CmdResult {
+  int code = -1;
+  std::string out, err;
+};
+
+CmdResult run_pound(const std::string& args) {
+  const fs::path dir = fs::temp_directory_path() / ("pound_cli_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const std::string out = (dir / "out.txt").string(), err = (dir / "err.txt").string();
+  const std::string cmd = std::string(POUND_BINARY) + " " + args + " >" + out + " 2>" + err;
+  const int status = std::system(cmd.c_str());
+  CmdResult r;
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  std::ifstream o(out), e(err);
+  r.out.assign(std::istreambuf_iterator<char>(o), {});
+  r.err.assign(std::istreambuf_iterator<char>(e), {});
+  return r;
+}
+
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("pound_cli_case_" + std::to_string(::getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+    motion_ = std::string(POUND_SOURCE_DIR) + "/motions/elcentro-1940-ns.dat";
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  // A valid two-building study with one line replaced.
+  std::string study(const std::string& replace_from = "", const std::string& replace_to = "") {
+    std::string text =
+        "[building1]\nmasses = 1000, 1000\nstiffnesses = 1e6, 1e6\n"
+        "[building2]\nmasses = 1000\nstiffnesses = 5e5\n"
+        "[pair1]\ngap = 0.01\n"
+        "[contact]\nmodel = hc-linear\ne = 0.5\nk = 5e7\n"
+        "[motion]\nfile = " + motion_ + "\nduration = 2\n";
+    if (!replace_from.empty()) {
+      const auto p = text.find(replace_from);
+      EXPECT_NE(p, std::string::npos) << replace_from;
+      text.replace(p, replace_from.size(), replace_to);
+    }
+    const std::string path = (dir_ / "study.ini").string();
+    std::ofstream(path) << text;
+    return path;
+  }
+  std::string h5() const { return (dir_ / "hist.h5").string(); }
+
+  // Expects exit code 2, one line on stderr containing every fragment, no histories file.
+  void expect_error(const std::string& study_path, std::initializer_list<std::string> fragments) {
+    const CmdResult r = run_pound("simulate --config " + study_path + " --histories " + h5());
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    for (const auto& f : fragments) EXPECT_NE(r.err.find(f), std::string::npos) << f << " in: " << r.err;
+    EXPECT_FALSE(fs::exists(h5()));
+    for (const auto& entry : fs::directory_iterator(dir_))
+      EXPECT_EQ(entry.path().filename().string().find("hist.h5"), std::string::npos);
+  }
+
+  fs::path dir_;
+  std::string motion_;
+};
+
+TEST_F(Cli, ValidStudyWritesHistoriesAndJson) {
+  const CmdResult r = run_pound("simulate --config " + study() + " --json --histories " + h5());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"disp_amplification\""), std::string::npos);
+  EXPECT_NE(r.out.find("\"impacts\""), std::string::npos);
+  EXPECT_TRUE(fs::exists(h5()));
+}
+
+TEST_F(Cli, UnknownKey) {
+  expect_error(study("gap = 0.01", "gap = 0.01\ngpa = 3"), {"study.ini:9", "pair1.gpa", "pair#.gap"});
+}
+
+TEST_F(Cli, MissingMotionFile) {
+  expect_error(study(motion_, "/nonexistent/motion.dat"), {"/nonexistent/motion.dat"});
+}
+
+TEST_F(Cli, NegativeMass) {
+  expect_error(study("masses = 1000, 1000", "masses = 1000, -1000"), {"study.ini:2", "building1.masses", "> 0"});
+}
+
+TEST_F(Cli, NanMass) {
+  expect_error(study("masses = 1000\n", "masses = nan\n"), {"study.ini:5", "building2.masses"});
+}
+
+TEST_F(Cli, RestitutionOutsideUnitInterval) {
+  expect_error(study("e = 0.5", "e = 1.5"), {"study.ini:11", "contact.e", "(0, 1]"});
+  expect_error(study("e = 0.5", "e = 0"), {"contact.e", "(0, 1]"});
+}
+
+TEST_F(Cli, GapNotANumber) {
+  expect_error(study("gap = 0.01", "gap = abc"), {"study.ini:8", "pair1.gap", "'abc'"});
+}
+
+TEST_F(Cli, UnknownContactModel) {
+  expect_error(study("model = hc-linear", "model = hertz"), {"contact.model", "hc-hertz", "lve"});
+}
+
+TEST_F(Cli, MotionFileWithNonNumericLine) {
+  const std::string bad = (dir_ / "bad.txt").string();
+  std::ofstream(bad) << "0.0 0.01\n0.01 0.02\n0.02 x7\n0.03 0.01\n";
+  expect_error(study(motion_, bad + "\nunits = g"), {"bad.txt:3"});
+}
+
+TEST_F(Cli, CommandLineOverridesStudyAndIsValidated) {
+  const CmdResult r = run_pound("simulate --config " + study() + " --contact.e 2");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("--contact.e"), std::string::npos) << r.err;
+}
+
+TEST_F(Cli, ImpactJsonHasTheDocumentedFields) {
+  const CmdResult r = run_pound("impact --model lve --e 0.4 --k 1e6 --m1 2 --m2 3 --v0 0.5 --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  for (const char* f : {"e_eff", "contact_duration_s", "impulse_Ns", "peak_force_N",
+                        "max_penetration_m", "v1_after", "v2_after"})
+    EXPECT_NE(r.out.find(std::string("\"") + f + "\""), std::string::npos) << f;
+  const auto p = r.out.find("\"e_eff\":");
+  EXPECT_NEAR(std::stod(r.out.substr(p + 8)), 0.4, 1e-7);
+}
+
+TEST_F(Cli, HelpListsUnitsAndDefaults) {
+  const CmdResult r = run_pound("simulate --help");
+  EXPECT_EQ(r.code, 0);
+  EXPECT_NE(r.out.find("--building#.masses"), std::string::npos);
+  EXPECT_NE(r.out.find("[kg]"), std::string::npos);
+  EXPECT_NE(r.out.find("(default lve)"), std::string::npos);
+}
+
+}  // namespace
