@@ -243,8 +243,10 @@ GeneratedMotion SimqkeGenerator::generate(std::uint64_t seed, std::uint64_t inde
       if (!(psa[j] > 0.0) || !std::isfinite(psa[j]))
         throw NumericalError("motion generator: non-positive response spectrum at T = " +
                              std::to_string(d.spectra->periods()[j]) + " s");
-      ratio[j] = d.target_psa[j] / psa[j];
-      dev = std::max(dev, std::fabs(psa[j] / d.target_psa[j] - 1.0));
+      const double aim = std::getenv("AIM") ? std::atof(std::getenv("AIM")) : 1.0;
+      ratio[j] = aim * d.target_psa[j] / psa[j];
+      const double q = psa[j] / d.target_psa[j];
+      dev = std::max(dev, std::max((1.0 - q) / 0.10, (q - 1.0) / 0.20) * 0.1);
     }
     if (dev < best_dev) {
       best_dev = dev;

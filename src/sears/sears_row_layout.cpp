@@ -1,0 +1,85 @@
+#include "sears/sears_row_layout.hpp"
+
+#include <string>
+
+#include "core/error.hpp"
+#include "sears/contact_stiffness.hpp"
+
+namespace pound::sears {
+
+Slab floor_slab(const BuildingRow& row, const SearsRowModel& model, int b, int j) {
+  const FloorSlabProperties& p = model.slabs.at(b);
+  Slab s{p.length_m, p.E_Pa, p.rho_kg_m3, p.poisson, row.buildings[b].masses[j], model.chi};
+  const std::string what = "building " + std::to_string(b + 1) + " floor " + std::to_string(j + 1);
+  validate(s, what.c_str());
+  return s;
+}
+
+RowContactLayout make_layout(const BuildingRow& row, const AssembledRow& a,
+                             const SearsRowModel& model) {
+  if (model.slabs.size() != row.buildings.size())
+    throw InputError("damped Sears model: " + std::to_string(model.slabs.size()) +
+                     " slab descriptions for " + std::to_string(row.buildings.size()) +
+                     " buildings; give one per building");
+  if (model.modes < 1) throw InputError("damped Sears model: modes must be >= 1");
+  if (!(model.xi_s >= 0.0 && model.xi_s < 1.0))
+    throw InputError("damped Sears model: xi_s must be in [0, 1)");
+  RowContactLayout L;
+  auto floor_index = [&](int dof) {
+    for (std::size_t i = 0; i < L.floors.size(); ++i)
+      if (L.floors[i].dof == dof) return static_cast<int>(i);
+    CollidingFloor f;
+    f.dof = dof;
+    for (std::size_t b = 0; b < a.offset.size(); ++b)
+      if (dof >= a.offset[b]) {
+        f.building = static_cast<int>(b);
+        f.floor = dof - a.offset[b] + 1;
+      }
+    L.floors.push_back(f);
+    return static_cast<int>(L.floors.size()) - 1;
+  };
+  for (std::size_t s = 0; s < a.sites.size(); ++s) {
+    const ContactSite& site = a.sites[s];
+    const int fl = floor_index(site.dof_left), fr = floor_index(site.dof_right);
+    L.floors[fl].site_right = static_cast<int>(s);  // the left building's floor: its x = l end
+    L.floors[fr].site_left = static_cast<int>(s);   // the right building's floor: its x = 0 end
+    L.site_left_floor.push_back(fl);
+    L.site_right_floor.push_back(fr);
+    ContactLaw law;
+    law.kind = model.contact;
+    law.force_cap_N = model.force_cap_N;
+    if (model.contact == ContactKind::flat) {
+      if (!(model.D >= 1.0)) throw InputError("damped Sears model: D must be >= 1");
+      const Slab left = floor_slab(row, model, site.pair, site.level);
+      const Slab right = floor_slab(row, model, site.pair + 1, site.level);
+      law.stiffness = flat_contact_stiffness(left, right, model.D);  // Th. 8.1-8.2
+    } else {
+      law.stiffness = model.hertz_k;
+    }
+    validate(law);
+    L.laws.push_back(law);
+  }
+  return L;
+}
+
+void build_banks(RowContactLayout& L, const BuildingRow& row, const SearsRowModel& model,
+                 double dt) {
+  L.banks.clear();
+  for (const auto& f : L.floors)
+    L.banks.emplace_back(floor_slab(row, model, f.building, f.floor - 1), model.modes,
+                         model.xi_s, dt);
+  const int ns = static_cast<int>(L.laws.size());
+  L.S_modal = Eigen::MatrixXd::Zero(ns, ns);
+  for (int s = 0; s < ns; ++s) {
+    const int fl = L.site_left_floor[s], fr = L.site_right_floor[s];
+    const auto flex_l = L.banks[fl].flexibility(), flex_r = L.banks[fr].flexibility();
+    // delta_s = w_right(left floor) - w_left(right floor); the left floor's right end carries
+    // -F_s and its left end +F_t (t = its other site), the right floor's left end +F_s and its
+    // right end -F_t'.
+    L.S_modal(s, s) += flex_l.same + flex_r.same;
+    if (L.floors[fl].site_left >= 0) L.S_modal(s, L.floors[fl].site_left) -= flex_l.cross;
+    if (L.floors[fr].site_right >= 0) L.S_modal(s, L.floors[fr].site_right) -= flex_r.cross;
+  }
+}
+
+}  // namespace pound::sears

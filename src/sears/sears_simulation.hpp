@@ -1,0 +1,94 @@
+#pragma once
+// Buildings in a row pounding through damped Sears contacts (thesis ch. 8; docs/sears.md).
+//
+// Every floor that can collide (a floor of a ContactSite) is an axial bar (Slab) whose
+// rigid-body mode is the building's own floor DOF (Th. 8.5) and whose N internal modes are
+// stepped by ModalBank (Th. 8.7); the other floors stay lumped. One step (Th. 8.8, made
+// implicit in the contact forces as for the free impact):
+//   1. the building DOFs by Newmark's average-acceleration method (as in the thesis): the
+//      end-of-step displacements are u_pred - G F, G = Khat^-1 [e_L - e_R per site];
+//   2. the internal modes by the exact linear-force recurrence: end-of-step faces are
+//      predictions plus the modal step flexibility times F;
+//   3. the face overlaps are therefore delta = delta_pred - S F with S constant and symmetric
+//      positive definite (building part d^T Khat^-1 d plus modal same/cross flexibilities);
+//   4. F_s = law_s(delta_s) for all sites at once by nonlinear Gauss-Seidel (each sweep solves
+//      one site's monotone scalar equation; converges: it minimises a strictly convex function),
+//      then every state is advanced with the forces linear over the step.
+// Both integrators are second order; the step follows sears/step_rule.hpp with the building
+// periods and the record spacing as further bounds.
+#include <limits>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "motion/ground_motion.hpp"
+#include "sears/contact_law.hpp"
+#include "simulation/simulate_row.hpp"
+#include "solver/row_solver.hpp"
+#include "structure/building_row.hpp"
+
+namespace pound::sears {
+
+/// Slab of every floor of one building; each floor's mass is its own (A = m / (rho l)).
+struct FloorSlabProperties {
+  double length_m = 0.0;   ///< slab length along the row [m]
+  double E_Pa = 0.0;       ///< Young's modulus [Pa]
+  double rho_kg_m3 = 0.0;  ///< density [kg/m^3]
+  double poisson = 0.0;    ///< Poisson's ratio [-]
+};
+
+struct SearsRowModel {
+  std::vector<FloorSlabProperties> slabs;  ///< one per building of the row
+  int modes = 100;                          ///< N internal modes per colliding floor [-]
+  double xi_s = 0.05;                       ///< slab modal damping ratio [-]
+  double chi = 1.0 / 8.0;                   ///< wave-speed factor [-]
+  ContactKind contact = ContactKind::flat;
+  double D = 1.0;             ///< flat: fraction factor (Th. 8.2) [-]
+  double hertz_k = 0.0;       ///< hertz: stiffness [N/m^1.5]
+  double force_cap_N = std::numeric_limits<double>::infinity();  ///< PF_max (Th. 9.1) [N]
+  double dt_s = 0.0;          ///< 0 = automatic
+  /// Approach velocity used for the Hertz contact time scale of the step rule [m/s].
+  double hertz_reference_velocity = 1.0;
+};
+
+struct SlabPeaks {
+  int building = 0;           ///< 0-based
+  int floor = 0;              ///< 1-based
+  double face_accel = 0.0;    ///< peak |absolute acceleration| of its contact face(s) [m/s^2]
+  double centre_accel = 0.0;  ///< peak |absolute acceleration| of the slab centre [m/s^2]
+};
+
+struct SearsRowProblem {
+  const BuildingRow* row = nullptr;
+  const GroundMotion* motion = nullptr;  ///< null: no ground motion
+  double t_end = 0.0;                    ///< [s]
+  bool contacts = true;                  ///< false: the buildings vibrate independently
+  bool record_history = false;           ///< one History entry per step
+  Eigen::VectorXd u0, v0;  ///< initial floor state (empty: at rest) [m], [m/s]
+};
+
+struct SearsRowResult {
+  RowResult row;                 ///< the fields the lumped solver reports
+  std::vector<SlabPeaks> slabs;  ///< colliding floors only
+  double dt_s = 0.0;             ///< step used [s]
+};
+
+/// The step the model uses for this row and motion (automatic or the model's dt, checked).
+double sears_row_step(const BuildingRow& row, const GroundMotion* motion,
+                      const SearsRowModel& model);
+
+/// One run. Throws InputError (bad model, too large dt) or NumericalError (non-finite state).
+SearsRowResult solve_sears_row(const SearsRowProblem& p, const SearsRowModel& model);
+
+struct SearsRowSimulation {
+  RowSimulation base;            ///< as simulate_row() returns for the lumped models
+  std::vector<SlabPeaks> slabs;  ///< peak face and slab-centre accelerations (pounding run)
+  double dt_s = 0.0;             ///< [s]
+};
+
+/// With and without pounding (same step), and the response measures of physics.md section 4.
+SearsRowSimulation simulate_sears_row(const BuildingRow& row, const GroundMotion& motion,
+                                      const SearsRowModel& model,
+                                      const RowSimulationOptions& opt = {});
+
+}  // namespace pound::sears

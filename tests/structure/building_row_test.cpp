@@ -1,0 +1,79 @@
+#include "structure/building_row.hpp"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Eigenvalues>
+#include <cmath>
+
+#include "core/error.hpp"
+
+namespace pound {
+namespace {
+
+Building uniform(int floors, double m, double k, double xi = 0.05) {
+  Building b;
+  b.masses.assign(floors, m);
+  b.stiffnesses.assign(floors, k);
+  b.storey_heights.assign(floors, 3.0);
+  b.damping_ratio = xi;
+  return b;
+}
+
+TEST(Building, TwoStoreyPeriodsMatchClosedForm) {
+  // Uniform 2-storey shear building: w^2 = (3 -/+ sqrt 5) / 2 k / m (Chopra example 10.1).
+  const double m = 1000.0, k = 1e6;
+  const BuildingMatrices bm = assemble(uniform(2, m, k));
+  const double w1 = std::sqrt((3 - std::sqrt(5.0)) / 2 * k / m);
+  const double w2 = std::sqrt((3 + std::sqrt(5.0)) / 2 * k / m);
+  EXPECT_NEAR(bm.periods(0), 2 * M_PI / w1, 1e-12);
+  EXPECT_NEAR(bm.periods(1), 2 * M_PI / w2, 1e-12);
+}
+
+TEST(Building, RayleighAndModalDampingGiveTheRatioOnTheirModes) {
+  for (DampingKind kind : {DampingKind::rayleigh, DampingKind::modal}) {
+    Building b = uniform(4, 2000.0, 3e6, 0.05);
+    b.damping = kind;
+    const BuildingMatrices bm = assemble(b);
+    Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eig(bm.K, bm.M);
+    const int checked = kind == DampingKind::modal ? 4 : 2;
+    for (int i = 0; i < checked; ++i) {
+      const Eigen::VectorXd phi = eig.eigenvectors().col(i);
+      const double w = std::sqrt(eig.eigenvalues()(i));
+      const double xi = phi.dot(bm.C * phi) / (2 * w * phi.dot(bm.M * phi));
+      EXPECT_NEAR(xi, 0.05, 1e-12) << "mode " << i + 1;
+    }
+  }
+}
+
+TEST(BuildingRow, UnequalHeightsCollideUpToTheLowerRoof) {
+  // A 5-storey building between a 3-storey and a 4-storey one (a row, thesis chapter 2).
+  BuildingRow row;
+  row.buildings = {uniform(3, 1e3, 1e6), uniform(5, 1e3, 1e6), uniform(4, 1e3, 1e6)};
+  row.gaps = {{0.01, 0.02, 0.03}, {0.0, 0.0, 0.0, 0.0}};
+  const AssembledRow a = assemble(row);
+  ASSERT_EQ(a.dofs(), 12);
+  ASSERT_EQ(a.sites.size(), 7u);
+  EXPECT_EQ(a.sites[2].dof_left, 2);   // floor 3 of building 1
+  EXPECT_EQ(a.sites[2].dof_right, 5);  // floor 3 of building 2
+  EXPECT_DOUBLE_EQ(a.sites[2].gap, 0.03);
+  EXPECT_EQ(a.sites[6].dof_left, 3 + 3);
+  EXPECT_EQ(a.sites[6].dof_right, 8 + 3);
+  // Block diagonal: no coupling between buildings except through contacts.
+  EXPECT_EQ(a.K.block(0, 3, 3, 9).norm(), 0.0);
+}
+
+TEST(Building, ValidationNamesTheFloor) {
+  Building b = uniform(3, 1e3, 1e6);
+  b.masses[1] = -5;
+  try {
+    validate(b, "study.ini:4");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("floor 2"), std::string::npos);
+  }
+  b.masses[1] = std::nan("");
+  EXPECT_THROW(validate(b, "x"), InputError);
+}
+
+}  // namespace
+}  // namespace pound
