@@ -74,50 +74,112 @@ SpectrumCalculator::SpectrumCalculator(std::vector<double> periods, double dampi
       p.step = SdofStep::make(T, damping, dt / p.substeps);
     }
     per_.push_back(p);
+    if (T == 0.0) continue;
+    auto g = std::find_if(groups_.begin(), groups_.end(),
+                          [&](const Group& x) { return x.substeps == p.substeps; });
+    if (g == groups_.end()) {
+      groups_.emplace_back();
+      g = groups_.end() - 1;
+      g->substeps = p.substeps;
+    }
+    g->index.push_back(per_.size() - 1);
+    const SdofStep& k = p.step;
+    g->a11.push_back(k.a11);
+    g->a12.push_back(k.a12);
+    g->a21.push_back(k.a21);
+    g->a22.push_back(k.a22);
+    g->b11.push_back(k.b11);
+    g->b12.push_back(k.b12);
+    g->b21.push_back(k.b21);
+    g->b22.push_back(k.b22);
+    g->c.push_back(2.0 * damping * p.omega);
+    g->w2.push_back(p.omega * p.omega);
+  }
+  // Pad every group with inert oscillators (all coefficients 0) to a multiple of kLanes.
+  for (Group& g : groups_)
+    for (std::vector<double>* c : {&g.a11, &g.a12, &g.a21, &g.a22, &g.b11, &g.b12, &g.b21,
+                                   &g.b22, &g.c, &g.w2})
+      c->resize((c->size() + kLanes - 1) / kLanes * kLanes, 0.0);
+}
+
+namespace {
+
+constexpr std::size_t kLanes = 4;  // groups are padded to a multiple of this
+
+// One step of n independent oscillators (restrict pointers so the loop vectorises).
+template <class G>
+void advance(const G& g, double a0, double a1, std::size_t n, double* __restrict x,
+             double* __restrict v, double* __restrict xmax) {
+  const double* __restrict a11 = g.a11.data();
+  const double* __restrict a12 = g.a12.data();
+  const double* __restrict a21 = g.a21.data();
+  const double* __restrict a22 = g.a22.data();
+  const double* __restrict b11 = g.b11.data();
+  const double* __restrict b12 = g.b12.data();
+  const double* __restrict b21 = g.b21.data();
+  const double* __restrict b22 = g.b22.data();
+  for (std::size_t b = 0; b < n; b += kLanes) {  // n is a multiple of kLanes
+    for (std::size_t p = b; p < b + kLanes; ++p) {
+      const double xn = a11[p] * x[p] + a12[p] * v[p] + b11[p] * a0 + b12[p] * a1;
+      const double vn = a21[p] * x[p] + a22[p] * v[p] + b21[p] * a0 + b22[p] * a1;
+      x[p] = xn;
+      v[p] = vn;
+      xmax[p] = std::max(xmax[p], std::fabs(xn));
+    }
   }
 }
 
-void SpectrumCalculator::peaks(const PerPeriod& p, const std::vector<double>& a, double& sd,
-                               double& sa) const {
-  sd = 0.0;
-  sa = 0.0;
-  if (p.omega == 0.0) {  // T = 0: a rigid oscillator moves with the ground
-    for (double x : a) sa = std::max(sa, std::fabs(x));
-    return;
-  }
-  const SdofStep& k = p.step;
-  const double c = 2.0 * damping_ * p.omega, w2 = p.omega * p.omega;
-  double x = 0.0, v = 0.0, xmax = 0.0, amax = 0.0;
-  const int m = p.substeps;
-  const double inv = 1.0 / m;
-  for (std::size_t i = 0; i + 1 < a.size(); ++i) {
-    const double da = (a[i + 1] - a[i]) * inv;
-    double a0 = a[i];
-    for (int j = 0; j < m; ++j) {
-      const double a1 = j + 1 == m ? a[i + 1] : a0 + da;
-      const double xn = k.a11 * x + k.a12 * v + k.b11 * a0 + k.b12 * a1;
-      v = k.a21 * x + k.a22 * v + k.b21 * a0 + k.b22 * a1;
-      x = xn;
-      a0 = a1;
-      xmax = std::max(xmax, std::fabs(x));
-      amax = std::max(amax, std::fabs(c * v + w2 * x));  // x'' + a_g = -(c v + w^2 x)
+}  // namespace
+
+void SpectrumCalculator::peaks(const std::vector<double>& a, std::vector<double>& sd,
+                               std::vector<double>* sa) const {
+  const std::size_t np = periods_.size();
+  sd.assign(np, 0.0);
+  if (sa) sa->assign(np, 0.0);
+  double pga = 0.0;
+  for (double x : a) pga = std::max(pga, std::fabs(x));
+  for (std::size_t i = 0; i < np; ++i)  // T = 0: a rigid oscillator moves with the ground
+    if (per_[i].omega == 0.0 && sa) (*sa)[i] = pga;
+  std::vector<double> x, v, xmax, amax;
+  for (const Group& g : groups_) {
+    const std::size_t n = g.a11.size();  // padded
+    x.assign(n, 0.0);
+    v.assign(n, 0.0);
+    xmax.assign(n, 0.0);
+    amax.assign(n, 0.0);
+    double* xp = x.data();
+    double* vp = v.data();
+    double* xmaxp = xmax.data();
+    double* amaxp = amax.data();
+    const int m = g.substeps;
+    const double inv = 1.0 / m;
+    for (std::size_t i = 0; i + 1 < a.size(); ++i) {
+      const double da = (a[i + 1] - a[i]) * inv;
+      for (int j = 0; j < m; ++j) {
+        const double a0 = a[i] + j * da;
+        const double a1 = j + 1 == m ? a[i + 1] : a[i] + (j + 1) * da;
+        advance(g, a0, a1, n, xp, vp, xmaxp);
+        if (sa)
+          for (std::size_t p = 0; p < n; ++p)  // x'' + a_g = -(c v + w^2 x)
+            amaxp[p] = std::max(amaxp[p], std::fabs(g.c[p] * vp[p] + g.w2[p] * xp[p]));
+      }
+    }
+    for (std::size_t p = 0; p < g.index.size(); ++p) {
+      sd[g.index[p]] = xmax[p];
+      if (sa) (*sa)[g.index[p]] = amax[p];
     }
   }
-  sd = xmax;
-  sa = amax;
 }
 
 ResponseSpectrum SpectrumCalculator::compute(const std::vector<double>& accel) const {
   ResponseSpectrum r;
   r.damping = damping_;
   r.period = periods_;
+  peaks(accel, r.sd, &r.sa_abs);
   const std::size_t n = periods_.size();
-  r.sd.resize(n);
   r.psv.resize(n);
   r.psa.resize(n);
-  r.sa_abs.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
-    peaks(per_[i], accel, r.sd[i], r.sa_abs[i]);
     const double w = per_[i].omega;
     r.psv[i] = w * r.sd[i];
     r.psa[i] = w == 0.0 ? r.sa_abs[i] : w * w * r.sd[i];
@@ -127,12 +189,14 @@ ResponseSpectrum SpectrumCalculator::compute(const std::vector<double>& accel) c
 
 void SpectrumCalculator::compute_psa(const std::vector<double>& accel,
                                      std::vector<double>& psa) const {
+  std::vector<double> sd;
+  peaks(accel, sd, nullptr);
   psa.resize(periods_.size());
-  double sd = 0.0, sa = 0.0;
+  double pga = 0.0;
+  for (double x : accel) pga = std::max(pga, std::fabs(x));
   for (std::size_t i = 0; i < periods_.size(); ++i) {
-    peaks(per_[i], accel, sd, sa);
     const double w = per_[i].omega;
-    psa[i] = w == 0.0 ? sa : w * w * sd;
+    psa[i] = w == 0.0 ? pga : w * w * sd[i];
   }
 }
 

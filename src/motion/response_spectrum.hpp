@@ -66,12 +66,20 @@ class SpectrumCalculator {
     int substeps = 1;
     SdofStep step{};
   };
-  // Peak |x| and peak |x'' + a_g| for one period.
-  void peaks(const PerPeriod& p, const std::vector<double>& accel, double& sd,
-             double& sa) const;
+  // Periods with the same number of sub-steps, advanced together (independent recurrences
+  // side by side, which the compiler can vectorise).
+  struct Group {
+    int substeps = 1;
+    std::vector<std::size_t> index;  // into periods_
+    std::vector<double> a11, a12, a21, a22, b11, b12, b21, b22, c, w2;
+  };
+  // Peak |x| and peak |x'' + a_g| (when sa is not null) of every period.
+  void peaks(const std::vector<double>& accel, std::vector<double>& sd,
+             std::vector<double>* sa) const;
   std::vector<double> periods_;
   double damping_, dt_;
   std::vector<PerPeriod> per_;
+  std::vector<Group> groups_;
 };
 
 /// Response spectrum of a record at the given periods [s] and damping [-].

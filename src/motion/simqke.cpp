@@ -119,13 +119,13 @@ struct SimqkeGenerator::Impl {
 
   // The motion with its Fourier amplitudes (zero-padded to nfft) multiplied by the ratio,
   // phases kept, then baseline-corrected.
-  GroundMotion correct(const GroundMotion& m, const std::vector<double>& ratio) {
+  GroundMotion correct(const GroundMotion& m, const std::vector<double>& ratio, double relax) {
     std::copy(m.accel.begin(), m.accel.end(), real);
     std::fill(real + n, real + nfft, 0.0);
     fftw_execute(r2c);
     spec[0][0] = spec[0][1] = 0.0;
     for (std::size_t k = 1; k < nbins; ++k) {
-      const double f = std::pow(bin_ratio(ratio, k), settings.relaxation) / double(nfft);
+      const double f = std::pow(bin_ratio(ratio, k), relax) / double(nfft);
       spec[k][0] *= f;
       spec[k][1] *= f;
     }
@@ -231,19 +231,21 @@ GeneratedMotion SimqkeGenerator::generate(std::uint64_t seed, std::uint64_t inde
     cosphi[k] = std::cos(phi);
     sinphi[k] = std::sin(phi);
   }
-  std::vector<double> psa, ratio(d.target_psa.size());
+  std::vector<double> psa, ratio(d.target_psa.size()), best_ratio;
   GeneratedMotion best;
   double best_dev = 1e300;
+  double relax = d.settings.relaxation;
+  const bool bt = std::getenv("BT") != nullptr;
+  const double aim = std::getenv("AIM") ? std::atof(std::getenv("AIM")) : 1.0;
   GroundMotion m = d.synthesise(d.amp0, cosphi, sinphi);
   for (int it = 0;; ++it) {
-    if (it > 0) m = d.correct(m, ratio);
+    if (it > 0) m = bt ? d.correct(best.motion, best_ratio, relax) : d.correct(m, ratio, relax);
     d.spectra->compute_psa(m.accel, psa);
     double dev = 0.0;
     for (std::size_t j = 0; j < psa.size(); ++j) {
       if (!(psa[j] > 0.0) || !std::isfinite(psa[j]))
         throw NumericalError("motion generator: non-positive response spectrum at T = " +
                              std::to_string(d.spectra->periods()[j]) + " s");
-      const double aim = std::getenv("AIM") ? std::atof(std::getenv("AIM")) : 1.0;
       ratio[j] = aim * d.target_psa[j] / psa[j];
       const double q = psa[j] / d.target_psa[j];
       dev = std::max(dev, std::max((1.0 - q) / 0.10, (q - 1.0) / 0.20) * 0.1);
@@ -253,8 +255,13 @@ GeneratedMotion SimqkeGenerator::generate(std::uint64_t seed, std::uint64_t inde
       best.motion = m;
       best.iterations = it;
       best.match = compare_spectra(psa, d.target_psa);
+      best_ratio = ratio;
+      if (bt) relax = std::min(relax * 1.25, 2.0);
+    } else if (bt) {
+      relax *= 0.5;
+      if (relax < 0.1) relax = d.settings.relaxation;
     }
-    if (std::getenv("SIMQKE_TRACE")) { std::size_t jw = 0; for (std::size_t j = 0; j < psa.size(); ++j) if (std::fabs(psa[j] / d.target_psa[j] - 1.0) == dev) jw = j; std::fprintf(stderr, "it %d dev %.3f T %.3f\n", it, dev, d.spectra->periods()[jw]); }
+    if (std::getenv("SIMQKE_TRACE")) std::fprintf(stderr, "it %d dev %.3f relax %.2f\n", it, dev, relax);
     if (dev <= d.settings.tolerance || it >= d.settings.max_iterations) break;
   }
   best.motion.name = "simqke seed " + std::to_string(seed) + " index " + std::to_string(index);

@@ -1,0 +1,247 @@
+#include "sears/sears_simulation.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.hpp"
+#include "sears/sears_row_layout.hpp"
+#include "sears/step_rule.hpp"
+
+namespace pound::sears {
+namespace {
+
+// Nonlinear Gauss-Seidel on F_s = law_s(delta_pred_s - sum_t S(s,t) F_t).
+void solve_forces(const std::vector<ContactLaw>& laws, const Eigen::MatrixXd& S,
+                  const Eigen::VectorXd& delta_pred, Eigen::VectorXd& F) {
+  const int n = static_cast<int>(F.size());
+  for (int it = 0; it < 500; ++it) {
+    double change = 0.0, scale = 1e-300;
+    for (int s = 0; s < n; ++s) {
+      const double r = delta_pred(s) - S.row(s).dot(F) + S(s, s) * F(s);
+      const double f = laws[s].solve_implicit(r, S(s, s));
+      change = std::max(change, std::fabs(f - F(s)));
+      scale = std::max(scale, f);
+      F(s) = f;
+    }
+    if (change <= 1e-13 * scale) return;
+  }
+  throw NumericalError("damped Sears model: contact forces did not converge in 500 sweeps");
+}
+
+double shortest_building_period(const AssembledRow& a) {
+  double t = std::numeric_limits<double>::infinity();
+  for (const auto& p : a.periods)
+    for (int i = 0; i < p.size(); ++i)
+      if (p(i) > 0.0 && std::isfinite(p(i))) t = std::min(t, p(i));
+  return t;
+}
+
+}  // namespace
+
+double sears_row_step(const BuildingRow& row, const GroundMotion* motion,
+                      const SearsRowModel& model) {
+  const AssembledRow a = assemble(row);
+  const RowContactLayout L = make_layout(row, a, model);
+  double w_max = 0.0, t_c = std::numeric_limits<double>::infinity();
+  for (const auto& f : L.floors)
+    w_max = std::max(w_max, floor_slab(row, model, f.building, f.floor - 1).omega(model.modes));
+  for (std::size_t s = 0; s < L.laws.size(); ++s) {
+    const double m1 = 1.0 / a.inv_mass(a.sites[s].dof_left), m2 = 1.0 / a.inv_mass(a.sites[s].dof_right);
+    t_c = std::min(t_c, L.laws[s].lumped_duration(m1 * m2 / (m1 + m2),
+                                                  model.hertz_reference_velocity));
+  }
+  const double t_min = w_max > 0.0 ? 2.0 * M_PI / w_max : std::numeric_limits<double>::infinity();
+  StepLimits lim = step_limits(t_min, t_c);
+  // Buildings: 20 steps per shortest period; ground motion: no step over a record sample.
+  lim.auto_dt_s = std::min(lim.auto_dt_s, shortest_building_period(a) / 20.0);
+  if (motion) lim.auto_dt_s = std::min(lim.auto_dt_s, motion->dt);
+  if (!std::isfinite(lim.auto_dt_s))
+    throw InputError("damped Sears model: no time scale (no contacts, springs or record); give dt");
+  if (!std::isfinite(lim.max_dt_s)) lim.max_dt_s = lim.auto_dt_s * 10.0;
+  return choose_step(lim, model.dt_s);
+}
+
+SearsRowResult solve_sears_row(const SearsRowProblem& p, const SearsRowModel& model) {
+  const BuildingRow& row = *p.row;
+  const AssembledRow a = assemble(row);
+  RowContactLayout L = make_layout(row, a, model);
+  const double dt = sears_row_step(row, p.motion, model);
+  build_banks(L, row, model, dt);
+  const int n = a.dofs(), ns = static_cast<int>(a.sites.size()), nf = static_cast<int>(L.floors.size());
+
+  // Newmark average acceleration: Khat u_{i+1} = phat + P_{i+1} (Chopra, Table 5.4.2).
+  const Eigen::MatrixXd Khat = a.K + (2.0 / dt) * a.C + (4.0 / (dt * dt)) * a.M;
+  const Eigen::LLT<Eigen::MatrixXd> khat(Khat);
+  Eigen::MatrixXd Dsites = Eigen::MatrixXd::Zero(n, ns);  // columns e_L - e_R
+  for (int s = 0; s < ns; ++s) {
+    Dsites(a.sites[s].dof_left, s) = 1.0;
+    Dsites(a.sites[s].dof_right, s) = -1.0;
+  }
+  const Eigen::MatrixXd G = khat.solve(Dsites);
+  const Eigen::MatrixXd S = Dsites.transpose() * G + L.S_modal;
+  const Eigen::VectorXd m_ones = a.M * Eigen::VectorXd::Ones(n);
+
+  auto ag_at = [&](double t) { return p.motion ? p.motion->at(t) : 0.0; };
+  Eigen::VectorXd u = p.u0.size() ? p.u0 : Eigen::VectorXd::Zero(n);
+  Eigen::VectorXd v = p.v0.size() ? p.v0 : Eigen::VectorXd::Zero(n);
+  Eigen::VectorXd acc = a.M.ldlt().solve(-m_ones * ag_at(0.0) - a.C * v - a.K * u);
+  Eigen::VectorXd F = Eigen::VectorXd::Zero(ns), F_next = F, delta_pred(ns), delta(ns);
+  Eigen::VectorXd u_hat(n), u_next(n), a_next(n), phat(n);
+  for (int s = 0; s < ns; ++s)
+    delta(s) = u(a.sites[s].dof_left) - u(a.sites[s].dof_right) - a.sites[s].gap;
+  std::vector<EndLoads> begin(nf), end(nf);
+  auto loads = [&](const Eigen::VectorXd& f, std::vector<EndLoads>& out) {
+    for (int i = 0; i < nf; ++i) {
+      out[i].left_N = L.floors[i].site_left >= 0 ? f(L.floors[i].site_left) : 0.0;
+      out[i].right_N = L.floors[i].site_right >= 0 ? -f(L.floors[i].site_right) : 0.0;
+    }
+  };
+
+  SearsRowResult out;
+  out.dt_s = dt;
+  RowResult& r = out.row;
+  r.peak_disp = r.peak_drift = r.peak_abs_accel = Eigen::VectorXd::Zero(n);
+  r.sites.assign(ns, SiteResult{});
+  for (const auto& f : L.floors) out.slabs.push_back(SlabPeaks{f.building, f.floor, 0.0, 0.0});
+  std::vector<bool> in_contact(ns, false);
+  for (int s = 0; s < ns; ++s) in_contact[s] = delta(s) > 0.0;
+  const long steps = static_cast<long>(std::ceil(p.t_end / dt - 1e-9));
+
+  for (long i = 0; i < steps; ++i) {
+    const double t_next = (i + 1) * dt;
+    phat = -m_ones * ag_at(t_next) + a.M * ((4.0 / (dt * dt)) * u + (4.0 / dt) * v + acc) +
+           a.C * ((2.0 / dt) * u + v);
+    u_hat = khat.solve(phat);
+    loads(F, begin);
+    F_next.setZero();
+    if (p.contacts && ns > 0) {
+      std::vector<SectionValues> pred(nf);
+      for (int k = 0; k < nf; ++k) pred[k] = L.banks[k].predict(begin[k]);
+      for (int s = 0; s < ns; ++s)
+        delta_pred(s) = u_hat(a.sites[s].dof_left) - u_hat(a.sites[s].dof_right) +
+                        pred[L.site_left_floor[s]].right - pred[L.site_right_floor[s]].left -
+                        a.sites[s].gap;
+      F_next = F;  // warm start
+      solve_forces(L.laws, S, delta_pred, F_next);
+    }
+    u_next = u_hat - G * F_next;
+    a_next = (4.0 / (dt * dt)) * (u_next - u) - (4.0 / dt) * v - acc;
+    v += 0.5 * dt * (acc + a_next);
+    u = u_next;
+    acc = a_next;
+    loads(F_next, end);
+    for (int k = 0; k < nf; ++k) L.banks[k].step(begin[k], end[k]);
+    if (!u.allFinite()) throw NumericalError("damped Sears model: non-finite state at t = " +
+                                             std::to_string(t_next) + " s");
+    const double ag = ag_at(t_next);
+
+    // Contact sites: events, peaks, impulse (force linear over the step).
+    std::vector<SectionValues> disp(nf);
+    for (int k = 0; k < nf; ++k) disp[k] = L.banks[k].displacement();
+    for (int s = 0; s < ns; ++s) {
+      const double d = u(a.sites[s].dof_left) - u(a.sites[s].dof_right) +
+                       disp[L.site_left_floor[s]].right - disp[L.site_right_floor[s]].left -
+                       a.sites[s].gap;
+      SiteResult& sr = r.sites[s];
+      sr.impulse += 0.5 * (F(s) + F_next(s)) * dt;
+      sr.peak_force = std::max(sr.peak_force, F_next(s));
+      sr.peak_penetration = std::max(sr.peak_penetration, d);
+      const double t_cross = delta(s) != d ? t_next - dt + dt * delta(s) / (delta(s) - d) : t_next;
+      if (!in_contact[s] && d > 0.0) {
+        in_contact[s] = true;
+        ++sr.impacts;
+        ++r.events;
+        if (sr.first_contact < 0.0) sr.first_contact = t_cross;
+      } else if (in_contact[s] && !(d > 0.0)) {
+        in_contact[s] = false;
+        ++r.events;
+        sr.last_separation = t_cross;
+      }
+      delta(s) = d;
+    }
+    F = F_next;
+
+    // Floor peaks (relative displacement, storey drift, absolute acceleration).
+    for (std::size_t b = 0; b < row.buildings.size(); ++b)
+      for (int j = 0; j < row.buildings[b].floors(); ++j) {
+        const int k = a.offset[b] + j;
+        r.peak_disp(k) = std::max(r.peak_disp(k), std::fabs(u(k)));
+        r.peak_drift(k) = std::max(r.peak_drift(k), std::fabs(j ? u(k) - u(k - 1) : u(k)));
+        r.peak_abs_accel(k) = std::max(r.peak_abs_accel(k), std::fabs(acc(k) + ag));
+      }
+    // Slab faces and centres: floor (rigid) + internal acceleration (Th. 7.5, 8.3).
+    for (int k = 0; k < nf; ++k) {
+      const SectionValues ai = L.banks[k].acceleration(end[k]);
+      const double a0 = acc(L.floors[k].dof) + ag;
+      double face = 0.0;
+      if (L.floors[k].site_left >= 0) face = std::max(face, std::fabs(a0 + ai.left));
+      if (L.floors[k].site_right >= 0) face = std::max(face, std::fabs(a0 + ai.right));
+      out.slabs[k].face_accel = std::max(out.slabs[k].face_accel, face);
+      out.slabs[k].centre_accel = std::max(out.slabs[k].centre_accel, std::fabs(a0 + ai.centre));
+    }
+    if (p.record_history) {
+      r.history.t.push_back(t_next);
+      r.history.u.push_back(u);
+      r.history.a_abs.push_back(acc + Eigen::VectorXd::Constant(n, ag));
+      r.history.force.push_back(F);
+    }
+  }
+  r.u_end = u;
+  r.v_end = v;
+  r.t_end = steps * dt;
+  r.steps = steps;
+  return out;
+}
+
+SearsRowSimulation simulate_sears_row(const BuildingRow& row, const GroundMotion& motion,
+                                      const SearsRowModel& model, const RowSimulationOptions& opt) {
+  SearsRowProblem p;
+  p.row = &row;
+  p.motion = &motion;
+  p.t_end = motion.duration() + opt.extra_time;
+  p.record_history = opt.record_history;
+  SearsRowSimulation out;
+  p.contacts = false;
+  out.base.free = solve_sears_row(p, model).row;
+  p.contacts = true;
+  SearsRowResult pounding = solve_sears_row(p, model);
+  out.base.pounding = std::move(pounding.row);
+  out.slabs = std::move(pounding.slabs);
+  out.dt_s = pounding.dt_s;
+
+  // Physics.md section 4, as simulate_row() computes it for the lumped models.
+  const AssembledRow a = assemble(row);
+  auto ratio = [](double x, double y) { return y > 0.0 ? x / y : (x > 0.0 ? INFINITY : 1.0); };
+  for (std::size_t b = 0; b < row.buildings.size(); ++b) {
+    const Building& bd = row.buildings[b];
+    for (int j = 0; j < bd.floors(); ++j) {
+      const int i = a.offset[b] + j;
+      FloorResponse f;
+      f.building = static_cast<int>(b);
+      f.floor = j + 1;
+      f.disp_pounding = out.base.pounding.peak_disp(i);
+      f.disp_free = out.base.free.peak_disp(i);
+      f.disp_amplification = ratio(f.disp_pounding, f.disp_free);
+      f.drift_ratio_pounding = out.base.pounding.peak_drift(i) / bd.storey_heights[j];
+      f.drift_ratio_free = out.base.free.peak_drift(i) / bd.storey_heights[j];
+      f.drift_amplification = ratio(f.drift_ratio_pounding, f.drift_ratio_free);
+      f.accel_pounding = out.base.pounding.peak_abs_accel(i);
+      f.accel_free = out.base.free.peak_abs_accel(i);
+      out.base.floors.push_back(f);
+    }
+  }
+  for (std::size_t k = 0; k < a.sites.size(); ++k) {
+    const SiteResult& sr = out.base.pounding.sites[k];
+    SiteResponse s;
+    s.pair = a.sites[k].pair;
+    s.floor = a.sites[k].level + 1;
+    s.impacts = sr.impacts;
+    s.peak_force = sr.peak_force;
+    s.peak_penetration = sr.peak_penetration;
+    s.first_contact = sr.first_contact;
+    out.base.sites.push_back(s);
+  }
+  return out;
+}
+
+}  // namespace pound::sears

@@ -1,0 +1,165 @@
+// Buildings in a row with damped Sears contacts: free-body limits against the free-bar impact
+// and St Venant's solution, a floor with contacts at both ends, and the building integrator
+// against the lumped-model row solver when no contact happens.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "sears/sears_impact.hpp"
+#include "sears/sears_simulation.hpp"
+#include "solver/row_solver.hpp"
+
+namespace pound::sears {
+namespace {
+
+// A single floor without storey spring or damping: a free body in the row.
+Building free_floor(double mass) {
+  Building b;
+  b.masses = {mass};
+  b.stiffnesses = {0.0};
+  b.storey_heights = {3.0};
+  b.damping_ratio = 0.0;
+  return b;
+}
+
+TEST(SearsRow, TwoFreeFloorsReproduceTheFreeBarImpact) {
+  // Thesis ch. 7 pendulums at c/8 as two one-floor "buildings" without springs: the same
+  // model as run_sears_impact except that the rigid bodies are advanced by Newmark's average
+  // acceleration instead of exactly; both are second order, so at one step the impulse and
+  // the velocities agree to O(dt^2).
+  SearsImpactSpec spec;
+  spec.bar1 = Slab{0.700, 21e9, 2400.0, 0.15, 109.0, 0.125};
+  spec.bar2 = Slab{0.650, 21e9, 2400.0, 0.15, 108.0, 0.125};
+  spec.v0_m_s = 0.146;
+  spec.contact.kind = ContactKind::hertz;
+  spec.contact.stiffness = 3.21e9;
+  const SearsImpactOutcome ref = run_sears_impact(spec);
+
+  BuildingRow row;
+  row.buildings = {free_floor(109.0), free_floor(108.0)};
+  row.gaps = {{0.0}};
+  SearsRowModel model;
+  model.slabs = {{0.700, 21e9, 2400.0, 0.15}, {0.650, 21e9, 2400.0, 0.15}};
+  model.contact = ContactKind::hertz;
+  model.hertz_k = 3.21e9;
+  model.hertz_reference_velocity = 0.146;
+  SearsRowProblem p;
+  p.row = &row;
+  p.t_end = ref.end_time_s;
+  p.v0 = Eigen::Vector2d(0.146, 0.0);
+  const SearsRowResult r = solve_sears_row(p, model);
+  EXPECT_DOUBLE_EQ(r.dt_s, ref.dt_s);
+  const double p0 = 109.0 * 0.146;
+  EXPECT_NEAR(109.0 * r.row.v_end(0) + 108.0 * r.row.v_end(1), p0, 1e-12 * p0);
+  EXPECT_NEAR(r.row.sites[0].impulse, ref.impact.impulse_Ns, 1e-6 * ref.impact.impulse_Ns);
+  EXPECT_NEAR(r.row.v_end(0), ref.impact.v1_after, 1e-6 * 0.146);
+  EXPECT_NEAR(r.row.v_end(1), ref.impact.v2_after, 1e-6 * 0.146);
+  EXPECT_NEAR(r.row.sites[0].peak_force, ref.impact.peak_force_N, 1e-4 * ref.impact.peak_force_N);
+  EXPECT_EQ(r.row.sites[0].impacts, ref.impact.contact_phases);
+  EXPECT_NEAR(r.row.sites[0].last_separation, ref.impact.contact_duration_s, 2.0 * ref.dt_s);
+  ASSERT_EQ(r.slabs.size(), 2u);
+  EXPECT_NEAR(r.slabs[0].face_accel, ref.peak_face_accel1, 1e-3 * ref.peak_face_accel1);
+  EXPECT_NEAR(r.slabs[1].centre_accel, ref.peak_centre_accel2, 1e-3 * ref.peak_centre_accel2);
+}
+
+TEST(SearsRow, NewtonsCradleOfThreeBarsPassesTheWaveThrough) {
+  // Three equal steel bars (l = 1 m), the first at v0 = 1 m/s, flat contacts 100 E A / l
+  // (D = 200), 400 modes, no damping. St Venant: a pulse of length 2 l runs through bar 2
+  // (contacts at both its ends) into bar 3, which leaves at v0 while bars 1 and 2 stop
+  // (Goldsmith, Impact, 1960, ch. 2). Tolerances as in the two-bar wave-limit tests (1 %).
+  const double A = 1e-3, rho = 7850.0, E = 200e9, m = rho * A * 1.0;
+  BuildingRow row;
+  row.buildings = {free_floor(m), free_floor(m), free_floor(m)};
+  row.gaps = {{0.0}, {0.0}};
+  SearsRowModel model;
+  model.slabs.assign(3, FloorSlabProperties{1.0, E, rho, 0.3});
+  model.chi = 1.0;
+  model.modes = 400;
+  model.xi_s = 0.0;
+  model.D = 200.0;
+  SearsRowProblem p;
+  p.row = &row;
+  const double c = std::sqrt(E / rho);
+  p.t_end = 5.0 / c;
+  p.v0 = Eigen::Vector3d(1.0, 0.0, 0.0);
+  const SearsRowResult r = solve_sears_row(p, model);
+  EXPECT_NEAR(m * r.row.v_end.sum(), m * 1.0, 1e-12 * m);
+  EXPECT_NEAR(r.row.v_end(0), 0.0, 0.01);
+  EXPECT_NEAR(r.row.v_end(1), 0.0, 0.01);
+  EXPECT_NEAR(r.row.v_end(2), 1.0, 0.01);
+  EXPECT_NEAR(r.row.sites[0].impulse, m, 0.01 * m);
+  EXPECT_NEAR(r.row.sites[1].impulse, m, 0.01 * m);
+  EXPECT_NEAR(r.row.sites[0].first_contact, 0.0, 1e-12);
+  EXPECT_NEAR(r.row.sites[1].first_contact, 1.0 / c, 0.02 / c);  // the wave front arrives
+  EXPECT_NEAR(r.row.sites[1].last_separation, 3.0 / c, 0.03 / c);
+}
+
+TEST(SearsRow, SymmetricImpactOnAMiddleFloorKeepsItAtRest) {
+  // Outer floors approach the middle one (contacts at both of its ends) at +-0.2 m/s; by
+  // symmetry the middle floor's DOF stays at rest and both sites carry the same impulse.
+  BuildingRow row;
+  row.buildings = {free_floor(50.0), free_floor(80.0), free_floor(50.0)};
+  row.gaps = {{0.0}, {0.0}};
+  SearsRowModel model;
+  model.slabs.assign(3, FloorSlabProperties{2.0, 21e9, 2500.0, 0.15});
+  model.modes = 60;
+  model.contact = ContactKind::hertz;
+  model.hertz_k = 3e9;
+  model.hertz_reference_velocity = 0.2;
+  SearsRowProblem p;
+  p.row = &row;
+  p.t_end = 0.05;
+  p.v0 = Eigen::Vector3d(0.2, 0.0, -0.2);
+  const SearsRowResult r = solve_sears_row(p, model);
+  EXPECT_GT(r.row.sites[0].impulse, 0.0);
+  EXPECT_NEAR(r.row.sites[0].impulse, r.row.sites[1].impulse, 1e-9 * r.row.sites[0].impulse);
+  EXPECT_NEAR(r.row.v_end(1), 0.0, 1e-12);
+  EXPECT_NEAR(r.row.v_end(0), -r.row.v_end(2), 1e-12);
+  EXPECT_LT(r.row.v_end(0), 0.0);   // the outer floors rebound ...
+  EXPECT_GT(r.row.v_end(0), -0.2);  // ... with some energy left in the slabs
+}
+
+TEST(SearsRow, WithoutContactsNewmarkMatchesTheRowSolver) {
+  // Two shear buildings (Table 8.2 storey stiffnesses and floor masses) far apart under a
+  // sine ground motion: the Sears run's buildings (Newmark, small step) must match the
+  // adaptive Dormand-Prince solver of the lumped models.
+  Building b5, b3;
+  b5.masses.assign(5, 48e3);
+  b5.stiffnesses.assign(5, 8.4e7);
+  b5.storey_heights.assign(5, 3.0);
+  b3.masses.assign(3, 29e3);
+  b3.stiffnesses.assign(3, 6.7e7);
+  b3.storey_heights.assign(3, 3.0);
+  BuildingRow row;
+  row.buildings = {b5, b3};
+  row.gaps = {{1.0, 1.0, 1.0}};
+  GroundMotion gm;
+  gm.dt = 0.01;
+  for (int i = 0; i <= 150; ++i) gm.accel.push_back(2.0 * std::sin(2.0 * M_PI * 2.0 * i * gm.dt));
+  SearsRowModel model;
+  model.slabs = {{20.0, 21e9, 2500.0, 0.15}, {12.0, 21e9, 2500.0, 0.15}};
+  model.modes = 10;
+  SearsRowProblem p;
+  p.row = &row;
+  p.motion = &gm;
+  p.t_end = gm.duration();
+  const SearsRowResult r = solve_sears_row(p, model);
+  const AssembledRow a = assemble(row);
+  RowProblem q;
+  q.row = &a;
+  q.motion = &gm;
+  q.t_end = gm.duration();
+  IntegratorSettings s;
+  s.rtol = 1e-10;
+  s.atol = 1e-12;
+  const RowResult ref = solve(q, s);
+  EXPECT_EQ(r.row.sites[0].impacts, 0);
+  for (int i = 0; i < a.dofs(); ++i) {
+    EXPECT_NEAR(r.row.u_end(i), ref.u_end(i), 1e-5 * ref.peak_disp(i)) << i;
+    EXPECT_NEAR(r.row.peak_disp(i), ref.peak_disp(i), 1e-4 * ref.peak_disp(i)) << i;
+    EXPECT_NEAR(r.row.peak_abs_accel(i), ref.peak_abs_accel(i), 1e-3 * ref.peak_abs_accel(i)) << i;
+  }
+}
+
+}  // namespace
+}  // namespace pound::sears
