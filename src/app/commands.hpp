@@ -5,4 +5,5 @@ namespace pound::app {
 int run_impact(int argc, const char* const* argv);
 int run_simulate(int argc, const char* const* argv);
 int run_motion(int argc, const char* const* argv);
+int run_campaign(int argc, const char* const* argv);
 }  // namespace pound::app

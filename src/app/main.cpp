@@ -23,6 +23,8 @@ const Command kCommands[] = {
      "buildings in a row under a ground motion, with and without pounding"},
     {"motion", pound::app::run_motion,
      "ground motions: response spectra, design spectra, spectrum-compatible generation"},
+    {"campaign", pound::app::run_campaign,
+     "Monte Carlo campaign over MPI ranks, results in one HDF5 file (mpirun -np N ...)"},
 };
 
 void usage(std::ostream& out) {
@@ -60,6 +62,6 @@ int main(int argc, char** argv) {
     }
   }
   std::cerr << "pound: error: unknown command '" << argv[1]
-            << "'; valid commands: impact, simulate, motion (see 'pound --help')\n";
+            << "'; valid commands: impact, simulate, motion, campaign (see 'pound --help')\n";
   return 2;
 }

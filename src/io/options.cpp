@@ -168,9 +168,10 @@ bool Options::flag(const std::string& key) const {
 
 std::string Options::where(const std::string& key) const {
   const auto* v = lookup(key);
-  if (v && !v->file.empty()) return v->file + ":" + std::to_string(v->line) + ": key '" + key + "'";
-  if (v) return "command line: --" + key;
-  return (config_path_.empty() ? std::string("command line") : config_path_) + ": key '" + key +
+  const std::string full = prefix_ + key;
+  if (v && !v->file.empty()) return v->file + ":" + std::to_string(v->line) + ": key '" + full + "'";
+  if (v) return "command line: --" + full;
+  return (config_path_.empty() ? std::string("command line") : config_path_) + ": key '" + full +
          "'";
 }
 
@@ -237,6 +238,26 @@ double Options::get_nonnegative(const std::string& key) const {
   const double v = get_double(key);
   if (!(v >= 0)) throw invalid(key, "must be >= 0");
   return v;
+}
+
+Options Options::section(const std::string& prefix, std::vector<OptionSpec> specs) const {
+  Options sub(command_, summary_, std::move(specs));
+  sub.prefix_ = prefix_ + prefix + ".";
+  sub.config_path_ = config_path_;
+  const std::string pre = prefix + ".";
+  for (const auto& kv : values_) {
+    if (kv.first.compare(0, pre.size(), pre) != 0) continue;
+    const std::string key = kv.first.substr(pre.size());
+    if (!sub.find_spec(key)) {
+      const std::string loc = kv.second.file.empty()
+                                  ? "command line: --" + kv.first
+                                  : kv.second.file + ":" + std::to_string(kv.second.line);
+      throw InputError(loc + ": unknown key '" + kv.first + "'; valid keys in [" + prefix +
+                       "]: " + sub.valid_keys_hint(key));
+    }
+    sub.values_[key] = kv.second;
+  }
+  return sub;
 }
 
 int Options::count_numbered(const std::string& prefix) const {

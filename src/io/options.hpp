@@ -52,6 +52,11 @@ class Options {
   double get_positive(const std::string& key) const;
   double get_nonnegative(const std::string& key) const;
 
+  /// The keys "prefix.X" of this object as a new Options over `specs` (declared without the
+  /// prefix), keeping where each value came from; errors name the full key. Keys under the
+  /// prefix that `specs` does not declare are an error.
+  Options section(const std::string& prefix, std::vector<OptionSpec> specs) const;
+
   /// Highest N for which any "prefix#." key was given (0 when none).
   int count_numbered(const std::string& prefix) const;
 
@@ -75,7 +80,7 @@ class Options {
   const Value* lookup(const std::string& key) const;
   std::string valid_keys_hint(const std::string& key) const;
 
-  std::string command_, summary_;
+  std::string command_, summary_, prefix_;
   std::vector<OptionSpec> specs_;
   std::map<std::string, Value> values_;
   std::string config_path_;

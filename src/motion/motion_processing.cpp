@@ -30,7 +30,7 @@ GroundKinematics integrate(const GroundMotion& motion) {
 }
 
 GroundMotion baseline_correct(const GroundMotion& motion) {
-  constexpr int kTerms = 4;  // a_c = c0 + c1 s + c2 s^2 + c3 s^3, s = t / T
+  constexpr int kTerms = 4;  // a_c = (1 - s) (c0 s + c1 s^2 + c2 s^3 + c3 s^4), s = t / T
   const std::size_t n = motion.accel.size();
   if (n < 8) return motion;
   const double T = motion.duration();
@@ -43,7 +43,12 @@ GroundMotion baseline_correct(const GroundMotion& motion) {
   Eigen::Matrix<double, 2, kTerms> ends;
   std::vector<double> phi(n), pv, pd;
   for (int k = 0; k < kTerms; ++k) {
-    for (std::size_t i = 0; i < n; ++i) phi[i] = std::pow(double(i) * motion.dt / T, k);
+    for (std::size_t i = 0; i < n; ++i) {
+      const double x = double(i) * motion.dt / T;
+      double p = 1.0 - x;
+      for (int j = 0; j <= k; ++j) p *= x;
+      phi[i] = p;
+    }
     integrate_samples(phi, motion.dt, pv, pd);
     for (std::size_t i = 0; i < n; ++i) basis_d(Eigen::Index(i), k) = pd[i];
     ends(0, k) = pv.back();
@@ -64,7 +69,7 @@ GroundMotion baseline_correct(const GroundMotion& motion) {
   GroundMotion out = motion;
   for (std::size_t i = 0; i < n; ++i) {
     const double s = double(i) * motion.dt / T;
-    out.accel[i] -= sol(0) + s * (sol(1) + s * (sol(2) + s * sol(3)));
+    out.accel[i] -= (1.0 - s) * s * (sol(0) + s * (sol(1) + s * (sol(2) + s * sol(3))));
   }
   return out;
 }

@@ -19,8 +19,10 @@ struct GroundKinematics {
 };
 GroundKinematics integrate(const GroundMotion& motion);
 
-/// Baseline correction. A correction acceleration a_c(t) = sum_{k=0}^{3} c_k (t/T)^k (T the
-/// duration) is subtracted; its displacement is a polynomial in t^2..t^5. The coefficients
+/// Baseline correction. A correction acceleration a_c(t) = (1 - s) sum_{k=1}^{4} c_k s^k,
+/// s = t / T (T the duration), is subtracted; it vanishes at both ends, so the record's
+/// first and last values are kept, and its displacement is a polynomial of degree 7. The
+/// coefficients
 /// minimise the squared difference between the record's displacement and the correction's
 /// displacement over all samples (the classic least-squares polynomial fit to the
 /// displacement drift), subject to the two equality constraints that the corrected final

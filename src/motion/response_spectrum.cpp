@@ -7,6 +7,9 @@
 #include "core/error.hpp"
 
 namespace pound {
+namespace {
+constexpr std::size_t kLanes = 4;  // oscillator groups are padded to a multiple of this
+}  // namespace
 
 // Derivation (equivalent to Nigam & Jennings 1969): over one step the forcing is
 // f(tau) = f0 + (f1 - f0) tau / h with f = -a_g. A particular solution is
@@ -104,7 +107,6 @@ SpectrumCalculator::SpectrumCalculator(std::vector<double> periods, double dampi
 
 namespace {
 
-constexpr std::size_t kLanes = 4;  // groups are padded to a multiple of this
 
 // One step of n independent oscillators (restrict pointers so the loop vectorises).
 template <class G>

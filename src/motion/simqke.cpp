@@ -6,8 +6,6 @@
 #include <algorithm>
 #include <cmath>
 #include <mutex>
-#include <cstdio>
-#include <cstdlib>
 #include <string>
 
 #include "core/error.hpp"
@@ -36,16 +34,28 @@ std::size_t good_fft_size(std::size_t n) {
 
 }  // namespace
 
-double philox_uniform(std::uint64_t seed, std::uint64_t index, std::uint32_t i) {
+double philox_uniform(std::uint64_t seed, std::uint64_t index, std::uint32_t i,
+                      std::uint32_t stream) {
   using Rng = r123::Philox4x32;
   const Rng::key_type key = {{static_cast<std::uint32_t>(seed),
                               static_cast<std::uint32_t>(seed >> 32)}};
-  const Rng::ctr_type ctr = {{i, 0u, static_cast<std::uint32_t>(index),
+  const Rng::ctr_type ctr = {{i, stream, static_cast<std::uint32_t>(index),
                               static_cast<std::uint32_t>(index >> 32)}};
   const Rng::ctr_type r = Rng()(ctr, key);
   // 27 + 26 bits -> [0, 1) with 53-bit resolution (the usual two-word construction).
   const double hi = double(r[0] >> 5), lo = double(r[1] >> 6);
   return (hi * 67108864.0 + lo) / 9007199254740992.0;
+}
+
+std::vector<double> simqke_match_periods(const SimqkeSettings& s) {
+  const std::vector<double> core = log_spaced_periods(s.match_t_min, s.match_t_max,
+                                                      s.match_periods);
+  const double r = core[1] / core[0];
+  std::vector<double> out;
+  for (int i = s.match_extend; i > 0; --i) out.push_back(core.front() / std::pow(r, i));
+  out.insert(out.end(), core.begin(), core.end());
+  for (int i = 1; i <= s.match_extend; ++i) out.push_back(core.back() * std::pow(r, i));
+  return out;
 }
 
 SpectrumMatch compare_spectra(const std::vector<double>& computed,
@@ -74,9 +84,6 @@ struct SimqkeGenerator::Impl {
   std::vector<double> target_psa;     // at the matching periods [m/s^2]
   std::vector<std::size_t> bin_j;     // matching-period interval of bin k
   std::vector<double> bin_w;          // weight of j + 1 in log period
-  // Oscillator weights of bin k: matching periods j0[k] .. j0[k] + wt[k].size() - 1.
-  std::vector<std::size_t> j0;
-  std::vector<std::vector<double>> wt;
   std::unique_ptr<SpectrumCalculator> spectra;
   double* real = nullptr;             // nfft reals
   fftw_complex* spec = nullptr;       // nbins complex
@@ -92,14 +99,6 @@ struct SimqkeGenerator::Impl {
 
   // Ratio target / computed at bin k, interpolated in log period.
   double bin_ratio(const std::vector<double>& ratio, std::size_t k) const {
-    if (!wt[k].empty() && !std::getenv("POINTMAP")) {
-      double num = 0.0, den = 0.0;
-      for (std::size_t i = 0; i < wt[k].size(); ++i) {
-        num += wt[k][i] * ratio[j0[k] + i];
-        den += wt[k][i];
-      }
-      return num / den;
-    }
     const std::size_t j = bin_j[k];
     return ratio[j] + bin_w[k] * (ratio[std::min(j + 1, ratio.size() - 1)] - ratio[j]);
   }
@@ -119,19 +118,18 @@ struct SimqkeGenerator::Impl {
 
   // The motion with its Fourier amplitudes (zero-padded to nfft) multiplied by the ratio,
   // phases kept, then baseline-corrected.
-  GroundMotion correct(const GroundMotion& m, const std::vector<double>& ratio, double relax) {
+  GroundMotion correct(const GroundMotion& m, const std::vector<double>& ratio) {
     std::copy(m.accel.begin(), m.accel.end(), real);
     std::fill(real + n, real + nfft, 0.0);
     fftw_execute(r2c);
     spec[0][0] = spec[0][1] = 0.0;
     for (std::size_t k = 1; k < nbins; ++k) {
-      const double f = std::pow(bin_ratio(ratio, k), relax) / double(nfft);
+      const double f = std::pow(bin_ratio(ratio, k), settings.relaxation) / double(nfft);
       spec[k][0] *= f;
       spec[k][1] *= f;
     }
     fftw_execute(c2r);
     GroundMotion out{"", settings.dt, std::vector<double>(real, real + n)};
-    if (std::getenv("NOBC")) return out;
     return baseline_correct(out);
   }
 };
@@ -146,8 +144,9 @@ SimqkeGenerator::SimqkeGenerator(const DesignSpectrum& target, double duration,
   if (!(dt > 0.0)) throw InputError("motion generator: dt must be > 0 s");
   if (!(duration >= 10.0 * dt)) throw InputError("motion generator: duration must be >= 10 dt");
   if (!(settings.match_t_min > 0.0 && settings.match_t_max > settings.match_t_min &&
-        settings.match_periods >= 2))
-    throw InputError("motion generator: need 0 < match_t_min < match_t_max, >= 2 periods");
+        settings.match_periods >= 2 && settings.match_extend >= 0))
+    throw InputError("motion generator: need 0 < match_t_min < match_t_max, >= 2 periods, "
+                     "match_extend >= 0");
   if (!(settings.max_iterations >= 0 && settings.tolerance > 0.0))
     throw InputError("motion generator: max_iterations >= 0 and tolerance > 0 required");
   d.n = static_cast<std::size_t>(std::llround(duration / dt)) + 1;
@@ -158,8 +157,7 @@ SimqkeGenerator::SimqkeGenerator(const DesignSpectrum& target, double duration,
   d.envelope.resize(d.n);
   for (std::size_t i = 0; i < d.n; ++i) d.envelope[i] = env(dt * double(i));
 
-  const std::vector<double> periods =
-      log_spaced_periods(settings.match_t_min, settings.match_t_max, settings.match_periods);
+  const std::vector<double> periods = simqke_match_periods(settings);
   d.target_psa = target.sample(periods);
   d.spectra = std::make_unique<SpectrumCalculator>(periods, target.damping(), dt);
 
@@ -174,8 +172,6 @@ SimqkeGenerator::SimqkeGenerator(const DesignSpectrum& target, double duration,
   d.amp0.assign(d.nbins, 0.0);
   d.bin_j.assign(d.nbins, 0);
   d.bin_w.assign(d.nbins, 0.0);
-  d.wt.assign(1, {});
-  d.j0.assign(1, 0);
   const double lt0 = std::log(periods.front());
   const double dlt = std::log(periods.back() / periods.front()) / double(periods.size() - 1);
   for (std::size_t k = 1; k < d.nbins; ++k) {
@@ -189,16 +185,6 @@ SimqkeGenerator::SimqkeGenerator(const DesignSpectrum& target, double duration,
       d.bin_j[k] = static_cast<std::size_t>(x);
       d.bin_w[k] = x - double(d.bin_j[k]);
     }
-    // Weights |w_j^2 H_j(w_k)|^2 = 1 / ((1 - b^2)^2 + (2 zeta b)^2), b = f_k / f_j, of the
-    // matching oscillators with 0.67 < b < 1.5.
-    d.wt.emplace_back();
-    for (std::size_t j = 0; j < periods.size(); ++j) {
-      const double b = f * periods[j];
-      if (b < 1.0 / 1.5 || b > 1.5) continue;
-      if (d.wt.back().empty()) d.j0.push_back(j);
-      d.wt.back().push_back(1.0 / ((1 - b * b) * (1 - b * b) + 4 * zeta * zeta * b * b));
-    }
-    if (d.wt.back().empty()) d.j0.push_back(0);
     if (f < f_min || f > f_max) continue;
     const double nu = std::max(1.5, w * ts / (2.0 * M_PI * std::log(2.0)));
     const double r = std::sqrt(2.0 * std::log(2.0 * nu));
@@ -225,44 +211,49 @@ const std::vector<double>& SimqkeGenerator::match_target() const { return impl_-
 
 GeneratedMotion SimqkeGenerator::generate(std::uint64_t seed, std::uint64_t index) {
   Impl& d = *impl_;
-  std::vector<double> cosphi(d.nbins), sinphi(d.nbins);
-  for (std::size_t k = 0; k < d.nbins; ++k) {
-    const double phi = 2.0 * M_PI * philox_uniform(seed, index, std::uint32_t(k));
-    cosphi[k] = std::cos(phi);
-    sinphi[k] = std::sin(phi);
-  }
-  std::vector<double> psa, ratio(d.target_psa.size()), best_ratio;
+  std::vector<double> cosphi(d.nbins), sinphi(d.nbins), psa, ratio(d.target_psa.size());
   GeneratedMotion best;
-  double best_dev = 1e300;
-  double relax = d.settings.relaxation;
-  const bool bt = std::getenv("BT") != nullptr;
-  const double aim = std::getenv("AIM") ? std::atof(std::getenv("AIM")) : 1.0;
-  GroundMotion m = d.synthesise(d.amp0, cosphi, sinphi);
-  for (int it = 0;; ++it) {
-    if (it > 0) m = bt ? d.correct(best.motion, best_ratio, relax) : d.correct(m, ratio, relax);
-    d.spectra->compute_psa(m.accel, psa);
-    double dev = 0.0;
-    for (std::size_t j = 0; j < psa.size(); ++j) {
-      if (!(psa[j] > 0.0) || !std::isfinite(psa[j]))
-        throw NumericalError("motion generator: non-positive response spectrum at T = " +
-                             std::to_string(d.spectra->periods()[j]) + " s");
-      ratio[j] = aim * d.target_psa[j] / psa[j];
-      const double q = psa[j] / d.target_psa[j];
-      dev = std::max(dev, std::max((1.0 - q) / 0.10, (q - 1.0) / 0.20) * 0.1);
+  double best_score = 1e300;
+  for (int attempt = 0; attempt < d.settings.max_attempts; ++attempt) {
+    for (std::size_t k = 0; k < d.nbins; ++k) {
+      const double u = philox_uniform(seed, index, std::uint32_t(k), std::uint32_t(attempt));
+      cosphi[k] = std::cos(2.0 * M_PI * u);
+      sinphi[k] = std::sin(2.0 * M_PI * u);
     }
-    if (dev < best_dev) {
-      best_dev = dev;
-      best.motion = m;
-      best.iterations = it;
-      best.match = compare_spectra(psa, d.target_psa);
-      best_ratio = ratio;
-      if (bt) relax = std::min(relax * 1.25, 2.0);
-    } else if (bt) {
-      relax *= 0.5;
-      if (relax < 0.1) relax = d.settings.relaxation;
+    GroundMotion m = d.synthesise(d.amp0, cosphi, sinphi);
+    double attempt_best = 1e300;
+    int attempt_best_it = 0;
+    for (int it = 0;; ++it) {
+      if (it > 0) m = d.correct(m, ratio);
+      d.spectra->compute_psa(m.accel, psa);
+      // Score: the largest of 1 - q and (q - 1) / 2 over the matching periods, q = computed
+      // / target (asymmetric like the usual acceptance band 0.90-1.20).
+      double score = 0.0;
+      for (std::size_t j = 0; j < psa.size(); ++j) {
+        if (!(psa[j] > 0.0) || !std::isfinite(psa[j]))
+          throw NumericalError("motion generator: non-positive response spectrum at T = " +
+                               std::to_string(d.spectra->periods()[j]) + " s");
+        ratio[j] = d.target_psa[j] / psa[j];
+        const double q = psa[j] / d.target_psa[j];
+        score = std::max(score, std::fabs(q - 1.0));
+      }
+      if (score < best_score) {
+        best_score = score;
+        best.motion = m;
+        best.iterations = it;
+        best.attempt = attempt;
+        best.match = compare_spectra(psa, d.target_psa);
+      }
+      if (score < attempt_best) {
+        attempt_best = score;
+        attempt_best_it = it;
+      }
+      if (score <= d.settings.tolerance || it >= d.settings.max_iterations) break;
+      if (best_score <= d.settings.accept_score && it - attempt_best_it >= d.settings.stall)
+        break;  // acceptable and no longer improving
+      if (it - attempt_best_it >= 2 * d.settings.stall) break;  // stuck: next phase set
     }
-    if (std::getenv("SIMQKE_TRACE")) std::fprintf(stderr, "it %d dev %.3f relax %.2f\n", it, dev, relax);
-    if (dev <= d.settings.tolerance || it >= d.settings.max_iterations) break;
+    if (best_score <= d.settings.accept_score) break;
   }
   best.motion.name = "simqke seed " + std::to_string(seed) + " index " + std::to_string(index);
   const GroundKinematics kin = integrate(best.motion);

@@ -17,8 +17,15 @@
 // Iteration (SIMQKE's correction): compute the pseudo-acceleration spectrum of the
 // baseline-corrected motion at the matching periods, and multiply A_k by the ratio target /
 // computed, interpolated in log period at T = 2 pi / w_k (end ratios held outside the
-// matching range). Stop when every ratio is within 1 +- tolerance or after max_iterations;
-// the motion with the smallest largest deviation is returned.
+// matching range), raised to the power `relaxation`; the correction filters the Fourier
+// transform of the current motion (FFTW real-to-complex, zero-padded to nfft; phases kept;
+// complex-to-real back, first n samples), then the motion is baseline-corrected again.
+// Stop when every ratio is within the tolerance band or after max_iterations; the motion
+// with the smallest score max_j max(1 - q_j, (q_j - 1) / 2) (q = computed / target) is
+// kept. A few phase sets do not converge at the longest periods (the correction of a
+// narrow band cannot move a late peak); when the best score exceeds accept_score the
+// phases are drawn again from the next Philox stream (deterministically) and the best
+// motion over the attempts is returned.
 //
 // Deterministic: the same (target, duration, settings, seed, index) give the same motion on
 // any machine to round-off (own uniform -> phase transform, FFTW_ESTIMATE plans whose choice
@@ -36,15 +43,33 @@ namespace pound {
 struct SimqkeSettings {
   double dt = 0.01;             ///< sample spacing [s]
   EnvelopeSettings envelope;    ///< intensity envelope
-  double match_t_min = 0.04;    ///< shortest matching period [s]
-  double match_t_max = 5.0;     ///< longest matching period [s]
-  int match_periods = 120;      ///< log-spaced matching periods [-]
-  int max_iterations = 25;      ///< correction iterations at most [-]
-  double tolerance = 0.04;      ///< stop when |computed / target - 1| <= tolerance everywhere
+  /// Matching periods: match_periods log-spaced from match_t_min to match_t_max [s], plus
+  /// match_extend more at the same spacing beyond each end (default 100 periods 0.05-4 s,
+  /// extended to 0.040-4.99 s, so that the check grid of the acceptance is matched exactly).
+  double match_t_min = 0.05;
+  double match_t_max = 4.0;
+  int match_periods = 100;
+  int match_extend = 5;
+  int max_iterations = 35;      ///< correction iterations at most [-]
+  /// Stop when every q = computed / target satisfies 1 - tol <= q <= 1 + 2 tol [-].
+  double tolerance = 0.04;
   double max_frequency = 0.0;   ///< highest frequency with energy [Hz]; 0: 0.8 Nyquist
   int padding = 2;              ///< FFT length >= padding * samples [-]
-  double relaxation = 1.0;      ///< amplitudes scale by ratio^relaxation per iteration [-]
+  /// Fourier amplitudes are multiplied by ratio^relaxation per iteration [-]; > 1 because a
+  /// peak response grows less than proportionally with the amplitudes of its band.
+  double relaxation = 1.6;
+  /// A motion whose best score exceeds accept_score after the iterations is drawn again
+  /// with the next phase set (stream 1, 2, ...), at most max_attempts sets in all; the best
+  /// motion over all attempts is returned. Score: max_j max(1 - q_j, (q_j - 1) / 2).
+  double accept_score = 0.095;
+  int max_attempts = 4;
+  /// An attempt ends early when its score has not improved for `stall` iterations and
+  /// the best motion is acceptable, or for 2 stall iterations otherwise [-].
+  int stall = 8;
 };
+
+/// The matching periods of the settings [s] (see SimqkeSettings).
+std::vector<double> simqke_match_periods(const SimqkeSettings& settings);
 
 /// Ratio of a computed to a target spectrum over a set of periods.
 struct SpectrumMatch {
@@ -55,7 +80,8 @@ SpectrumMatch compare_spectra(const std::vector<double>& computed,
 
 struct GeneratedMotion {
   GroundMotion motion;            ///< baseline-corrected acceleration [m/s^2]
-  int iterations = 0;             ///< correction iterations used
+  int iterations = 0;             ///< correction iterations of the returned motion
+  int attempt = 0;                ///< phase set of the returned motion (0 = first)
   SpectrumMatch match;            ///< at the matching periods
   double final_velocity = 0.0;    ///< [m/s]
   double final_displacement = 0.0;///< [m]
@@ -90,7 +116,9 @@ GroundMotion generate_spectrum_compatible(const DesignSpectrum& target, double d
                                           std::uint64_t seed, const SimqkeSettings& settings = {});
 
 /// Uniform number in [0, 1) with 53 random bits from Philox4x32-10, key (seed), counter
-/// (i, 0, index low, index high); the generator's phases are 2 pi u. Exposed for tests.
-double philox_uniform(std::uint64_t seed, std::uint64_t index, std::uint32_t i);
+/// (i, stream, index low, index high); the generator's phase of bin i in attempt `stream`
+/// is 2 pi u. Exposed for tests.
+double philox_uniform(std::uint64_t seed, std::uint64_t index, std::uint32_t i,
+                      std::uint32_t stream = 0);
 
 }  // namespace pound

@@ -8,8 +8,8 @@ namespace pound::sears {
 
 double ContactLaw::force(double delta_m) const {
   if (!(delta_m > 0.0)) return 0.0;
-  const double f = kind == ContactKind::flat ? stiffness * delta_m
-                                             : stiffness * delta_m * std::sqrt(delta_m);
+  const double f =
+      kind == ContactKind::flat ? stiffness * delta_m : stiffness * delta_m * std::sqrt(delta_m);
   return std::fmin(f, force_cap_N);
 }
 
@@ -17,8 +17,8 @@ double ContactLaw::potential(double delta_m) const {
   if (!(delta_m > 0.0)) return 0.0;
   const double p = exponent();
   // Overlap at which the cap is reached, then elastic part plus a constant-force part.
-  const double d_cap = std::isinf(force_cap_N) ? delta_m
-                                               : std::pow(force_cap_N / stiffness, 1.0 / p);
+  const double d_cap =
+      std::isinf(force_cap_N) ? delta_m : std::pow(force_cap_N / stiffness, 1.0 / p);
   const double d_el = std::fmin(delta_m, d_cap);
   const double e_el = stiffness * std::pow(d_el, p + 1.0) / (p + 1.0);
   return delta_m > d_cap ? e_el + force_cap_N * (delta_m - d_cap) : e_el;

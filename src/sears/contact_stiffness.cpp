@@ -6,8 +6,8 @@
 
 namespace pound::sears {
 
-double hertz_stiffness(double E1_Pa, double poisson1, double r1_m, double E2_Pa,
-                       double poisson2, double r2_m) {
+double hertz_stiffness(double E1_Pa, double poisson1, double r1_m, double E2_Pa, double poisson2,
+                       double r2_m) {
   if (!(E1_Pa > 0 && E2_Pa > 0 && r1_m > 0 && r2_m > 0))
     throw InputError("Hertz contact: moduli and radii must be > 0");
   if (std::isinf(r1_m) && std::isinf(r2_m))

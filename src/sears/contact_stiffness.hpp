@@ -21,8 +21,8 @@ inline constexpr double kFlatRadius = std::numeric_limits<double>::infinity();
 
 /// Hertz stiffness k = (4/3) E* sqrt(R*) [N/m^1.5] (Th. 7.2). E in [Pa], radii in [m]
 /// (kFlatRadius for a flat face; not both flat).
-double hertz_stiffness(double E1_Pa, double poisson1, double r1_m, double E2_Pa,
-                       double poisson2, double r2_m);
+double hertz_stiffness(double E1_Pa, double poisson1, double r1_m, double E2_Pa, double poisson2,
+                       double r2_m);
 
 /// Axial stiffness of one slab taking part in a flat contact, D E A / l [N/m] (Th. 8.2).
 double slab_axial_stiffness(double E_Pa, double area_m2, double length_m, double D);

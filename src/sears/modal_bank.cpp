@@ -10,8 +10,12 @@
 namespace pound::sears {
 namespace {
 // (-1)^n and cos(n pi / 2), the mode shapes at x = l and x = l/2.
-inline double sign_at_right(int n) { return (n % 2) ? -1.0 : 1.0; }
-inline double shape_at_centre(int n) { return (n % 2) ? 0.0 : ((n / 2) % 2 ? -1.0 : 1.0); }
+inline double sign_at_right(int n) {
+  return (n % 2) ? -1.0 : 1.0;
+}
+inline double shape_at_centre(int n) {
+  return (n % 2) ? 0.0 : ((n / 2) % 2 ? -1.0 : 1.0);
+}
 }  // namespace
 
 RecurrenceCoefficients recurrence_coefficients(double omega, double xi, double dt) {
@@ -119,8 +123,7 @@ void ModalBank::step(const EndLoads& begin, const EndLoads& end) {
 
 double ModalBank::energy() const {
   double e = 0.0;
-  for (int i = 0; i < modes(); ++i)
-    e += v_[i] * v_[i] + omega_[i] * omega_[i] * q_[i] * q_[i];
+  for (int i = 0; i < modes(); ++i) e += v_[i] * v_[i] + omega_[i] * omega_[i] * q_[i] * q_[i];
   return 0.5 * slab_.modal_mass() * e;
 }
 

@@ -84,9 +84,9 @@ SearsImpactOutcome run_sears_impact(const SearsImpactSpec& spec) {
 
   for (long i = 0;; ++i) {
     if (t > t_max)
-      throw NumericalError("damped Sears impact: no final separation by t = " +
-                           std::to_string(t_max) + " s (" + std::to_string(r.contact_phases) +
-                           " contact phases)");
+      throw NumericalError(
+          "damped Sears impact: no final separation by t = " + std::to_string(t_max) + " s (" +
+          std::to_string(r.contact_phases) + " contact phases)");
     // Loads at the start of the step: -F on bar 1's right end, +F on bar 2's left end.
     const EndLoads begin1{0.0, -F}, begin2{F, 0.0};
     double F_next;
@@ -146,10 +146,10 @@ SearsImpactOutcome run_sears_impact(const SearsImpactSpec& spec) {
     out.dissipated_J += 0.5 * (power + power_next) * dt;
     power = power_next;
     const double energy = 0.5 * body1.mass * body1.v * body1.v +
-                          0.5 * body2.mass * body2.v * body2.v + bank1.energy() +
-                          bank2.energy() + law.potential(delta);
-    out.max_energy_error_J = std::max(
-        out.max_energy_error_J, std::fabs(energy + out.dissipated_J - out.initial_energy_J));
+                          0.5 * body2.mass * body2.v * body2.v + bank1.energy() + bank2.energy() +
+                          law.potential(delta);
+    out.max_energy_error_J = std::max(out.max_energy_error_J,
+                                      std::fabs(energy + out.dissipated_J - out.initial_energy_J));
 
     // Final separation: the rigid bodies do not approach and even the largest internal face
     // displacements that free vibration can reach leave a gap.

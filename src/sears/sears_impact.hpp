@@ -30,42 +30,42 @@ enum class Coupling {
 };
 
 struct SearsImpactSpec {
-  Slab bar1;              ///< the striker, moving at v0 [m/s] in +x
-  Slab bar2;              ///< the struck bar, at rest
-  double v0_m_s = 0.0;    ///< approach velocity [m/s], > 0
-  int modes = 100;        ///< N internal modes per bar [-]
-  double xi_s = 0.05;     ///< modal damping ratio of the slabs' axial vibration [-]
-  ContactLaw contact;     ///< force-overlap law at the faces
-  double dt_s = 0.0;      ///< step [s]; 0 = automatic (sears/step_rule.hpp)
+  Slab bar1;            ///< the striker, moving at v0 [m/s] in +x
+  Slab bar2;            ///< the struck bar, at rest
+  double v0_m_s = 0.0;  ///< approach velocity [m/s], > 0
+  int modes = 100;      ///< N internal modes per bar [-]
+  double xi_s = 0.05;   ///< modal damping ratio of the slabs' axial vibration [-]
+  ContactLaw contact;   ///< force-overlap law at the faces
+  double dt_s = 0.0;    ///< step [s]; 0 = automatic (sears/step_rule.hpp)
   Coupling coupling = Coupling::implicit_linear_force;
-  double max_time_s = 0.0;  ///< give up (NumericalError) after this time; 0 = automatic [s]
+  double max_time_s = 0.0;      ///< give up (NumericalError) after this time; 0 = automatic [s]
   bool record_history = false;  ///< fill SearsImpactOutcome::history (one sample per step)
 };
 
 /// State at the end of one step (recorded only when asked).
 struct SearsImpactSample {
-  double t_s = 0.0;       ///< [s]
-  double force_N = 0.0;   ///< contact force [N]
-  double overlap_m = 0.0; ///< delta = u1(l1) - u2(0) [m]
+  double t_s = 0.0;        ///< [s]
+  double force_N = 0.0;    ///< contact force [N]
+  double overlap_m = 0.0;  ///< delta = u1(l1) - u2(0) [m]
 };
 
 /// Everything a run measures; `impact` is what `pound impact --json` reports.
 struct SearsImpactOutcome {
   ImpactResult impact;
-  double dt_s = 0.0;                   ///< step used [s]
-  long steps = 0;                      ///< steps taken
-  double end_time_s = 0.0;             ///< time when no further contact was possible [s]
-  double first_phase_impulse_Ns = 0.0; ///< impulse of the first contact phase [N s]
-  double first_phase_duration_s = 0.0; ///< [s]
-  double peak_face_accel1 = 0.0;       ///< peak |acceleration| of bar 1's contact face [m/s^2]
-  double peak_face_accel2 = 0.0;       ///< bar 2's contact face [m/s^2]
-  double peak_centre_accel1 = 0.0;     ///< peak |acceleration| of bar 1's centre [m/s^2]
-  double peak_centre_accel2 = 0.0;     ///< [m/s^2]
-  double initial_energy_J = 0.0;       ///< kinetic energy before impact [J]
+  double dt_s = 0.0;                    ///< step used [s]
+  long steps = 0;                       ///< steps taken
+  double end_time_s = 0.0;              ///< time when no further contact was possible [s]
+  double first_phase_impulse_Ns = 0.0;  ///< impulse of the first contact phase [N s]
+  double first_phase_duration_s = 0.0;  ///< [s]
+  double peak_face_accel1 = 0.0;        ///< peak |acceleration| of bar 1's contact face [m/s^2]
+  double peak_face_accel2 = 0.0;        ///< bar 2's contact face [m/s^2]
+  double peak_centre_accel1 = 0.0;      ///< peak |acceleration| of bar 1's centre [m/s^2]
+  double peak_centre_accel2 = 0.0;      ///< [m/s^2]
+  double initial_energy_J = 0.0;        ///< kinetic energy before impact [J]
   /// Largest |total energy(t) - initial energy| over the run: rigid-body kinetic + modal +
   /// contact potential + energy dissipated by modal damping (the work balance) [J].
   double max_energy_error_J = 0.0;
-  double dissipated_J = 0.0;           ///< energy dissipated by slab damping [J]
+  double dissipated_J = 0.0;               ///< energy dissipated by slab damping [J]
   std::vector<SearsImpactSample> history;  ///< from t = 0, when spec.record_history
 };
 

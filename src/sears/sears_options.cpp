@@ -75,7 +75,8 @@ SearsImpactSpec sears_impact_spec_from(const Options& opt, double m1, double m2,
   spec.v0_m_s = v0;
 
   const long modes = opt.get_int("modes");
-  if (modes < 1 || modes > 100000) throw opt.invalid("modes", "must be a whole number in [1, 100000]");
+  if (modes < 1 || modes > 100000)
+    throw opt.invalid("modes", "must be a whole number in [1, 100000]");
   spec.modes = static_cast<int>(modes);
   spec.xi_s = opt.get_double("xi-s");
   if (!(spec.xi_s >= 0.0 && spec.xi_s < 1.0)) throw opt.invalid("xi-s", "must be in [0, 1)");
@@ -100,10 +101,11 @@ SearsImpactSpec sears_impact_spec_from(const Options& opt, double m1, double m2,
     const double r1 = opt.given("radius1") ? positive(opt, "radius1", "m") : kFlatRadius;
     const double r2 = opt.given("radius2") ? positive(opt, "radius2", "m") : kFlatRadius;
     if (std::isinf(r1) && std::isinf(r2))
-      throw opt.invalid("radius1", "missing: hertz contact needs --radius1 and/or --radius2 [m] "
-                                   "(a curved face) or --k [N/m^1.5]");
-    spec.contact.stiffness = hertz_stiffness(spec.bar1.E_Pa, spec.bar1.poisson, r1,
-                                             spec.bar2.E_Pa, spec.bar2.poisson, r2);
+      throw opt.invalid("radius1",
+                        "missing: hertz contact needs --radius1 and/or --radius2 [m] "
+                        "(a curved face) or --k [N/m^1.5]");
+    spec.contact.stiffness = hertz_stiffness(spec.bar1.E_Pa, spec.bar1.poisson, r1, spec.bar2.E_Pa,
+                                             spec.bar2.poisson, r2);
   }
   if (opt.given("force-cap")) spec.contact.force_cap_N = positive(opt, "force-cap", "N");
 

@@ -66,8 +66,8 @@ void build_banks(RowContactLayout& L, const BuildingRow& row, const SearsRowMode
                  double dt) {
   L.banks.clear();
   for (const auto& f : L.floors)
-    L.banks.emplace_back(floor_slab(row, model, f.building, f.floor - 1), model.modes,
-                         model.xi_s, dt);
+    L.banks.emplace_back(floor_slab(row, model, f.building, f.floor - 1), model.modes, model.xi_s,
+                         dt);
   const int ns = static_cast<int>(L.laws.size());
   L.S_modal = Eigen::MatrixXd::Zero(ns, ns);
   for (int s = 0; s < ns; ++s) {

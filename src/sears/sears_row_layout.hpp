@@ -1,9 +1,8 @@
 #pragma once
 // The damped Sears contact layout of a building row: which floors are bars, their modal banks,
 // the law of each contact site and the step's contact compliance S (see sears_simulation.hpp).
-#include <vector>
-
 #include <Eigen/Dense>
+#include <vector>
 
 #include "sears/contact_law.hpp"
 #include "sears/modal_bank.hpp"
@@ -13,19 +12,19 @@ namespace pound::sears {
 
 /// One colliding floor: a bar whose rigid-body mode is floor DOF `dof`.
 struct CollidingFloor {
-  int building = 0;    ///< 0-based
-  int floor = 0;       ///< 1-based
-  int dof = 0;         ///< global floor DOF
-  int site_left = -1;  ///< contact site at the slab's left end (x = 0), -1 when none
-  int site_right = -1; ///< contact site at the slab's right end (x = l), -1 when none
+  int building = 0;     ///< 0-based
+  int floor = 0;        ///< 1-based
+  int dof = 0;          ///< global floor DOF
+  int site_left = -1;   ///< contact site at the slab's left end (x = 0), -1 when none
+  int site_right = -1;  ///< contact site at the slab's right end (x = l), -1 when none
 };
 
 struct RowContactLayout {
   std::vector<CollidingFloor> floors;
-  std::vector<ModalBank> banks;      ///< one per colliding floor
-  std::vector<int> site_left_floor;  ///< per site: index into floors of the left building's floor
-  std::vector<int> site_right_floor; ///< per site: the right building's floor
-  std::vector<ContactLaw> laws;      ///< per site
+  std::vector<ModalBank> banks;       ///< one per colliding floor
+  std::vector<int> site_left_floor;   ///< per site: index into floors of the left building's floor
+  std::vector<int> site_right_floor;  ///< per site: the right building's floor
+  std::vector<ContactLaw> laws;       ///< per site
   /// Modal part of the compliance: delta_s changes by -sum_t S_modal(s,t) F_t [m/N].
   Eigen::MatrixXd S_modal;
 };

@@ -46,9 +46,10 @@ double sears_row_step(const BuildingRow& row, const GroundMotion* motion,
   for (const auto& f : L.floors)
     w_max = std::max(w_max, floor_slab(row, model, f.building, f.floor - 1).omega(model.modes));
   for (std::size_t s = 0; s < L.laws.size(); ++s) {
-    const double m1 = 1.0 / a.inv_mass(a.sites[s].dof_left), m2 = 1.0 / a.inv_mass(a.sites[s].dof_right);
-    t_c = std::min(t_c, L.laws[s].lumped_duration(m1 * m2 / (m1 + m2),
-                                                  model.hertz_reference_velocity));
+    const double m1 = 1.0 / a.inv_mass(a.sites[s].dof_left),
+                 m2 = 1.0 / a.inv_mass(a.sites[s].dof_right);
+    t_c = std::min(t_c,
+                   L.laws[s].lumped_duration(m1 * m2 / (m1 + m2), model.hertz_reference_velocity));
   }
   const double t_min = w_max > 0.0 ? 2.0 * M_PI / w_max : std::numeric_limits<double>::infinity();
   StepLimits lim = step_limits(t_min, t_c);
@@ -58,6 +59,9 @@ double sears_row_step(const BuildingRow& row, const GroundMotion* motion,
   if (!std::isfinite(lim.auto_dt_s))
     throw InputError("damped Sears model: no time scale (no contacts, springs or record); give dt");
   if (!std::isfinite(lim.max_dt_s)) lim.max_dt_s = lim.auto_dt_s * 10.0;
+  // The automatic step divides the record spacing, so that steps end on its samples.
+  if (motion && !(model.dt_s > 0.0))
+    lim.auto_dt_s = motion->dt / std::ceil(motion->dt / lim.auto_dt_s - 1e-9);
   return choose_step(lim, model.dt_s);
 }
 
@@ -67,18 +71,24 @@ SearsRowResult solve_sears_row(const SearsRowProblem& p, const SearsRowModel& mo
   RowContactLayout L = make_layout(row, a, model);
   const double dt = sears_row_step(row, p.motion, model);
   build_banks(L, row, model, dt);
-  const int n = a.dofs(), ns = static_cast<int>(a.sites.size()), nf = static_cast<int>(L.floors.size());
+  const int n = a.dofs(), ns = static_cast<int>(a.sites.size()),
+            nf = static_cast<int>(L.floors.size());
 
-  // Newmark average acceleration: Khat u_{i+1} = phat + P_{i+1} (Chopra, Table 5.4.2).
-  const Eigen::MatrixXd Khat = a.K + (2.0 / dt) * a.C + (4.0 / (dt * dt)) * a.M;
-  const Eigen::LLT<Eigen::MatrixXd> khat(Khat);
+  // Newmark average acceleration (Chopra sec. 5.4) solved for the end-of-step acceleration,
+  // which keeps m a = P exact for free bodies (momentum to round-off):
+  //   Mt a_{i+1} = p_{i+1} - C (v + dt/2 a) - K (u + dt v + dt^2/4 a),  Mt = M + dt/2 C + dt^2/4 K
+  //   u_{i+1} = u + dt v + dt^2/4 (a + a_{i+1}),  v_{i+1} = v + dt/2 (a + a_{i+1}).
+  // With the contact forces P = -sum_s F_s (e_L - e_R): a_{i+1} = a_hat - H F,
+  // H = Mt^-1 [e_L - e_R], and u_{i+1} = u_hat - dt^2/4 H F.
+  const Eigen::MatrixXd Mt = a.M + (0.5 * dt) * a.C + (0.25 * dt * dt) * a.K;
+  const Eigen::LLT<Eigen::MatrixXd> mt(Mt);
   Eigen::MatrixXd Dsites = Eigen::MatrixXd::Zero(n, ns);  // columns e_L - e_R
   for (int s = 0; s < ns; ++s) {
     Dsites(a.sites[s].dof_left, s) = 1.0;
     Dsites(a.sites[s].dof_right, s) = -1.0;
   }
-  const Eigen::MatrixXd G = khat.solve(Dsites);
-  const Eigen::MatrixXd S = Dsites.transpose() * G + L.S_modal;
+  const Eigen::MatrixXd H = mt.solve(Dsites);
+  const Eigen::MatrixXd S = (0.25 * dt * dt) * Dsites.transpose() * H + L.S_modal;
   const Eigen::VectorXd m_ones = a.M * Eigen::VectorXd::Ones(n);
 
   auto ag_at = [&](double t) { return p.motion ? p.motion->at(t) : 0.0; };
@@ -86,7 +96,7 @@ SearsRowResult solve_sears_row(const SearsRowProblem& p, const SearsRowModel& mo
   Eigen::VectorXd v = p.v0.size() ? p.v0 : Eigen::VectorXd::Zero(n);
   Eigen::VectorXd acc = a.M.ldlt().solve(-m_ones * ag_at(0.0) - a.C * v - a.K * u);
   Eigen::VectorXd F = Eigen::VectorXd::Zero(ns), F_next = F, delta_pred(ns), delta(ns);
-  Eigen::VectorXd u_hat(n), u_next(n), a_next(n), phat(n);
+  Eigen::VectorXd u_hat(n), a_next(n), rhs(n);
   for (int s = 0; s < ns; ++s)
     delta(s) = u(a.sites[s].dof_left) - u(a.sites[s].dof_right) - a.sites[s].gap;
   std::vector<EndLoads> begin(nf), end(nf);
@@ -109,9 +119,10 @@ SearsRowResult solve_sears_row(const SearsRowProblem& p, const SearsRowModel& mo
 
   for (long i = 0; i < steps; ++i) {
     const double t_next = (i + 1) * dt;
-    phat = -m_ones * ag_at(t_next) + a.M * ((4.0 / (dt * dt)) * u + (4.0 / dt) * v + acc) +
-           a.C * ((2.0 / dt) * u + v);
-    u_hat = khat.solve(phat);
+    rhs = -m_ones * ag_at(t_next) - a.C * (v + (0.5 * dt) * acc) -
+          a.K * (u + dt * v + (0.25 * dt * dt) * acc);
+    a_next = mt.solve(rhs);  // without contact forces
+    u_hat = u + dt * v + (0.25 * dt * dt) * (acc + a_next);
     loads(F, begin);
     F_next.setZero();
     if (p.contacts && ns > 0) {
@@ -124,15 +135,15 @@ SearsRowResult solve_sears_row(const SearsRowProblem& p, const SearsRowModel& mo
       F_next = F;  // warm start
       solve_forces(L.laws, S, delta_pred, F_next);
     }
-    u_next = u_hat - G * F_next;
-    a_next = (4.0 / (dt * dt)) * (u_next - u) - (4.0 / dt) * v - acc;
-    v += 0.5 * dt * (acc + a_next);
-    u = u_next;
+    if (ns > 0) a_next -= H * F_next;
+    u += dt * v + (0.25 * dt * dt) * (acc + a_next);
+    v += (0.5 * dt) * (acc + a_next);
     acc = a_next;
     loads(F_next, end);
     for (int k = 0; k < nf; ++k) L.banks[k].step(begin[k], end[k]);
-    if (!u.allFinite()) throw NumericalError("damped Sears model: non-finite state at t = " +
-                                             std::to_string(t_next) + " s");
+    if (!u.allFinite())
+      throw NumericalError("damped Sears model: non-finite state at t = " + std::to_string(t_next) +
+                           " s");
     const double ag = ag_at(t_next);
 
     // Contact sites: events, peaks, impulse (force linear over the step).

@@ -16,10 +16,9 @@
 //      then every state is advanced with the forces linear over the step.
 // Both integrators are second order; the step follows sears/step_rule.hpp with the building
 // periods and the record spacing as further bounds.
+#include <Eigen/Dense>
 #include <limits>
 #include <vector>
-
-#include <Eigen/Dense>
 
 #include "motion/ground_motion.hpp"
 #include "sears/contact_law.hpp"
@@ -39,14 +38,14 @@ struct FloorSlabProperties {
 
 struct SearsRowModel {
   std::vector<FloorSlabProperties> slabs;  ///< one per building of the row
-  int modes = 100;                          ///< N internal modes per colliding floor [-]
-  double xi_s = 0.05;                       ///< slab modal damping ratio [-]
-  double chi = 1.0 / 8.0;                   ///< wave-speed factor [-]
+  int modes = 100;                         ///< N internal modes per colliding floor [-]
+  double xi_s = 0.05;                      ///< slab modal damping ratio [-]
+  double chi = 1.0 / 8.0;                  ///< wave-speed factor [-]
   ContactKind contact = ContactKind::flat;
-  double D = 1.0;             ///< flat: fraction factor (Th. 8.2) [-]
-  double hertz_k = 0.0;       ///< hertz: stiffness [N/m^1.5]
+  double D = 1.0;        ///< flat: fraction factor (Th. 8.2) [-]
+  double hertz_k = 0.0;  ///< hertz: stiffness [N/m^1.5]
   double force_cap_N = std::numeric_limits<double>::infinity();  ///< PF_max (Th. 9.1) [N]
-  double dt_s = 0.0;          ///< 0 = automatic
+  double dt_s = 0.0;                                             ///< 0 = automatic
   /// Approach velocity used for the Hertz contact time scale of the step rule [m/s].
   double hertz_reference_velocity = 1.0;
 };
@@ -64,7 +63,7 @@ struct SearsRowProblem {
   double t_end = 0.0;                    ///< [s]
   bool contacts = true;                  ///< false: the buildings vibrate independently
   bool record_history = false;           ///< one History entry per step
-  Eigen::VectorXd u0, v0;  ///< initial floor state (empty: at rest) [m], [m/s]
+  Eigen::VectorXd u0, v0;                ///< initial floor state (empty: at rest) [m], [m/s]
 };
 
 struct SearsRowResult {

@@ -7,16 +7,22 @@
 
 namespace pound::sears {
 
-double Slab::wave_speed() const { return chi * std::sqrt(E_Pa / rho_kg_m3); }
+double Slab::wave_speed() const {
+  return chi * std::sqrt(E_Pa / rho_kg_m3);
+}
 
-double Slab::omega(int n) const { return n * M_PI * wave_speed() / length_m; }
+double Slab::omega(int n) const {
+  return n * M_PI * wave_speed() / length_m;
+}
 
-double Slab::first_mode_period() const { return 2.0 * length_m / wave_speed(); }
+double Slab::first_mode_period() const {
+  return 2.0 * length_m / wave_speed();
+}
 
 void validate(const Slab& slab, const char* what) {
   auto bad = [&](const char* name, double v, const char* valid) {
-    return InputError(std::string(what) + ": " + name + " = " + std::to_string(v) + " is invalid; " +
-                      valid);
+    return InputError(std::string(what) + ": " + name + " = " + std::to_string(v) +
+                      " is invalid; " + valid);
   };
   auto pos = [](double v) { return std::isfinite(v) && v > 0.0; };
   if (!pos(slab.length_m)) throw bad("length", slab.length_m, "must be > 0 [m]");

@@ -10,12 +10,12 @@
 namespace pound::sears {
 
 struct Slab {
-  double length_m = 0.0;       ///< l: length along the line of impact [m]
-  double E_Pa = 0.0;           ///< Young's modulus [Pa]
-  double rho_kg_m3 = 0.0;      ///< density [kg/m^3]
-  double poisson = 0.0;        ///< Poisson's ratio [-] (enters the Hertz stiffness only)
-  double mass_kg = 0.0;        ///< m: mass of the body (floor mass in a building) [kg]
-  double chi = 1.0 / 8.0;      ///< wave-speed factor, c = chi sqrt(E/rho) [-]
+  double length_m = 0.0;   ///< l: length along the line of impact [m]
+  double E_Pa = 0.0;       ///< Young's modulus [Pa]
+  double rho_kg_m3 = 0.0;  ///< density [kg/m^3]
+  double poisson = 0.0;    ///< Poisson's ratio [-] (enters the Hertz stiffness only)
+  double mass_kg = 0.0;    ///< m: mass of the body (floor mass in a building) [kg]
+  double chi = 1.0 / 8.0;  ///< wave-speed factor, c = chi sqrt(E/rho) [-]
 
   /// Effective cross-section A = m / (rho l) [m^2].
   double area_m2() const { return mass_kg / (rho_kg_m3 * length_m); }

@@ -16,8 +16,8 @@
 // names the largest allowed value.
 namespace pound::sears {
 
-inline constexpr double kStepsPerShortestPeriod = 20.0;  ///< automatic step
-inline constexpr double kStepsPerContact = 200.0;        ///< automatic step
+inline constexpr double kStepsPerShortestPeriod = 20.0;    ///< automatic step
+inline constexpr double kStepsPerContact = 200.0;          ///< automatic step
 inline constexpr double kMinStepsPerShortestPeriod = 2.0;  ///< largest allowed step (Nyquist)
 inline constexpr double kMinStepsPerContact = 20.0;        ///< largest allowed step
 

@@ -1,10 +1,10 @@
 // The exact piecewise-linear recurrence of the internal modes (Chopra, Dynamics of Structures,
 // sec. 5.2) and the modal bank built on it.
+#include "sears/modal_bank.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
-
-#include "sears/modal_bank.hpp"
 
 namespace pound::sears {
 namespace {
@@ -18,8 +18,10 @@ RecurrenceCoefficients chopra_table_5_2_1(double w, double xi, double dt) {
   o.A = e * (r * s + c);
   o.B = e * s / wd;
   o.C = (2 * xi / (w * dt) +
-         e * (((1 - 2 * xi * xi) / (wd * dt) - r) * s - (1 + 2 * xi / (w * dt)) * c)) / k;
-  o.D = (1 - 2 * xi / (w * dt) + e * ((2 * xi * xi - 1) / (wd * dt) * s + 2 * xi / (w * dt) * c)) / k;
+         e * (((1 - 2 * xi * xi) / (wd * dt) - r) * s - (1 + 2 * xi / (w * dt)) * c)) /
+        k;
+  o.D =
+      (1 - 2 * xi / (w * dt) + e * ((2 * xi * xi - 1) / (wd * dt) * s + 2 * xi / (w * dt) * c)) / k;
   o.Av = -e * w / std::sqrt(1.0 - xi * xi) * s;
   o.Bv = e * (c - r * s);
   o.Cv = (-1 / dt + e * ((w / std::sqrt(1 - xi * xi) + r / dt) * s + c / dt)) / k;
@@ -73,7 +75,9 @@ TEST(SearsRecurrence, RampLoadIsIntegratedExactlyAtAnyStep) {
   EXPECT_NEAR(v, exact_v, 1e-10 * r / (w * w));
 }
 
-Slab test_bar() { return Slab{1.0, 200e9, 7850.0, 0.3, 7850.0 * 1.0 * 0.01, 1.0}; }
+Slab test_bar() {
+  return Slab{1.0, 200e9, 7850.0, 0.3, 7850.0 * 1.0 * 0.01, 1.0};
+}
 
 TEST(SearsModalBank, FlexibilityIsTheFaceResponseToAUnitEndOfStepLoad) {
   ModalBank bank(test_bar(), 50, 0.05, 1e-6);
@@ -109,7 +113,7 @@ TEST(SearsModalBank, FreeVibrationEnergyDecaysAtTheModalDampingRate) {
   // A single mode in free vibration: its energy envelope decays as exp(-2 xi w t).
   const Slab bar = test_bar();
   const double xi = 0.02, T = bar.first_mode_period();
-  ModalBank bank(bar, 1, xi, T / 7.3);  // an arbitrary, coarse step: exact for free vibration
+  ModalBank bank(bar, 1, xi, T / 7.3);        // an arbitrary, coarse step: exact for free vibration
   bank.step(EndLoads{}, EndLoads{1e6, 0.0});  // kick
   const double e0 = bank.energy();
   // Sample at whole periods (T/7.3 * 73 = 10 T): energy ratio = exp(-2 xi w 10 T) exactly for

@@ -1,12 +1,13 @@
 // Free two-bar impact with the damped Sears model: conservation laws, the lumped (Hertz) and
 // wave (St Venant) limits, and convergence in the step and in the number of modes.
+#include "sears/sears_impact.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 
 #include "core/error.hpp"
-#include "sears/sears_impact.hpp"
 
 namespace pound::sears {
 namespace {

@@ -1,4 +1,6 @@
 // Options glue of `pound impact --model sears` and the thesis chapter 7 study file.
+#include "sears/sears_options.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,7 +10,6 @@
 
 #include "io/options.hpp"
 #include "sears/contact_stiffness.hpp"
-#include "sears/sears_options.hpp"
 
 namespace pound::sears {
 namespace {
@@ -41,8 +42,8 @@ std::string error_of(const std::vector<std::string>& args) {
 }
 
 TEST(SearsOptions, FlatContactStiffnessFollowsFromTheSlabs) {
-  const Options opt = impact_options({"--length1", "20", "--length2", "12", "--E", "21e9",
-                                      "--rho", "2500", "--D", "2"});
+  const Options opt = impact_options(
+      {"--length1", "20", "--length2", "12", "--E", "21e9", "--rho", "2500", "--D", "2"});
   const SearsImpactSpec s = sears_impact_spec_from(opt, 48000.0, 29000.0, 0.1);
   EXPECT_EQ(s.contact.kind, ContactKind::flat);
   EXPECT_DOUBLE_EQ(s.contact.stiffness, flat_contact_stiffness(s.bar1, s.bar2, 2.0));
@@ -54,10 +55,10 @@ TEST(SearsOptions, FlatContactStiffnessFollowsFromTheSlabs) {
 }
 
 TEST(SearsOptions, HertzFromRadiiWithPerBarMaterials) {
-  const Options opt = impact_options({"--length1", "0.335", "--length2", "0.32", "--E", "200e9",
-                                      "--E2", "100e9", "--rho", "7850", "--poisson", "0.3",
-                                      "--contact", "hertz", "--radius1", "0.015", "--modes", "40",
-                                      "--force-cap", "5e4"});
+  const Options opt = impact_options(
+      {"--length1", "0.335", "--length2", "0.32",      "--E",         "200e9",     "--E2",
+       "100e9",     "--rho", "7850",      "--poisson", "0.3",         "--contact", "hertz",
+       "--radius1", "0.015", "--modes",   "40",        "--force-cap", "5e4"});
   const SearsImpactSpec s = sears_impact_spec_from(opt, 8.7, 8.6, 0.02);
   EXPECT_EQ(s.contact.kind, ContactKind::hertz);
   EXPECT_DOUBLE_EQ(s.bar2.E_Pa, 100e9);
@@ -68,8 +69,8 @@ TEST(SearsOptions, HertzFromRadiiWithPerBarMaterials) {
 }
 
 TEST(SearsOptions, ErrorsNameTheKeyAndWhatIsValid) {
-  const std::vector<std::string> base = {"--length1", "1", "--length2", "1", "--E", "2e11",
-                                         "--rho", "7850"};
+  const std::vector<std::string> base = {"--length1", "1",    "--length2", "1",
+                                         "--E",       "2e11", "--rho",     "7850"};
   auto with = [&](std::vector<std::string> extra) {
     std::vector<std::string> a = base;
     a.insert(a.end(), extra.begin(), extra.end());

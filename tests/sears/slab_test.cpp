@@ -1,4 +1,6 @@
 // Bar description and contact stiffness of the damped Sears model against the thesis' values.
+#include "sears/slab.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -6,7 +8,6 @@
 #include "core/error.hpp"
 #include "sears/contact_stiffness.hpp"
 #include "sears/modal_bank.hpp"
-#include "sears/slab.hpp"
 
 namespace pound::sears {
 namespace {
@@ -80,8 +81,8 @@ TEST(SearsContactStiffness, FlatFloorStiffnessMatchesThesisChapter8) {
   EXPECT_NEAR(left.area_m2(), A, 1e-12);
   EXPECT_NEAR(flat_contact_stiffness(left, right, 1.0) / 1e8, 6.3, 0.005);
   // D scales both springs, hence k_L.
-  EXPECT_NEAR(flat_contact_stiffness(left, right, 2.0), 2.0 * flat_contact_stiffness(left, right, 1.0),
-              1.0);
+  EXPECT_NEAR(flat_contact_stiffness(left, right, 2.0),
+              2.0 * flat_contact_stiffness(left, right, 1.0), 1.0);
 }
 
 TEST(SearsSlab, ValidateNamesTheBadProperty) {

@@ -1,0 +1,157 @@
+// pound campaign: the Monte Carlo campaign over MPI ranks (mpirun -np N pound campaign ...).
+#include <mpi.h>
+#include <sys/stat.h>
+
+#include <cstdio>
+#include <iostream>
+#include <string>
+
+#include "app/commands.hpp"
+#include "campaign/campaign_study.hpp"
+#include "campaign/mpi_campaign.hpp"
+#include "io/options.hpp"
+
+namespace pound::app {
+namespace {
+
+bool exists(const std::string& p) {
+  struct stat s;
+  return ::stat(p.c_str(), &s) == 0;
+}
+
+// Checks of the output file made by rank 0 before anything runs. Returns "" or an error.
+std::string check_output(const std::string& out, bool resume, bool force, bool* complete) {
+  const std::string journal = out + ".journal";
+  *complete = false;
+  if (resume && force) return "--resume and --force exclude each other";
+  if (resume) {
+    if (exists(journal)) return "";
+    if (exists(out)) {
+      *complete = true;
+      return "";
+    }
+    return out + ": nothing to resume (no " + journal + "); run without --resume";
+  }
+  if (!force && exists(out))
+    return out + ": exists; use --force to overwrite it or --resume to complete it";
+  if (!force && exists(journal))
+    return journal + ": an interrupted run of this output exists; use --resume to complete it "
+                     "or --force to start again";
+  if (force) {
+    std::remove(out.c_str());
+    std::remove(journal.c_str());
+  }
+  // The folder must be writable: try the journal name.
+  std::FILE* f = std::fopen(journal.c_str(), "wb");
+  if (!f) return out + ": cannot write in this folder";
+  std::fclose(f);
+  std::remove(journal.c_str());
+  return "";
+}
+
+}  // namespace
+
+int run_campaign(int argc, const char* const* argv) {
+  MPI_Init(nullptr, nullptr);
+  int rank = 0, size = 1;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  MPI_Comm_size(MPI_COMM_WORLD, &size);
+  auto specs = campaign_option_specs();
+  specs.push_back({"out", "", "", "result file (HDF5); its journal is OUT.journal"});
+  specs.push_back({"samples", "-", "", "number of samples (overrides campaign.samples)"});
+  specs.push_back({"seed", "-", "", "study seed (overrides campaign.seed)"});
+  specs.push_back({"resume", "", "", "complete an interrupted campaign from its journal", true});
+  specs.push_back({"force", "", "", "overwrite an existing result file", true});
+  specs.push_back({"quiet", "", "", "no progress lines", true});
+  Options opt("campaign",
+              "Monte Carlo campaign: samples of buildings in a row with and without pounding, "
+              "spread over MPI ranks (mpirun -np N pound campaign ...).",
+              specs);
+  // Everything is checked on every rank before any rank simulates; rank 0 reports.
+  std::string error;
+  CampaignStudy study;
+  bool complete = false, help = false;
+  try {
+    opt.parse(argc, argv);
+    help = opt.help_requested();
+    if (!help) {
+      if (!opt.given("out")) throw InputError("command line: --out RUN.h5 is required");
+      const long samples = opt.given("samples") ? opt.get_int("samples") : 0;
+      if (opt.given("samples") && samples < 1) throw opt.invalid("samples", "valid: >= 1");
+      const long seed = opt.given("seed") ? opt.get_int("seed") : -1;
+      if (opt.given("seed") && seed < 0) throw opt.invalid("seed", "valid: >= 0");
+      study = campaign_from_options(opt, samples, seed);
+    }
+  } catch (const std::exception& e) {
+    error = e.what();
+  }
+  int bad = error.empty() ? 0 : 1, any_bad = 0;
+  MPI_Allreduce(&bad, &any_bad, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+  if (any_bad || help) {
+    if (rank == 0 && help) std::cout << opt.help_text();
+    if (rank == 0 && !help)
+      std::cerr << "pound campaign: error: " << (error.empty() ? "a rank failed to read the study" : error) << "\n";
+    MPI_Finalize();
+    return help ? 0 : 2;
+  }
+  const std::string out = opt.get_string("out");
+  if (rank == 0) error = check_output(out, opt.flag("resume"), opt.flag("force"), &complete);
+  int state[2] = {error.empty() ? 0 : 1, complete ? 1 : 0};
+  MPI_Bcast(state, 2, MPI_INT, 0, MPI_COMM_WORLD);
+  if (state[0] || state[1]) {
+    if (rank == 0 && state[0]) std::cerr << "pound campaign: error: " << error << "\n";
+    if (rank == 0 && state[1]) std::cerr << "campaign: " << out << " is already complete\n";
+    MPI_Finalize();
+    return state[0] ? 2 : 0;
+  }
+  if (rank == 0) {
+    std::fprintf(stderr, "campaign: %ld samples on %d rank%s, seed %llu, %zu sampled parameter%s%s\n",
+                 study.samples, size, size == 1 ? "" : "s",
+                 static_cast<unsigned long long>(study.seed), study.parameters.size(),
+                 study.parameters.size() == 1 ? "" : "s", opt.flag("resume") ? " (resuming)" : "");
+    std::fprintf(stderr, "campaign: resolved study:\n");
+    std::string text = study.resolved;
+    std::size_t p = 0;
+    while (p < text.size()) {
+      const auto e = text.find('\n', p);
+      std::fprintf(stderr, "  %s\n", text.substr(p, e - p).c_str());
+      p = e == std::string::npos ? text.size() : e + 1;
+    }
+  }
+  install_stop_handlers();
+  CampaignRunOptions ro;
+  ro.out = out;
+  ro.resume = opt.flag("resume");
+  ro.progress = !opt.flag("quiet");
+  CampaignSummary sum;
+  try {
+    sum = pound::run_campaign(study, ro, MPI_COMM_WORLD);
+  } catch (const std::exception& e) {
+    if (rank == 0) std::cerr << "pound campaign: error: " << e.what() << "\n";
+    MPI_Finalize();
+    return 2;
+  }
+  int code = 0;
+  if (rank == 0) {
+    if (sum.interrupted) {
+      std::string cmd = "mpirun -np " + std::to_string(size) + " pound campaign";
+      for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        if (a == "--force" || a == "--resume") continue;
+        cmd += " " + a;
+      }
+      std::fprintf(stderr,
+                   "campaign: interrupted after %ld of %ld samples (%ld failed); the journal %s.journal "
+                   "keeps them. Resume with: %s --resume\n",
+                   sum.done, sum.total, sum.failed, out.c_str(), cmd.c_str());
+    } else {
+      std::fprintf(stderr, "campaign: done: %ld samples, %ld failed, written to %s\n", sum.done,
+                   sum.failed, out.c_str());
+    }
+  }
+  if (!sum.interrupted && sum.failed > 0) code = 4;
+  MPI_Finalize();
+  return code;
+}
+
+}  // namespace pound::app

@@ -1,0 +1,254 @@
+#include "campaign/campaign_study.hpp"
+
+#include <algorithm>
+#include <set>
+#include <sstream>
+
+#include "contact/registry.hpp"
+#include "motion/motion_processing.hpp"
+#include "motion/motion_reader.hpp"
+#include "motion/spectrum_factory.hpp"
+#include "study/row_options.hpp"
+
+namespace pound {
+namespace {
+
+std::vector<OptionSpec> prefixed(const std::string& prefix, std::vector<OptionSpec> specs) {
+  for (auto& s : specs) s.key = prefix + "." + s.key;
+  return specs;
+}
+
+// Keys that may be sampled, with what they mean (the unit is the fixed key's unit).
+const std::vector<OptionSpec>& sampled_specs() {
+  static const std::vector<OptionSpec> specs = {
+      {"e", "-", "", "coefficient of restitution (distribution)"},
+      {"k", "N/m or N/m^1.5", "", "contact stiffness (distribution)"},
+      {"k_factor", "-", "", "contact stiffness / larger storey stiffness (distribution)"},
+      {"gap", "m", "", "gap at every colliding floor of every pair (distribution)"},
+      {"damping", "-", "", "damping ratio of every building (distribution)"},
+      {"model", "", "", "contact model: discrete(name: weight, ...)"},
+      {"building#.mass_scale", "-", "", "factor on the building's floor masses (distribution)"},
+      {"building#.stiffness_scale", "-", "",
+       "factor on the building's storey stiffnesses (distribution)"},
+  };
+  return specs;
+}
+
+// [generator]: the target spectrum's keys plus the generator's own.
+std::vector<OptionSpec> generator_specs() {
+  std::vector<OptionSpec> s = design_spectrum_option_specs();
+  const std::vector<OptionSpec> own = {
+      {"duration", "s", "20", "duration of generated motions"},
+      {"dt", "s", "0.01", "time step of generated motions"},
+      {"envelope", "", "jennings", "intensity envelope: jennings or saragoni-hart"},
+      {"iterations", "-", "25", "spectrum-matching iterations at most"},
+  };
+  s.insert(s.end(), own.begin(), own.end());
+  return s;
+}
+
+}  // namespace
+
+int CampaignStudy::max_floors() const {
+  int m = 0;
+  for (const auto& b : row.buildings) m = std::max(m, b.floors());
+  return m;
+}
+
+int CampaignStudy::max_levels() const {
+  int m = 0;
+  for (int p = 0; p < pairs(); ++p) m = std::max(m, colliding_levels(row, p));
+  return m;
+}
+
+std::vector<OptionSpec> campaign_option_specs() {
+  std::vector<OptionSpec> s = row_option_specs();
+  const std::vector<OptionSpec> own = {
+      {"campaign.samples", "-", "100", "number of samples"},
+      {"campaign.seed", "-", "1", "study seed (every draw derives from it and the sample id)"},
+      {"campaign.sampling", "", "lhs", "lhs (Latin hypercube) or mc (plain Monte Carlo)"},
+      {"campaign.batch", "-", "1", "samples handed to a worker at a time"},
+      {"motion.source", "", "generated",
+       "generated (spectrum-compatible, one per sample) or records (motion.records)"},
+      {"motion.records", "", "", "record files drawn uniformly per sample (comma separated)"},
+      {"intensity.measure", "", "pga", "pga or sa (Sa(T1) of intensity.building, 5 %)"},
+      {"intensity.building", "-", "1", "building whose first period defines Sa(T1)"},
+      {"intensity.levels", "g", "",
+       "stripe levels (multiple-stripe analysis); samples cycle through them"},
+      {"intensity.scale", "-", "",
+       "sampled scale factor on the motion instead of levels (distribution)"},
+  };
+  s.insert(s.end(), own.begin(), own.end());
+  auto spec = prefixed("generator", generator_specs());
+  s.insert(s.end(), spec.begin(), spec.end());
+  auto smp = prefixed("sample", sampled_specs());
+  s.insert(s.end(), smp.begin(), smp.end());
+  return s;
+}
+
+CampaignStudy campaign_from_options(const Options& opt, long samples_override,
+                                    long seed_override) {
+  CampaignStudy st;
+  st.row = row_from_options(opt);
+  st.integrator = integrator_from_options(opt);
+  st.extra_time = opt.get_nonnegative("simulation.extra_time");
+
+  st.samples = samples_override > 0 ? samples_override : opt.get_int("campaign.samples");
+  if (st.samples < 1) throw opt.invalid("campaign.samples", "valid: a whole number >= 1");
+  if (seed_override >= 0) {
+    st.seed = static_cast<std::uint64_t>(seed_override);
+  } else {
+    const long seed = opt.get_int("campaign.seed");
+    if (seed < 0) throw opt.invalid("campaign.seed", "valid: a whole number >= 0");
+    st.seed = static_cast<std::uint64_t>(seed);
+  }
+  const std::string m = opt.get_string("campaign.sampling");
+  if (m == "lhs")
+    st.sampling = SamplingMethod::latin_hypercube;
+  else if (m == "mc")
+    st.sampling = SamplingMethod::monte_carlo;
+  else
+    throw opt.invalid("campaign.sampling", "valid: lhs or mc");
+  st.batch = static_cast<int>(opt.get_int("campaign.batch"));
+  if (st.batch < 1) throw opt.invalid("campaign.batch", "valid: a whole number >= 1");
+
+  // Sampled parameters, in a fixed (sorted) order.
+  const Options smp = opt.section("sample", sampled_specs());
+  std::set<std::string> keys;
+  for (int b = 1; b <= st.buildings(); ++b)
+    for (const char* what : {".mass_scale", ".stiffness_scale"})
+      if (smp.given("building" + std::to_string(b) + what))
+        keys.insert("building" + std::to_string(b) + what);
+  for (const char* k : {"e", "k", "k_factor", "gap", "damping", "model"})
+    if (smp.given(k)) keys.insert(k);
+  if (smp.count_numbered("building") > st.buildings())
+    throw InputError(opt.where("sample.building" + std::to_string(smp.count_numbered("building")) +
+                               ".mass_scale") +
+                     ": the study has only " + std::to_string(st.buildings()) + " buildings");
+  for (const auto& k : keys) {
+    SampledParameter p{k, Distribution::parse(smp.get_string(k), smp.where(k))};
+    if (k == "model") {
+      if (p.distribution.kind() != DistributionKind::discrete)
+        throw smp.invalid(k, "valid: discrete(name: weight, ...) with names from " +
+                                 contact_model_names());
+      for (const auto& l : p.distribution.labels()) find_contact_model(l, smp.where(k));
+    } else {
+      if (p.distribution.kind() == DistributionKind::discrete) p.distribution.lower();  // numeric check
+      const double lo = p.distribution.lower(), hi = p.distribution.upper();
+      const bool positive = k != "gap" && k != "damping";
+      if (positive && !(lo > 0))
+        throw smp.invalid(k, "its values must be > 0; truncate the distribution (e.g. normal(m, s, lo, hi))");
+      if (!positive && !(lo >= 0))
+        throw smp.invalid(k, "its values must be >= 0; truncate the distribution");
+      if (k == "e" && !(hi <= 1)) throw smp.invalid(k, "e must stay in (0, 1]; truncate at 1");
+      if (k == "damping" && !(hi < 1)) throw smp.invalid(k, "damping must stay below 1");
+    }
+    st.parameters.push_back(std::move(p));
+  }
+
+  // The contact model: fixed keys, with sampled ones checked for what each model needs.
+  bool model_sampled = false;
+  for (const auto& p : st.parameters) model_sampled |= p.key == "model";
+  bool k_sampled = false;
+  for (const auto& p : st.parameters) k_sampled |= p.key == "k" || p.key == "k_factor";
+  if (k_sampled && !opt.given("contact.k") && !opt.given("contact.k_factor")) {
+    // contact_from_options needs some k; the sampled value replaces it per sample.
+    st.contact.model = opt.get_string("contact.model");
+    find_contact_model(st.contact.model, opt.where("contact.model"));
+    st.contact.params.e = opt.get_double("contact.e");
+    st.contact.params.v0_min = opt.get_positive("contact.v0_min");
+    st.contact.params.xi_relation = opt.get_string("contact.xi_relation");
+  } else {
+    st.contact = contact_from_options(opt, st.row);
+  }
+  (void)model_sampled;
+
+  // Ground motion.
+  const std::string src = opt.get_string("motion.source");
+  if (src == "generated") {
+    st.source = MotionSource::generated;
+    const Options gen = opt.section("generator", generator_specs());
+    if (!gen.given("spectrum"))
+      throw InputError(opt.where("generator.spectrum") +
+                       ": missing; generated motions need a target spectrum: ec8, nzs1170, "
+                       "asce7, japan or table");
+    st.spectrum = std::shared_ptr<const DesignSpectrum>(make_design_spectrum(gen));
+    st.motion_duration = gen.get_positive("duration");
+    st.generator.dt = gen.get_positive("dt");
+    if (!(st.motion_duration > 20 * st.generator.dt))
+      throw gen.invalid("duration", "valid: longer than 20 time steps");
+    const std::string env = gen.get_string("envelope");
+    if (env == "jennings")
+      st.generator.envelope.shape = EnvelopeShape::jennings;
+    else if (env == "saragoni-hart")
+      st.generator.envelope.shape = EnvelopeShape::saragoni_hart;
+    else
+      throw gen.invalid("envelope", "valid: jennings or saragoni-hart");
+    st.generator.max_iterations = static_cast<int>(gen.get_int("iterations"));
+    if (st.generator.max_iterations < 0) throw gen.invalid("iterations", "valid: >= 0");
+  } else if (src == "records") {
+    st.source = MotionSource::records;
+    std::vector<std::string> files;
+    if (opt.given("motion.records")) {
+      std::string list = opt.get_string("motion.records");
+      std::replace(list.begin(), list.end(), ',', ' ');
+      std::istringstream in(list);
+      std::string f;
+      while (in >> f) files.push_back(f);
+    } else if (opt.given("motion.file")) {
+      files.push_back(opt.get_string("motion.file"));
+    }
+    if (files.empty())
+      throw InputError(opt.where("motion.records") + ": missing; give record files");
+    const auto& dir = opt.config_path();
+    const auto slash = dir.rfind('/');
+    for (const auto& f : files) {
+      MotionFileSpec spec;
+      spec.path = (f[0] == '/' || slash == std::string::npos || !opt.given("motion.records") ||
+                   opt.where("motion.records").rfind("command line", 0) == 0)
+                      ? f
+                      : dir.substr(0, slash + 1) + f;
+      spec.format = parse_motion_format(opt.get_string("motion.format"), opt.where("motion.format"));
+      if (opt.given("motion.units"))
+        spec.units = parse_accel_units(opt.get_string("motion.units"), opt.where("motion.units"));
+      if (opt.given("motion.dt")) spec.dt = opt.get_positive("motion.dt");
+      GroundMotion g = read_motion(spec);
+      if (opt.given("motion.duration")) g = truncate(g, opt.get_positive("motion.duration"));
+      st.records.push_back(std::move(g));
+    }
+  } else {
+    throw opt.invalid("motion.source", "valid: generated or records");
+  }
+
+  // Intensity.
+  const std::string im = opt.get_string("intensity.measure");
+  if (im == "pga")
+    st.measure = IntensityMeasure::pga;
+  else if (im == "sa")
+    st.measure = IntensityMeasure::sa;
+  else
+    throw opt.invalid("intensity.measure", "valid: pga or sa");
+  const long ib = opt.get_int("intensity.building");
+  if (ib < 1 || ib > st.buildings())
+    throw opt.invalid("intensity.building", "valid: 1.." + std::to_string(st.buildings()));
+  st.im_building = static_cast<int>(ib - 1);
+  st.im_period = assemble(st.row.buildings[st.im_building]).periods(0);
+  if (opt.given("intensity.levels") == opt.given("intensity.scale"))
+    throw InputError(opt.where("intensity.levels") +
+                     ": give either intensity.levels (stripes, in g) or intensity.scale (a "
+                     "distribution of scale factors), not both or neither");
+  if (opt.given("intensity.levels")) {
+    for (double l : opt.get_doubles("intensity.levels")) {
+      if (!(l > 0)) throw opt.invalid("intensity.levels", "every level must be > 0 g");
+      st.levels.push_back(l * kGravity);
+    }
+  } else {
+    st.has_scale = true;
+    st.scale = Distribution::parse(opt.get_string("intensity.scale"), opt.where("intensity.scale"));
+    if (!(st.scale.lower() > 0)) throw opt.invalid("intensity.scale", "scale factors must be > 0");
+  }
+  st.resolved = opt.resolved_text();
+  return st;
+}
+
+}  // namespace pound

@@ -1,0 +1,74 @@
+#pragma once
+// A Monte Carlo campaign study: the row of buildings and contact model of `pound simulate`,
+// plus sampled parameters, the ground-motion source and the intensity measure. Parsed and
+// validated completely before any rank simulates (errors name file, line and key).
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "io/options.hpp"
+#include "motion/design_spectrum.hpp"
+#include "motion/ground_motion.hpp"
+#include "motion/simqke.hpp"
+#include "sampling/distribution.hpp"
+#include "simulation/contact_spec.hpp"
+#include "solver/integrator_settings.hpp"
+#include "structure/building_row.hpp"
+
+namespace pound {
+
+enum class SamplingMethod { monte_carlo, latin_hypercube };
+enum class IntensityMeasure { pga, sa };
+enum class MotionSource { generated, records };
+
+/// One sampled study parameter: its key as written under [sample] and its distribution.
+struct SampledParameter {
+  std::string key;  ///< e, k, k_factor, gap, damping, model, chi, D, building#.mass_scale, ...
+  Distribution distribution;
+};
+
+struct CampaignStudy {
+  // What is simulated (the fixed values; sampled parameters override them per sample).
+  BuildingRow row;
+  ContactSpec contact;
+  IntegratorSettings integrator;
+  double extra_time = 0.0;  ///< free vibration after the record [s]
+
+  // Sampling.
+  long samples = 100;       ///< number of samples [-]
+  std::uint64_t seed = 1;   ///< study seed
+  SamplingMethod sampling = SamplingMethod::latin_hypercube;
+  int batch = 1;            ///< samples handed to a worker at a time
+  std::vector<SampledParameter> parameters;
+
+  // Ground motion.
+  MotionSource source = MotionSource::generated;
+  std::shared_ptr<const DesignSpectrum> spectrum;  ///< target (generated motions)
+  double motion_duration = 20.0;                   ///< generated motion duration [s]
+  SimqkeSettings generator;                        ///< generator settings
+  std::vector<GroundMotion> records;               ///< record list (records source)
+
+  // Intensity.
+  IntensityMeasure measure = IntensityMeasure::pga;
+  int im_building = 0;          ///< 0-based building whose T1 defines Sa(T1)
+  double im_period = 0.0;       ///< T1 of that building [s]
+  std::vector<double> levels;   ///< stripe levels [m/s^2]; empty: sampled scale factor
+  bool has_scale = false;
+  Distribution scale;           ///< sampled scale factor on the motion (continuous IM)
+
+  std::string resolved;  ///< the resolved study text, stored in the result file
+
+  int buildings() const { return static_cast<int>(row.buildings.size()); }
+  int max_floors() const;
+  int pairs() const { return buildings() - 1; }
+  int max_levels() const;
+};
+
+/// Every key a campaign study may contain (for --help and the unknown-key check).
+std::vector<OptionSpec> campaign_option_specs();
+/// Builds and validates the study; `samples_override` > 0 replaces campaign.samples and
+/// `seed_override` >= 0 replaces campaign.seed.
+CampaignStudy campaign_from_options(const Options& opt, long samples_override, long seed_override);
+
+}  // namespace pound

@@ -1,0 +1,189 @@
+#include "campaign/journal.hpp"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+
+#include "core/error.hpp"
+#include "sampling/counter_rng.hpp"
+
+namespace pound {
+namespace {
+
+constexpr char kMagic[8] = {'P', 'O', 'U', 'N', 'D', 'J', '0', '1'};
+constexpr std::size_t kHeaderBytes = 8 + 4 * 8;
+
+std::uint64_t fnv(const char* p, std::size_t n) {
+  std::uint64_t h = 14695981039346656037ull;
+  for (std::size_t i = 0; i < n; ++i) {
+    h ^= static_cast<unsigned char>(p[i]);
+    h *= 1099511628211ull;
+  }
+  return h;
+}
+
+template <class T>
+void put(std::vector<char>& b, const T& v) {
+  const char* p = reinterpret_cast<const char*>(&v);
+  b.insert(b.end(), p, p + sizeof(T));
+}
+
+template <class T>
+T get(const char*& p) {
+  T v;
+  std::memcpy(&v, p, sizeof(T));
+  p += sizeof(T);
+  return v;
+}
+
+std::vector<char> header(const CampaignStudy& st, const RecordLayout& l) {
+  std::vector<char> h(kMagic, kMagic + 8);
+  put<std::uint64_t>(h, study_hash(st));
+  put<std::uint64_t>(h, l.values());
+  put<std::uint64_t>(h, RecordLayout::kMessageBytes);
+  put<std::uint64_t>(h, static_cast<std::uint64_t>(st.samples));
+  return h;
+}
+
+}  // namespace
+
+RecordLayout::RecordLayout(const CampaignStudy& st)
+    : parameters(static_cast<int>(st.parameters.size())),
+      buildings(st.buildings()),
+      floors(st.max_floors()),
+      pairs(st.pairs()),
+      levels(st.max_levels()) {}
+
+std::size_t RecordLayout::values() const {
+  // im, scale, parameters, 6 floor arrays, 2 contact arrays, wall seconds, rank
+  return 2 + parameters + 6 * buildings * floors + 2 * pairs * levels + 2;
+}
+
+std::size_t RecordLayout::record_bytes() const { return 16 + 8 * values() + kMessageBytes + 8; }
+
+std::uint64_t study_hash(const CampaignStudy& st) {
+  std::string s = st.resolved + "\nsamples=" + std::to_string(st.samples) +
+                  "\nseed=" + std::to_string(st.seed);
+  return fnv(s.data(), s.size());
+}
+
+std::vector<char> encode_record(const SampleOutcome& o, const RecordLayout& l) {
+  std::vector<char> b;
+  b.reserve(l.record_bytes());
+  put<std::int64_t>(b, o.id);
+  put<std::int64_t>(b, static_cast<std::int64_t>(o.status));
+  put(b, o.im);
+  put(b, o.scale);
+  for (int i = 0; i < l.parameters; ++i) put(b, o.values.at(i));
+  for (const auto* v : {&o.disp_pounding, &o.disp_free, &o.drift_pounding, &o.drift_free,
+                        &o.accel_pounding, &o.accel_free, &o.peak_force, &o.impacts})
+    for (double x : *v) put(b, x);
+  put(b, o.wall_seconds);
+  put(b, static_cast<double>(o.rank));
+  char msg[RecordLayout::kMessageBytes] = {};
+  std::strncpy(msg, o.message.c_str(), sizeof msg - 1);
+  b.insert(b.end(), msg, msg + sizeof msg);
+  put<std::uint64_t>(b, fnv(b.data(), b.size()));
+  if (b.size() != l.record_bytes()) throw std::logic_error("record size mismatch");
+  return b;
+}
+
+bool decode_record(const char* bytes, const RecordLayout& l, SampleOutcome& o) {
+  const std::size_t n = l.record_bytes() - 8;
+  std::uint64_t sum;
+  std::memcpy(&sum, bytes + n, 8);
+  if (sum != fnv(bytes, n)) return false;
+  const char* p = bytes;
+  o.id = static_cast<long>(get<std::int64_t>(p));
+  o.status = static_cast<SampleStatus>(get<std::int64_t>(p));
+  o.im = get<double>(p);
+  o.scale = get<double>(p);
+  o.values.resize(l.parameters);
+  for (auto& v : o.values) v = get<double>(p);
+  const std::size_t bf = static_cast<std::size_t>(l.buildings * l.floors);
+  const std::size_t pl = static_cast<std::size_t>(l.pairs * l.levels);
+  for (auto* v : {&o.disp_pounding, &o.disp_free, &o.drift_pounding, &o.drift_free,
+                  &o.accel_pounding, &o.accel_free}) {
+    v->resize(bf);
+    for (auto& x : *v) x = get<double>(p);
+  }
+  for (auto* v : {&o.peak_force, &o.impacts}) {
+    v->resize(pl);
+    for (auto& x : *v) x = get<double>(p);
+  }
+  o.wall_seconds = get<double>(p);
+  o.rank = static_cast<int>(get<double>(p));
+  o.message.assign(p, strnlen(p, RecordLayout::kMessageBytes));
+  return true;
+}
+
+std::vector<SampleOutcome> read_journal(const std::string& path, const CampaignStudy& st,
+                                        long* valid_end) {
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  if (!f) throw InputError(path + ": cannot open the campaign journal to resume");
+  const RecordLayout l(st);
+  const std::vector<char> want = header(st, l);
+  std::vector<char> h(kHeaderBytes);
+  if (std::fread(h.data(), 1, h.size(), f) != h.size() || std::memcmp(h.data(), kMagic, 8) != 0) {
+    std::fclose(f);
+    throw InputError(path + ": not a pound campaign journal");
+  }
+  if (h != want) {
+    std::fclose(f);
+    throw InputError(path + ": the journal belongs to a different study, sample count or seed; "
+                            "resume with the same study file and options, or start again with --force");
+  }
+  std::vector<SampleOutcome> out;
+  std::vector<char> rec(l.record_bytes());
+  long end = static_cast<long>(kHeaderBytes);
+  while (std::fread(rec.data(), 1, rec.size(), f) == rec.size()) {
+    SampleOutcome o;
+    if (!decode_record(rec.data(), l, o)) break;  // torn or corrupt tail
+    out.push_back(std::move(o));
+    end += static_cast<long>(rec.size());
+  }
+  std::fclose(f);
+  if (valid_end) *valid_end = end;
+  return out;
+}
+
+JournalWriter::JournalWriter(const std::string& path, const CampaignStudy& st, bool append)
+    : path_(path) {
+  if (append) {
+    long end = 0;
+    read_journal(path, st, &end);
+    if (::truncate(path.c_str(), end) != 0)
+      throw InputError(path + ": cannot cut the torn tail of the journal (" + std::strerror(errno) + ")");
+    f_ = std::fopen(path.c_str(), "ab");
+  } else {
+    f_ = std::fopen(path.c_str(), "wb");
+    if (f_) {
+      const auto h = header(st, RecordLayout(st));
+      std::fwrite(h.data(), 1, h.size(), f_);
+      std::fflush(f_);
+    }
+  }
+  if (!f_) throw InputError(path + ": cannot write the campaign journal (" + std::strerror(errno) + ")");
+}
+
+JournalWriter::~JournalWriter() {
+  if (f_) {
+    std::fflush(f_);
+    ::fsync(fileno(f_));
+    std::fclose(f_);
+  }
+}
+
+void JournalWriter::append(const char* bytes, std::size_t n) {
+  if (n && std::fwrite(bytes, 1, n, f_) != n)
+    throw InputError(path_ + ": write failed (" + std::strerror(errno) + ")");
+  std::fflush(f_);  // in the kernel from here on: survives the process being killed
+}
+
+void JournalWriter::sync() {
+  std::fflush(f_);
+  ::fsync(fileno(f_));
+}
+
+}  // namespace pound

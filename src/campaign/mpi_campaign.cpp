@@ -1,0 +1,257 @@
+#include "campaign/mpi_campaign.hpp"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <ctime>
+#include <deque>
+#include <vector>
+
+#include "campaign/journal.hpp"
+#include "campaign/result_file.hpp"
+#include "campaign/sample.hpp"
+#include "core/error.hpp"
+#include "io/atomic_file.hpp"
+
+namespace pound {
+namespace {
+
+volatile std::sig_atomic_t g_stop = 0;
+extern "C" void on_stop_signal(int) { g_stop = 1; }
+
+enum Tag : int {
+  kRequest = 1,   // worker -> master: finished records (0..n), asks for one more batch
+  kWork = 2,      // master -> worker: ids of a batch
+  kStopEnd = 3,   // master -> worker: no more work; finish the queue
+  kStopNow = 4,   // master -> worker: interrupted; drop the queue
+  kDone = 5,      // worker -> master: finished, nothing outstanding
+};
+
+std::string now_text() {
+  char buf[64];
+  const std::time_t t = std::time(nullptr);
+  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%S%z", std::localtime(&t));
+  return buf;
+}
+
+// ---------------------------------------------------------------- worker
+void worker(const CampaignStudy& st, MPI_Comm comm, int rank) {
+  const RecordLayout layout(st);
+  SampleRunner runner(st);
+  std::deque<long> queue;
+  int outstanding = 0;
+  bool stopped = false;
+  auto request = [&](const std::vector<char>& records) {
+    MPI_Send(records.data(), static_cast<int>(records.size()), MPI_BYTE, 0, kRequest, comm);
+    ++outstanding;
+  };
+  auto receive = [&](bool block) {
+    while (outstanding > 0) {
+      MPI_Status s;
+      int flag = 1;
+      if (block)
+        MPI_Probe(0, MPI_ANY_TAG, comm, &s);
+      else
+        MPI_Iprobe(0, MPI_ANY_TAG, comm, &flag, &s);
+      if (!flag) return;
+      int count = 0;
+      MPI_Get_count(&s, MPI_LONG, &count);
+      std::vector<long> ids(static_cast<std::size_t>(count));
+      MPI_Recv(ids.data(), count, MPI_LONG, 0, s.MPI_TAG, comm, MPI_STATUS_IGNORE);
+      --outstanding;
+      if (s.MPI_TAG == kWork) {
+        queue.insert(queue.end(), ids.begin(), ids.end());
+      } else {
+        stopped = true;
+        if (s.MPI_TAG == kStopNow) queue.clear();
+      }
+      block = false;
+    }
+  };
+  // Two requests in flight: a batch is always queued while the master is busy.
+  request({});
+  request({});
+  while (true) {
+    receive(queue.empty() && outstanding > 0);
+    if (queue.empty()) {
+      if (outstanding == 0) break;
+      continue;
+    }
+    const long id = queue.front();
+    queue.pop_front();
+    SampleOutcome o = runner.run(id);
+    o.rank = rank;
+    const std::vector<char> rec = encode_record(o, layout);
+    if (!stopped) {
+      request(rec);
+    } else {
+      // Still deliver the result; the master answers every request with a stop.
+      request(rec);
+    }
+  }
+  MPI_Send(nullptr, 0, MPI_BYTE, 0, kDone, comm);
+}
+
+// ---------------------------------------------------------------- master
+struct Progress {
+  std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now(), last = start;
+  long at_start = 0;
+};
+
+CampaignSummary master(const CampaignStudy& st, const CampaignRunOptions& opt, MPI_Comm comm,
+                       int size) {
+  const RecordLayout layout(st);
+  const std::string journal_path = opt.out + ".journal";
+  CampaignSummary sum;
+  sum.total = st.samples;
+  std::vector<char> done(static_cast<std::size_t>(st.samples), 0);
+  if (opt.resume) {
+    for (const auto& o : read_journal(journal_path, st)) {
+      if (o.id >= 0 && o.id < st.samples && !done[o.id]) {
+        done[o.id] = 1;
+        ++sum.done;
+        if (o.status != SampleStatus::ok) ++sum.failed;
+      }
+    }
+  }
+  JournalWriter journal(journal_path, st, opt.resume);
+  std::vector<long> pending;
+  for (long i = 0; i < st.samples; ++i)
+    if (!done[i]) pending.push_back(i);
+  std::size_t next = 0;
+  Progress prog;
+  prog.at_start = sum.done;
+  SampleRunner runner(st);
+
+  auto record = [&](const char* bytes, std::size_t n) {
+    journal.append(bytes, n);
+    for (std::size_t off = 0; off + layout.record_bytes() <= n; off += layout.record_bytes()) {
+      SampleOutcome o;
+      if (!decode_record(bytes + off, layout, o)) throw std::runtime_error("corrupt record from a worker");
+      if (o.id >= 0 && o.id < st.samples && !done[o.id]) {
+        done[o.id] = 1;
+        ++sum.done;
+        if (o.status != SampleStatus::ok) {
+          ++sum.failed;
+          std::fprintf(stderr, "campaign: %s\n", o.message.c_str());
+        }
+      }
+    }
+  };
+  auto report = [&](bool final) {
+    const auto t = std::chrono::steady_clock::now();
+    if (!opt.progress || (!final && t - prog.last < std::chrono::seconds(2))) return;
+    prog.last = t;
+    const double el = std::chrono::duration<double>(t - prog.start).count();
+    const double rate = el > 0 ? (sum.done - prog.at_start) / el : 0.0;
+    const double left = rate > 0 ? (sum.total - sum.done) / rate : 0.0;
+    std::fprintf(stderr, "campaign: %ld/%ld samples done, %ld failed, %.2f samples/s, ~%.0f s left\n",
+                 sum.done, sum.total, sum.failed, rate, left);
+  };
+
+  int active = size - 1;
+  bool stopping = false;
+  while (true) {
+    if (g_stop && !stopping) {
+      stopping = true;
+      sum.interrupted = next < pending.size();
+      std::fprintf(stderr, "campaign: stop requested; finishing samples in flight\n");
+    }
+    // Serve every waiting message.
+    int flag = 1;
+    bool served = false;
+    while (active > 0) {
+      MPI_Status s;
+      MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, comm, &flag, &s);
+      if (!flag) break;
+      served = true;
+      int count = 0;
+      MPI_Get_count(&s, MPI_BYTE, &count);
+      std::vector<char> buf(static_cast<std::size_t>(count));
+      MPI_Recv(buf.data(), count, MPI_BYTE, s.MPI_SOURCE, s.MPI_TAG, comm, MPI_STATUS_IGNORE);
+      if (s.MPI_TAG == kDone) {
+        --active;
+        continue;
+      }
+      record(buf.data(), buf.size());
+      std::vector<long> ids;
+      if (!stopping)
+        while (next < pending.size() && ids.size() < static_cast<std::size_t>(st.batch))
+          ids.push_back(pending[next++]);
+      const int tag = !ids.empty() ? kWork : (stopping ? kStopNow : kStopEnd);
+      MPI_Send(ids.data(), static_cast<int>(ids.size()), MPI_LONG, s.MPI_SOURCE, tag, comm);
+    }
+    report(false);
+    if (!stopping && next < pending.size()) {
+      // The master simulates too (both ranks busy on a two-core machine).
+      SampleOutcome o = runner.run(pending[next++]);
+      o.rank = 0;
+      const auto rec = encode_record(o, layout);
+      record(rec.data(), rec.size());
+      continue;
+    }
+    if (active == 0) break;
+    if (!served) {
+      MPI_Status s;
+      MPI_Probe(MPI_ANY_SOURCE, MPI_ANY_TAG, comm, &s);  // wait for the next message
+    }
+  }
+  journal.sync();
+  if (stopping && sum.done < sum.total) sum.interrupted = true;
+  report(true);
+  return sum;
+}
+
+}  // namespace
+
+void install_stop_handlers() {
+  struct sigaction sa {};
+  sa.sa_handler = on_stop_signal;
+  sigemptyset(&sa.sa_mask);
+  for (int sig : {SIGTERM, SIGUSR1, SIGINT}) sigaction(sig, &sa, nullptr);
+}
+
+bool stop_requested() { return g_stop != 0; }
+
+CampaignSummary run_campaign(const CampaignStudy& st, const CampaignRunOptions& opt, MPI_Comm comm) {
+  int rank = 0, size = 1;
+  MPI_Comm_rank(comm, &rank);
+  MPI_Comm_size(comm, &size);
+  CampaignSummary sum;
+  std::string error;
+  RunInfo info;
+  info.ranks = size;
+  info.start_time = now_text();
+  if (rank == 0) {
+    try {
+      sum = master(st, opt, comm, size);
+    } catch (const std::exception& e) {
+      error = e.what();
+    }
+  } else {
+    worker(st, comm, rank);
+  }
+  // Share the outcome (and any master error) with every rank.
+  long buf[4] = {sum.total, sum.done, sum.failed, sum.interrupted ? 1L : 0L};
+  MPI_Bcast(buf, 4, MPI_LONG, 0, comm);
+  sum = {buf[0], buf[1], buf[2], buf[3] != 0};
+  int err_len = static_cast<int>(error.size());
+  MPI_Bcast(&err_len, 1, MPI_INT, 0, comm);
+  if (err_len) throw InputError(rank == 0 ? error : std::string("(reported by rank 0)"));
+  if (rank == 0 && sum.done == sum.total) {
+    char host[256] = {};
+    ::gethostname(host, sizeof host - 1);
+    info.host = host;
+    info.end_time = now_text();
+    AtomicPath out(opt.out);
+    write_result_file(out.temp(), st, opt.out + ".journal", info);
+    out.commit();
+    std::remove((opt.out + ".journal").c_str());
+  }
+  MPI_Barrier(comm);
+  return sum;
+}
+
+}  // namespace pound

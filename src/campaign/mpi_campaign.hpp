@@ -1,0 +1,34 @@
+#pragma once
+// Runs a campaign over MPI ranks: rank 0 (the master) hands out sample ids on request, keeps
+// the journal and simulates samples itself between requests; the other ranks simulate the
+// samples they are given. MPI lives only here: samples are pure functions of (study, id).
+#include <mpi.h>
+
+#include <string>
+
+#include "campaign/campaign_study.hpp"
+
+namespace pound {
+
+struct CampaignRunOptions {
+  std::string out;          ///< result file RUN.h5 (journal: RUN.h5.journal)
+  bool resume = false;      ///< continue from the journal
+  bool progress = true;     ///< progress lines on stderr (master)
+  std::string command_line; ///< how to resume, for the interruption message
+};
+
+struct CampaignSummary {
+  long total = 0, done = 0, failed = 0;
+  bool interrupted = false;  ///< stopped by SIGTERM/SIGUSR1/SIGINT before the end
+};
+
+/// Collective over `comm`. Returns the same summary on every rank. Throws InputError on the
+/// master for journal/output problems (after telling the workers to stop).
+CampaignSummary run_campaign(const CampaignStudy& st, const CampaignRunOptions& opt, MPI_Comm comm);
+
+/// Installs handlers so that SIGTERM, SIGUSR1 and SIGINT request a clean stop.
+void install_stop_handlers();
+/// True once a stop was requested.
+bool stop_requested();
+
+}  // namespace pound

@@ -1,0 +1,149 @@
+#include "campaign/result_file.hpp"
+
+#include <hdf5.h>
+
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "campaign/journal.hpp"
+#include "core/error.hpp"
+#include "io/h5.hpp"
+#include "pound/version.hpp"
+
+namespace pound {
+namespace {
+
+// A chunked dataset of doubles [N, a, b] (a = b = 0 for 1-D) written row by row.
+class RowDataset {
+ public:
+  RowDataset(hid_t file, const std::string& path, hsize_t n, hsize_t a, hsize_t b,
+             hid_t type = H5T_NATIVE_DOUBLE, const std::string& units = "")
+      : type_(type), a_(a), b_(b) {
+    const int rank = a ? (b ? 3 : 2) : 1;
+    hsize_t dims[3] = {n, a, b};
+    hsize_t chunk[3] = {std::min<hsize_t>(n, 1024), a, b};
+    const hid_t space = H5Screate_simple(rank, dims, nullptr);
+    const hid_t plist = H5Pcreate(H5P_DATASET_CREATE);
+    H5Pset_chunk(plist, rank, chunk);
+    if (type == H5T_NATIVE_DOUBLE) {
+      const double nan = std::nan("");
+      H5Pset_fill_value(plist, H5T_NATIVE_DOUBLE, &nan);
+    }
+    h5::ensure_group(file, path.substr(0, path.rfind('/')));
+    id_ = H5Dcreate2(file, path.c_str(), type, space, H5P_DEFAULT, plist, H5P_DEFAULT);
+    H5Pclose(plist);
+    H5Sclose(space);
+    if (id_ < 0) throw InputError("HDF5: cannot create dataset " + path);
+    if (!units.empty()) h5::attribute(file, path, "units", units);
+  }
+  ~RowDataset() { H5Dclose(id_); }
+  void write(hsize_t row, const void* data) {
+    const hid_t fspace = H5Dget_space(id_);
+    const int rank = a_ ? (b_ ? 3 : 2) : 1;
+    hsize_t start[3] = {row, 0, 0}, count[3] = {1, a_, b_};
+    H5Sselect_hyperslab(fspace, H5S_SELECT_SET, start, nullptr, count, nullptr);
+    const hid_t mspace = H5Screate_simple(rank, count, nullptr);
+    const herr_t s = H5Dwrite(id_, type_, mspace, fspace, H5P_DEFAULT, data);
+    H5Sclose(mspace);
+    H5Sclose(fspace);
+    if (s < 0) throw InputError("HDF5: row write failed");
+  }
+
+ private:
+  hid_t id_ = -1, type_;
+  hsize_t a_, b_;
+};
+
+}  // namespace
+
+void write_result_file(const std::string& path, const CampaignStudy& st,
+                       const std::string& journal_path, const RunInfo& info) {
+  const auto outcomes = read_journal(journal_path, st);
+  const hsize_t n = static_cast<hsize_t>(st.samples);
+  const hsize_t nb = st.buildings(), nf = st.max_floors(), np = st.pairs(), nl = st.max_levels();
+  h5::File f(path);
+  const hid_t fid = f.id();
+  const hid_t str = H5Tcopy(H5T_C_S1);
+  H5Tset_size(str, H5T_VARIABLE);
+  {
+    RowDataset id(fid, "/samples/id", n, 0, 0, H5T_NATIVE_LONG);
+    RowDataset status(fid, "/samples/status", n, 0, 0, H5T_NATIVE_INT);
+    RowDataset message(fid, "/samples/message", n, 0, 0, str);
+    RowDataset im(fid, "/samples/im", n, 0, 0, H5T_NATIVE_DOUBLE, "m/s^2");
+    RowDataset scale(fid, "/samples/scale", n, 0, 0, H5T_NATIVE_DOUBLE, "-");
+    std::vector<std::unique_ptr<RowDataset>> params;
+    for (const auto& p : st.parameters)
+      params.push_back(std::make_unique<RowDataset>(
+          fid, "/samples/" + p.key, n, 0, 0, p.key == "model" ? str : H5T_NATIVE_DOUBLE));
+    const char* names[] = {"peak_disp_pounding", "peak_disp_free", "peak_drift_pounding",
+                           "peak_drift_free", "peak_accel_pounding", "peak_accel_free"};
+    const char* units[] = {"m", "m", "-", "-", "m/s^2", "m/s^2"};
+    std::vector<std::unique_ptr<RowDataset>> floors;
+    for (int i = 0; i < 6; ++i)
+      floors.push_back(std::make_unique<RowDataset>(fid, std::string("/response/") + names[i], n,
+                                                    nb, nf, H5T_NATIVE_DOUBLE, units[i]));
+    RowDataset force(fid, "/response/peak_force", n, np, nl, H5T_NATIVE_DOUBLE, "N");
+    RowDataset impacts(fid, "/response/impacts", n, np, nl, H5T_NATIVE_DOUBLE, "-");
+    RowDataset rank(fid, "/run/rank", n, 0, 0, H5T_NATIVE_INT);
+    RowDataset wall(fid, "/run/wall_seconds", n, 0, 0, H5T_NATIVE_DOUBLE, "s");
+
+    std::vector<char> seen(n, 0);
+    for (const auto& o : outcomes) {
+      if (o.id < 0 || static_cast<hsize_t>(o.id) >= n || seen[o.id]) continue;  // duplicates: first wins
+      seen[o.id] = 1;
+      const hsize_t r = static_cast<hsize_t>(o.id);
+      const long idv = o.id;
+      const int stv = static_cast<int>(o.status);
+      const char* msg = o.message.c_str();
+      id.write(r, &idv);
+      status.write(r, &stv);
+      message.write(r, &msg);
+      im.write(r, &o.im);
+      scale.write(r, &o.scale);
+      for (std::size_t i = 0; i < st.parameters.size(); ++i) {
+        if (st.parameters[i].key == "model") {
+          const char* label =
+              st.parameters[i].distribution.labels()[static_cast<std::size_t>(o.values[i])].c_str();
+          params[i]->write(r, &label);
+        } else {
+          params[i]->write(r, &o.values[i]);
+        }
+      }
+      const std::vector<double>* arrays[] = {&o.disp_pounding, &o.disp_free, &o.drift_pounding,
+                                             &o.drift_free, &o.accel_pounding, &o.accel_free};
+      for (int i = 0; i < 6; ++i) floors[i]->write(r, arrays[i]->data());
+      force.write(r, o.peak_force.data());
+      impacts.write(r, o.impacts.data());
+      rank.write(r, &o.rank);
+      wall.write(r, &o.wall_seconds);
+    }
+    for (hsize_t i = 0; i < n; ++i)
+      if (!seen[i])
+        throw InputError(journal_path + ": sample " + std::to_string(i) +
+                         " is missing; resume the campaign with --resume");
+  }
+  H5Tclose(str);
+  h5::attribute(fid, "/", "study", st.resolved);
+  h5::attribute(fid, "/", "engine_version", kVersion);
+  h5::attribute(fid, "/", "git_revision", kGitRevision);
+  h5::attribute(fid, "/", "seed", std::to_string(st.seed));
+  h5::attribute(fid, "/", "samples", static_cast<double>(st.samples));
+  h5::attribute(fid, "/", "sampling",
+                st.sampling == SamplingMethod::latin_hypercube ? "lhs" : "mc");
+  h5::attribute(fid, "/", "intensity_measure", st.measure == IntensityMeasure::pga ? "pga" : "sa");
+  h5::attribute(fid, "/", "im_period_s", st.im_period);
+  h5::attribute(fid, "/", "im_building", static_cast<double>(st.im_building));
+  std::string levels;
+  for (double l : st.levels) levels += (levels.empty() ? "" : ", ") + std::to_string(l);
+  h5::attribute(fid, "/", "im_levels_mps2", levels);
+  h5::attribute(fid, "/", "ranks", static_cast<double>(info.ranks));
+  h5::attribute(fid, "/", "start_time", info.start_time);
+  h5::attribute(fid, "/", "end_time", info.end_time);
+  h5::attribute(fid, "/", "host", info.host);
+  std::string names;
+  for (const auto& b : st.row.buildings) names += (names.empty() ? "" : ", ") + b.name;
+  h5::attribute(fid, "/", "building_names", names);
+}
+
+}  // namespace pound

@@ -1,0 +1,33 @@
+#pragma once
+// The campaign result file (HDF5), built from the journal when every sample is done. Schema:
+//   /samples/id [N]                    sample id (0..N-1; row i holds sample i)
+//   /samples/status [N]                0 ok, 1 numerical failure, 2 input failure
+//   /samples/message [N]               "" or what failed
+//   /samples/im [N]                    intensity measure of the scaled motion [m/s^2]
+//   /samples/scale [N]                 factor applied to the motion [-]
+//   /samples/<key> [N]                 each sampled parameter by its study key (model: names)
+//   /response/peak_disp_pounding, peak_disp_free [N, buildings, floors]     m
+//   /response/peak_drift_pounding, peak_drift_free [N, buildings, floors]   drift ratio, -
+//   /response/peak_accel_pounding, peak_accel_free [N, buildings, floors]   m/s^2 (absolute)
+//   /response/peak_force [N, pairs, levels]                                  N
+//   /response/impacts [N, pairs, levels]                                     count
+//   (NaN where a building has fewer floors, a pair fewer levels, or the sample failed)
+//   /run/rank [N], /run/wall_seconds [N]   bookkeeping that differs between runs
+// Root attributes: study (resolved text), engine_version, git_revision, seed, samples,
+// sampling, intensity_measure, im_period_s, ranks, start_time, end_time, host.
+#include <string>
+
+#include "campaign/campaign_study.hpp"
+
+namespace pound {
+
+struct RunInfo {
+  int ranks = 1;
+  std::string start_time, end_time, host;
+};
+
+/// Writes `path` (use a temporary name and rename) from the journal's records.
+void write_result_file(const std::string& path, const CampaignStudy& st,
+                       const std::string& journal_path, const RunInfo& info);
+
+}  // namespace pound

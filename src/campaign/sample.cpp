@@ -1,0 +1,156 @@
+#include "campaign/sample.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+#include "core/error.hpp"
+#include "motion/motion_processing.hpp"
+#include "motion/response_spectrum.hpp"
+#include "sampling/counter_rng.hpp"
+#include "simulation/simulate_row.hpp"
+
+namespace pound {
+namespace {
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+}
+
+SampleRunner::SampleRunner(const CampaignStudy& study)
+    : st_(study), lhs_(study.seed, static_cast<std::uint64_t>(study.samples)) {
+  if (st_.source == MotionSource::generated)
+    generator_ = std::make_unique<SimqkeGenerator>(*st_.spectrum, st_.motion_duration, st_.generator);
+}
+
+SampleRunner::~SampleRunner() = default;
+
+SampleDraw SampleRunner::draw(long id) {
+  SampleDraw d;
+  d.id = id;
+  const auto uid = static_cast<std::uint64_t>(id);
+  auto uniform = [&](const std::string& stream) {
+    const std::uint64_t s = stream_id(stream);
+    return st_.sampling == SamplingMethod::latin_hypercube ? lhs_.uniform(s, uid)
+                                                           : CounterRng(st_.seed, s).uniform(uid);
+  };
+  d.model = st_.contact.model;
+  for (const auto& p : st_.parameters) {
+    const double u = uniform("sample." + p.key);
+    if (p.key == "model") {
+      const std::size_t i = p.distribution.index(u);
+      d.model = p.distribution.labels()[i];
+      d.values.push_back(static_cast<double>(i));
+    } else {
+      d.values.push_back(p.distribution.value(u));
+    }
+  }
+  if (st_.levels.empty()) {
+    d.level = kNaN;
+    d.scale_draw = st_.scale.value(uniform("intensity.scale"));
+  } else {
+    d.level = st_.levels[static_cast<std::size_t>(id) % st_.levels.size()];
+    d.scale_draw = kNaN;
+  }
+  d.motion_seed = CounterRng(st_.seed, stream_id("motion")).bits(uid);
+  if (st_.source == MotionSource::records)
+    d.record = static_cast<int>(CounterRng(st_.seed, stream_id("motion.record")).uniform(uid) *
+                                static_cast<double>(st_.records.size()));
+  return d;
+}
+
+SampleOutcome SampleRunner::run(long id) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const SampleDraw d = draw(id);
+  SampleOutcome out;
+  out.id = id;
+  out.values = d.values;
+  const int nb = st_.buildings(), nf = st_.max_floors(), np = st_.pairs(), nl = st_.max_levels();
+  for (auto* v : {&out.disp_pounding, &out.disp_free, &out.drift_pounding, &out.drift_free,
+                  &out.accel_pounding, &out.accel_free})
+    v->assign(static_cast<std::size_t>(nb * nf), kNaN);
+  out.peak_force.assign(static_cast<std::size_t>(np * nl), kNaN);
+  out.impacts.assign(static_cast<std::size_t>(np * nl), kNaN);
+  try {
+    // The sample's building row and contact.
+    BuildingRow row = st_.row;
+    ContactSpec contact = st_.contact;
+    contact.model = d.model;
+    for (std::size_t i = 0; i < st_.parameters.size(); ++i) {
+      const std::string& k = st_.parameters[i].key;
+      const double v = d.values[i];
+      if (k == "e") contact.params.e = v;
+      else if (k == "k") contact.params.k = v;
+      else if (k == "gap")
+        for (auto& g : row.gaps) g.assign(g.size(), v);
+      else if (k == "damping")
+        for (auto& b : row.buildings) b.damping_ratio = v;
+      else if (k.rfind("building", 0) == 0) {
+        const int b = std::stoi(k.substr(8)) - 1;
+        auto& vec = k.find("mass_scale") != std::string::npos ? row.buildings[b].masses
+                                                              : row.buildings[b].stiffnesses;
+        for (double& x : vec) x *= v;
+      }
+    }
+    for (std::size_t i = 0; i < st_.parameters.size(); ++i)
+      if (st_.parameters[i].key == "k_factor") {
+        double kmax = 0;
+        for (const auto& b : row.buildings)
+          for (double k : b.stiffnesses) kmax = std::max(kmax, k);
+        contact.params.k = d.values[i] * kmax;
+      }
+
+    // The motion, scaled to the stripe level or by the sampled factor.
+    GroundMotion g = st_.source == MotionSource::generated
+                         ? generator_->generate(d.motion_seed, 0).motion
+                         : st_.records[static_cast<std::size_t>(d.record)];
+    double im0;
+    if (st_.measure == IntensityMeasure::pga) {
+      im0 = g.pga();
+    } else {
+      // Sa(T1) of the (sampled) building, 5 % damping.
+      const double t1 = assemble(row.buildings[st_.im_building]).periods(0);
+      im0 = response_spectrum(g, {t1}, 0.05).psa[0];
+    }
+    if (!(im0 > 0)) throw NumericalError("the motion has zero intensity");
+    out.scale = st_.levels.empty() ? d.scale_draw : d.level / im0;
+    out.im = im0 * out.scale;
+    g = scale(g, out.scale);
+
+    RowSimulationOptions so;
+    so.extra_time = st_.extra_time;
+    const RowSimulation sim = simulate_row(row, g, contact, st_.integrator, so);
+    for (const auto& f : sim.floors) {
+      const std::size_t i = static_cast<std::size_t>(f.building * nf + f.floor - 1);
+      out.disp_pounding[i] = f.disp_pounding;
+      out.disp_free[i] = f.disp_free;
+      out.drift_pounding[i] = f.drift_ratio_pounding;
+      out.drift_free[i] = f.drift_ratio_free;
+      out.accel_pounding[i] = f.accel_pounding;
+      out.accel_free[i] = f.accel_free;
+      if (!std::isfinite(f.disp_pounding) || !std::isfinite(f.accel_pounding) ||
+          !std::isfinite(f.disp_free))
+        throw NumericalError("non-finite peak response");
+    }
+    for (const auto& s : sim.sites) {
+      const std::size_t i = static_cast<std::size_t>(s.pair * nl + s.floor - 1);
+      out.peak_force[i] = s.peak_force;
+      out.impacts[i] = s.impacts;
+    }
+  } catch (const NumericalError& e) {
+    out.status = SampleStatus::numerical_failure;
+    out.message = "sample " + std::to_string(id) + ": " + e.what();
+  } catch (const InputError& e) {
+    out.status = SampleStatus::input_failure;
+    out.message = "sample " + std::to_string(id) + ": " + e.what();
+  }
+  if (out.status != SampleStatus::ok) {
+    // A failed sample carries no response numbers.
+    for (auto* v : {&out.disp_pounding, &out.disp_free, &out.drift_pounding, &out.drift_free,
+                    &out.accel_pounding, &out.accel_free, &out.peak_force, &out.impacts})
+      v->assign(v->size(), kNaN);
+  }
+  out.wall_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return out;
+}
+
+}  // namespace pound

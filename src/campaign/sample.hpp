@@ -1,0 +1,67 @@
+#pragma once
+// One Monte Carlo sample as a pure function: (study, sample id) -> outcome. Every random draw
+// comes from the counter-based generator keyed by (study seed, stream of the parameter,
+// sample id), so the outcome does not depend on which rank runs it or when.
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "campaign/campaign_study.hpp"
+#include "sampling/latin_hypercube.hpp"
+
+namespace pound {
+
+enum class SampleStatus : int {
+  ok = 0,
+  numerical_failure = 1,  ///< non-finite response, step-size underflow, chatter
+  input_failure = 2,      ///< a sampled combination the models reject
+  not_run = -1,           ///< (result files only) not simulated yet
+};
+
+/// The drawn inputs of one sample.
+struct SampleDraw {
+  long id = 0;
+  std::vector<double> values;  ///< per study parameter; the model as its index in the labels
+  std::string model;           ///< contact model of this sample
+  double level = 0.0;          ///< stripe level [m/s^2] (NaN with a sampled scale)
+  double scale_draw = 0.0;     ///< sampled scale factor (NaN with stripes)
+  std::uint64_t motion_seed = 0;
+  int record = -1;             ///< record index (records source)
+};
+
+/// The outcome; arrays are row-major [building][floor] (NaN where a building has fewer
+/// floors) and [pair][level] (NaN where a pair has fewer colliding levels).
+struct SampleOutcome {
+  long id = 0;
+  SampleStatus status = SampleStatus::ok;
+  std::string message;
+  double im = 0.0;            ///< intensity measure of the scaled motion [m/s^2]
+  double scale = 0.0;         ///< factor applied to the motion [-]
+  std::vector<double> values;  ///< sampled parameter values (as in SampleDraw)
+  std::vector<double> disp_pounding, disp_free;    ///< [m]
+  std::vector<double> drift_pounding, drift_free;  ///< peak drift ratios [-]
+  std::vector<double> accel_pounding, accel_free;  ///< peak absolute accelerations [m/s^2]
+  std::vector<double> peak_force;                  ///< [N]
+  std::vector<double> impacts;                     ///< counts, as doubles [-]
+  double wall_seconds = 0.0;  ///< run bookkeeping
+  int rank = 0;               ///< run bookkeeping
+};
+
+/// Runs samples of one study; keeps per-worker caches (the motion generator's FFT plans,
+/// the Latin hypercube permutations). One object per rank.
+class SampleRunner {
+ public:
+  explicit SampleRunner(const CampaignStudy& study);
+  ~SampleRunner();
+  SampleDraw draw(long id);
+  /// Never throws for a failing simulation: the failure is the outcome's status and message.
+  SampleOutcome run(long id);
+
+ private:
+  const CampaignStudy& st_;
+  LatinHypercube lhs_;
+  std::unique_ptr<SimqkeGenerator> generator_;
+};
+
+}  // namespace pound

@@ -1,0 +1,81 @@
+// Spectrum-compatible generation: the random numbers, determinism, and the acceptance
+// criteria of issue 4 for Eurocode 8 and NZS 1170.5 (seven 20 s motions each).
+#include "motion/simqke.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "motion/motion_processing.hpp"
+#include "motion/response_spectrum.hpp"
+#include "motion/spectrum_ec8.hpp"
+#include "motion/spectrum_nzs1170.hpp"
+
+namespace pound {
+namespace {
+
+TEST(Simqke, PhiloxKnownAnswer) {
+  // Random123 known-answer vector: Philox4x32-10, counter 0 and key 0 give
+  // 6627e8d5 e169c58d bc57ac4c 9b00dbd8; u uses the first two words (27 + 26 bits).
+  const double u = (double(0x6627e8d5u >> 5) * 67108864.0 + double(0xe169c58du >> 6)) /
+                   9007199254740992.0;
+  EXPECT_EQ(philox_uniform(0, 0, 0), u);
+  EXPECT_NE(philox_uniform(0, 1, 0), u);
+  EXPECT_NE(philox_uniform(1, 0, 0), u);
+  EXPECT_NE(philox_uniform(0, 0, 0, 1), u);
+  // Uniform on [0, 1): the mean of 20000 draws is 0.5 within 4 standard errors.
+  double sum = 0.0;
+  for (std::uint32_t i = 0; i < 20000; ++i) sum += philox_uniform(42, 3, i);
+  EXPECT_NEAR(sum / 20000.0, 0.5, 4.0 * std::sqrt(1.0 / 12.0 / 20000.0));
+}
+
+TEST(Simqke, DeterministicForSameInputs) {
+  const Ec8Spectrum target(Ec8Type::type1, Ec8Ground::C, 0.35 * kGravity);
+  SimqkeSettings s;
+  s.max_iterations = 5;
+  const GroundMotion a = generate_spectrum_compatible(target, 10.0, 7, s);
+  const GroundMotion b = generate_spectrum_compatible(target, 10.0, 7, s);
+  const GroundMotion c = generate_spectrum_compatible(target, 10.0, 8, s);
+  ASSERT_EQ(a.accel.size(), 1001u);
+  EXPECT_EQ(a.accel, b.accel);
+  EXPECT_NE(a.accel, c.accel);
+  EXPECT_DOUBLE_EQ(a.dt, 0.01);
+}
+
+// Issue 4 acceptance: every motion within 0.90-1.20 of the target at 100 log-spaced periods
+// 0.05-4 s (5 %, sub-steps of T/20), the mean within 0.95-1.05, final velocity < 1 cm/s and
+// final displacement < 1 cm.
+void check_acceptance(const DesignSpectrum& target) {
+  constexpr int kMotions = 7;
+  SimqkeSettings settings;
+  SimqkeGenerator gen(target, 20.0, settings);
+  const std::vector<double> periods = log_spaced_periods(0.05, 4.0, 100);
+  const std::vector<double> tgt = target.sample(periods);
+  const SpectrumCalculator check(periods, 0.05, 0.01);
+  std::vector<double> mean(periods.size(), 0.0);
+  for (int i = 0; i < kMotions; ++i) {
+    const GeneratedMotion g = gen.generate(2026, std::uint64_t(i));
+    ASSERT_EQ(g.motion.accel.size(), 2001u);
+    const std::vector<double> psa = check.compute(g.motion.accel).psa;
+    const SpectrumMatch m = compare_spectra(psa, tgt);
+    EXPECT_GE(m.min_ratio, 0.90) << "motion " << i;
+    EXPECT_LE(m.max_ratio, 1.20) << "motion " << i;
+    const GroundKinematics k = integrate(g.motion);
+    EXPECT_LT(std::fabs(k.final_velocity()), 0.01) << "motion " << i;
+    EXPECT_LT(std::fabs(k.final_displacement()), 0.01) << "motion " << i;
+    EXPECT_DOUBLE_EQ(k.final_velocity(), g.final_velocity);
+    for (std::size_t j = 0; j < periods.size(); ++j) mean[j] += psa[j] / kMotions;
+  }
+  const SpectrumMatch mm = compare_spectra(mean, tgt);
+  EXPECT_GE(mm.min_ratio, 0.95);
+  EXPECT_LE(mm.max_ratio, 1.05);
+}
+
+TEST(Simqke, AcceptanceEurocode8Type1GroundC) {
+  check_acceptance(Ec8Spectrum(Ec8Type::type1, Ec8Ground::C, 0.35 * kGravity));
+}
+
+TEST(Simqke, AcceptanceNzs1170ClassC) { check_acceptance(Nzs1170Spectrum(NzsSiteClass::C, 0.4, 1.0)); }
+
+}  // namespace
+}  // namespace pound
