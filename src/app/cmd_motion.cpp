@@ -75,8 +75,8 @@ void print_spectrum(const ResponseSpectrum& r, JsonWriter* json) {
   std::printf("%10s %12s %12s %10s %10s\n", "T [s]", "SD [m]", "PSV [m/s]", "PSA [g]",
               "SA abs [g]");
   for (std::size_t i = 0; i < r.period.size(); ++i)
-    std::printf("%10.4f %12.5e %12.5e %10.5f %10.5f\n", r.period[i], r.sd[i], r.psv[i],
-                psa_g[i], sa_g[i]);
+    std::printf("%10.4f %12.5e %12.5e %10.5f %10.5f\n", r.period[i], r.sd[i], r.psv[i], psa_g[i],
+                sa_g[i]);
 }
 
 Options parse(const std::string& sub, const std::string& summary, std::vector<OptionSpec> specs,
@@ -101,8 +101,9 @@ int run_spectrum(int argc, const char* const* argv) {
       {"substep", "-", "0.05", "largest step as a fraction of T (0: no sub-stepping)"},
   };
   for (auto& s : period_specs()) specs.push_back(s);
-  const Options o = parse("spectrum", "Elastic response spectra of a record (Nigam & Jennings 1969).",
-                          specs, argc, argv);
+  const Options o =
+      parse("spectrum", "Elastic response spectra of a record (Nigam & Jennings 1969).", specs,
+            argc, argv);
   if (o.help_requested()) {
     std::cout << o.help_text();
     return 0;
@@ -256,11 +257,12 @@ int run_generate(int argc, const char* const* argv) {
 
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
-  if (ec) throw InputError(o.where("out") + ": cannot create folder '" + dir + "': " + ec.message());
+  if (ec)
+    throw InputError(o.where("out") + ": cannot create folder '" + dir + "': " + ec.message());
 
   SimqkeGenerator gen(*target, duration, s);
-  const std::vector<double> periods = log_spaced_periods(s.match_t_min, s.match_t_max,
-                                                         s.match_periods);
+  const std::vector<double> periods =
+      log_spaced_periods(s.match_t_min, s.match_t_max, s.match_periods);
   const std::vector<double> tgt = target->sample(periods);
   const SpectrumCalculator calc(periods, target->damping(), s.dt);
   std::vector<GroundMotion> motions;
@@ -286,8 +288,7 @@ int run_generate(int argc, const char* const* argv) {
     std::snprintf(name, sizeof name, "motion-%03ld.txt", i);
     files.push_back((std::filesystem::path(dir) / name).string());
     write_text(files.back(), g.motion,
-               header + "# seed: " + std::to_string(seed) + ", index: " + std::to_string(i) +
-                   "\n");
+               header + "# seed: " + std::to_string(seed) + ", index: " + std::to_string(i) + "\n");
     reports.push_back(r);
     motions.push_back(std::move(g.motion));
   }
@@ -347,7 +348,8 @@ int run_generate(int argc, const char* const* argv) {
           .end_object();
     }
     w.end_array();
-    w.key("mean").begin_object()
+    w.key("mean")
+        .begin_object()
         .field("min_ratio", mean_match.min_ratio)
         .field("max_ratio", mean_match.max_ratio)
         .field("mean_ratio", mean_match.mean_ratio)

@@ -247,7 +247,10 @@ CampaignStudy campaign_from_options(const Options& opt, long samples_override,
     st.scale = Distribution::parse(opt.get_string("intensity.scale"), opt.where("intensity.scale"));
     if (!(st.scale.lower() > 0)) throw opt.invalid("intensity.scale", "scale factors must be > 0");
   }
-  st.resolved = opt.resolved_text();
+  // The study as resolved; run-control options (output, resume, ...) are not part of it, the
+  // sample count and seed are stored on their own.
+  st.resolved = opt.resolved_text({"out", "resume", "force", "quiet", "samples", "seed",
+                                   "campaign.samples", "campaign.seed"});
   return st;
 }
 

@@ -100,8 +100,40 @@ struct Progress {
   long at_start = 0;
 };
 
+// Answers every remaining worker request with an immediate stop until all workers are done
+// (used when the master fails, so that no rank is left waiting).
+void drain_workers(MPI_Comm comm, int active) {
+  while (active > 0) {
+    MPI_Status s;
+    MPI_Probe(MPI_ANY_SOURCE, MPI_ANY_TAG, comm, &s);
+    int count = 0;
+    MPI_Get_count(&s, MPI_BYTE, &count);
+    std::vector<char> buf(static_cast<std::size_t>(count));
+    MPI_Recv(buf.data(), count, MPI_BYTE, s.MPI_SOURCE, s.MPI_TAG, comm, MPI_STATUS_IGNORE);
+    if (s.MPI_TAG == kDone)
+      --active;
+    else
+      MPI_Send(nullptr, 0, MPI_LONG, s.MPI_SOURCE, kStopNow, comm);
+  }
+}
+
+CampaignSummary master_loop(const CampaignStudy& st, const CampaignRunOptions& opt,
+                            MPI_Comm comm, int size, int& active);
+
 CampaignSummary master(const CampaignStudy& st, const CampaignRunOptions& opt, MPI_Comm comm,
                        int size) {
+  int active = size - 1;
+  try {
+    return master_loop(st, opt, comm, size, active);
+  } catch (...) {
+    drain_workers(comm, active);
+    throw;
+  }
+}
+
+CampaignSummary master_loop(const CampaignStudy& st, const CampaignRunOptions& opt,
+                            MPI_Comm comm, int size, int& active) {
+  (void)size;
   const RecordLayout layout(st);
   const std::string journal_path = opt.out + ".journal";
   CampaignSummary sum;
@@ -151,7 +183,6 @@ CampaignSummary master(const CampaignStudy& st, const CampaignRunOptions& opt, M
                  sum.done, sum.total, sum.failed, rate, left);
   };
 
-  int active = size - 1;
   bool stopping = false;
   while (true) {
     if (g_stop && !stopping) {

@@ -273,12 +273,13 @@ int Options::count_numbered(const std::string& prefix) const {
   return n;
 }
 
-std::string Options::resolved_text() const {
+std::string Options::resolved_text(const std::vector<std::string>& exclude) const {
   std::map<std::string, std::string> all;
   for (const auto& s : specs_)
     if (s.key.find('#') == std::string::npos && !s.default_value.empty() && !s.flag)
       all[s.key] = s.default_value;
   for (const auto& kv : values_) all[kv.first] = kv.second.text;
+  for (const auto& k : exclude) all.erase(k);
   std::string out;
   for (const auto& kv : all) out += kv.first + " = " + kv.second + "\n";
   return out;

@@ -67,7 +67,7 @@ class Options {
 
   /// The resolved configuration (given keys and defaults), as INI-like "key = value" lines,
   /// sorted by key. Stored in result files and echoed at start.
-  std::string resolved_text() const;
+  std::string resolved_text(const std::vector<std::string>& exclude = {}) const;
   const std::string& config_path() const { return config_path_; }
 
  private:

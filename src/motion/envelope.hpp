@@ -18,11 +18,11 @@ enum class EnvelopeShape { jennings, saragoni_hart };
 
 struct EnvelopeSettings {
   EnvelopeShape shape = EnvelopeShape::jennings;
-  double rise = -1.0;       ///< Jennings t1: end of the quadratic rise [s]; < 0: 0.1 tw
-  double strong_end = -1.0; ///< Jennings t2: end of the strong phase [s]; < 0: 0.5 tw
-  double decay = 0.0;       ///< Jennings c [1/s]; 0 = chosen so that I = 0.05 at the end
-  double epsilon = 0.2;     ///< Saragoni-Hart: time of the peak as a fraction of tw [-]
-  double eta = 0.05;        ///< Saragoni-Hart: I at t = tw [-]
+  double rise = -1.0;        ///< Jennings t1: end of the quadratic rise [s]; < 0: 0.1 tw
+  double strong_end = -1.0;  ///< Jennings t2: end of the strong phase [s]; < 0: 0.5 tw
+  double decay = 0.0;        ///< Jennings c [1/s]; 0 = chosen so that I = 0.05 at the end
+  double epsilon = 0.2;      ///< Saragoni-Hart: time of the peak as a fraction of tw [-]
+  double eta = 0.05;         ///< Saragoni-Hart: I at t = tw [-]
 };
 
 class Envelope {

@@ -30,12 +30,13 @@ std::string trim(const std::string& s) {
   return s.substr(b, s.find_last_not_of(" \t\r\n") - b + 1);
 }
 
-std::string at(const std::string& path, int line) { return path + ":" + std::to_string(line); }
+std::string at(const std::string& path, int line) {
+  return path + ":" + std::to_string(line);
+}
 
 std::vector<Line> read_lines(const std::string& path) {
   std::ifstream in(path);
-  if (!in)
-    throw InputError(path + ": cannot open the motion file; give an existing readable file");
+  if (!in) throw InputError(path + ": cannot open the motion file; give an existing readable file");
   std::vector<Line> lines;
   std::string s;
   int n = 0;
@@ -50,8 +51,7 @@ double number(const std::string& tok, const std::string& where, const std::strin
   const double v = std::strtod(tok.c_str(), &end);
   if (tok.empty() || end != tok.c_str() + tok.size() || errno == ERANGE)
     throw InputError(where + ": '" + tok + "' is not a number; valid: " + what);
-  if (!std::isfinite(v))
-    throw InputError(where + ": '" + tok + "' is not finite; valid: " + what);
+  if (!std::isfinite(v)) throw InputError(where + ": '" + tok + "' is not finite; valid: " + what);
   return v;
 }
 
@@ -133,8 +133,9 @@ GroundMotion read_at2(const MotionFileSpec& spec, const std::vector<Line>& lines
     }
   }
   if (npts < 0 || !(dt > 0.0) || !std::isfinite(dt))
-    throw InputError(where4 + ": cannot read NPTS and DT; valid: 'NPTS= n, DT= dt SEC' or "
-                              "'n dt NPTS, DT'");
+    throw InputError(where4 +
+                     ": cannot read NPTS and DT; valid: 'NPTS= n, DT= dt SEC' or "
+                     "'n dt NPTS, DT'");
   std::vector<double> a;
   for (std::size_t i = 4; i < lines.size(); ++i)
     for (const auto& tok : split(lines[i].text))
@@ -295,18 +296,24 @@ bool has_at2_extension(const std::string& path) {
 
 double to_m_per_s2(AccelUnits units) {
   switch (units) {
-    case AccelUnits::g: return kGravity;
-    case AccelUnits::m_per_s2: return 1.0;
-    case AccelUnits::cm_per_s2: return 0.01;
+    case AccelUnits::g:
+      return kGravity;
+    case AccelUnits::m_per_s2:
+      return 1.0;
+    case AccelUnits::cm_per_s2:
+      return 0.01;
   }
   return 1.0;
 }
 
 const char* units_name(AccelUnits units) {
   switch (units) {
-    case AccelUnits::g: return "g";
-    case AccelUnits::m_per_s2: return "m/s2";
-    case AccelUnits::cm_per_s2: return "cm/s2";
+    case AccelUnits::g:
+      return "g";
+    case AccelUnits::m_per_s2:
+      return "m/s2";
+    case AccelUnits::cm_per_s2:
+      return "cm/s2";
   }
   return "?";
 }
@@ -316,8 +323,7 @@ AccelUnits parse_accel_units(const std::string& text, const std::string& where) 
   if (s == "g") return AccelUnits::g;
   if (s == "m/s2" || s == "m/s^2") return AccelUnits::m_per_s2;
   if (s == "cm/s2" || s == "cm/s^2" || s == "gal") return AccelUnits::cm_per_s2;
-  throw InputError(where + ": '" + text +
-                   "' is not a unit of acceleration; valid: g, m/s2, cm/s2");
+  throw InputError(where + ": '" + text + "' is not a unit of acceleration; valid: g, m/s2, cm/s2");
 }
 
 MotionFormat parse_motion_format(const std::string& text, const std::string& where) {
@@ -340,9 +346,12 @@ GroundMotion read_motion(const MotionFileSpec& spec) {
              : looks_fixed_width(lines)   ? MotionFormat::fixed_width
                                           : MotionFormat::columns;
   switch (format) {
-    case MotionFormat::peer_at2: return read_at2(spec, lines);
-    case MotionFormat::fixed_width: return read_fixed_width(spec, lines);
-    default: return read_columns(spec, lines);
+    case MotionFormat::peer_at2:
+      return read_at2(spec, lines);
+    case MotionFormat::fixed_width:
+      return read_fixed_width(spec, lines);
+    default:
+      return read_columns(spec, lines);
   }
 }
 

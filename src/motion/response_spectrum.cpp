@@ -100,13 +100,12 @@ SpectrumCalculator::SpectrumCalculator(std::vector<double> periods, double dampi
   }
   // Pad every group with inert oscillators (all coefficients 0) to a multiple of kLanes.
   for (Group& g : groups_)
-    for (std::vector<double>* c : {&g.a11, &g.a12, &g.a21, &g.a22, &g.b11, &g.b12, &g.b21,
-                                   &g.b22, &g.c, &g.w2})
+    for (std::vector<double>* c :
+         {&g.a11, &g.a12, &g.a21, &g.a22, &g.b11, &g.b12, &g.b21, &g.b22, &g.c, &g.w2})
       c->resize((c->size() + kLanes - 1) / kLanes * kLanes, 0.0);
 }
 
 namespace {
-
 
 // One step of n independent oscillators (restrict pointers so the loop vectorises).
 template <class G>

@@ -23,12 +23,12 @@ struct ResponseSpectrumOptions {
 
 /// Peaks at the given periods for one damping ratio.
 struct ResponseSpectrum {
-  double damping = 0.05;        ///< fraction of critical [-]
-  std::vector<double> period;   ///< T [s]
-  std::vector<double> sd;       ///< peak relative displacement [m]
-  std::vector<double> psv;      ///< pseudo-velocity omega * sd [m/s]
-  std::vector<double> psa;      ///< pseudo-acceleration omega^2 * sd [m/s^2]
-  std::vector<double> sa_abs;   ///< peak absolute acceleration |x'' + a_g| [m/s^2]
+  double damping = 0.05;       ///< fraction of critical [-]
+  std::vector<double> period;  ///< T [s]
+  std::vector<double> sd;      ///< peak relative displacement [m]
+  std::vector<double> psv;     ///< pseudo-velocity omega * sd [m/s]
+  std::vector<double> psa;     ///< pseudo-acceleration omega^2 * sd [m/s^2]
+  std::vector<double> sa_abs;  ///< peak absolute acceleration |x'' + a_g| [m/s^2]
 };
 
 /// Exact one-step propagator of the oscillator over a step h for a linearly varying ground

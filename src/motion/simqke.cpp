@@ -1,8 +1,8 @@
 #include "motion/simqke.hpp"
 
+#include <Random123/philox.h>
 #include <fftw3.h>
 
-#include <Random123/philox.h>
 #include <algorithm>
 #include <cmath>
 #include <mutex>
@@ -37,10 +37,10 @@ std::size_t good_fft_size(std::size_t n) {
 double philox_uniform(std::uint64_t seed, std::uint64_t index, std::uint32_t i,
                       std::uint32_t stream) {
   using Rng = r123::Philox4x32;
-  const Rng::key_type key = {{static_cast<std::uint32_t>(seed),
-                              static_cast<std::uint32_t>(seed >> 32)}};
-  const Rng::ctr_type ctr = {{i, stream, static_cast<std::uint32_t>(index),
-                              static_cast<std::uint32_t>(index >> 32)}};
+  const Rng::key_type key = {
+      {static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32)}};
+  const Rng::ctr_type ctr = {
+      {i, stream, static_cast<std::uint32_t>(index), static_cast<std::uint32_t>(index >> 32)}};
   const Rng::ctr_type r = Rng()(ctr, key);
   // 27 + 26 bits -> [0, 1) with 53-bit resolution (the usual two-word construction).
   const double hi = double(r[0] >> 5), lo = double(r[1] >> 6);
@@ -48,8 +48,8 @@ double philox_uniform(std::uint64_t seed, std::uint64_t index, std::uint32_t i,
 }
 
 std::vector<double> simqke_match_periods(const SimqkeSettings& s) {
-  const std::vector<double> core = log_spaced_periods(s.match_t_min, s.match_t_max,
-                                                      s.match_periods);
+  const std::vector<double> core =
+      log_spaced_periods(s.match_t_min, s.match_t_max, s.match_periods);
   const double r = core[1] / core[0];
   std::vector<double> out;
   for (int i = s.match_extend; i > 0; --i) out.push_back(core.front() / std::pow(r, i));
@@ -79,14 +79,14 @@ struct SimqkeGenerator::Impl {
   SimqkeSettings settings;
   double duration = 0.0;
   std::size_t n = 0, nfft = 0, nbins = 0;
-  std::vector<double> envelope;       // I(t_i), i < n
-  std::vector<double> amp0;           // first-guess A_k
-  std::vector<double> target_psa;     // at the matching periods [m/s^2]
-  std::vector<std::size_t> bin_j;     // matching-period interval of bin k
-  std::vector<double> bin_w;          // weight of j + 1 in log period
+  std::vector<double> envelope;    // I(t_i), i < n
+  std::vector<double> amp0;        // first-guess A_k
+  std::vector<double> target_psa;  // at the matching periods [m/s^2]
+  std::vector<std::size_t> bin_j;  // matching-period interval of bin k
+  std::vector<double> bin_w;       // weight of j + 1 in log period
   std::unique_ptr<SpectrumCalculator> spectra;
-  double* real = nullptr;             // nfft reals
-  fftw_complex* spec = nullptr;       // nbins complex
+  double* real = nullptr;        // nfft reals
+  fftw_complex* spec = nullptr;  // nbins complex
   fftw_plan c2r = nullptr, r2c = nullptr;
 
   ~Impl() {
@@ -145,8 +145,9 @@ SimqkeGenerator::SimqkeGenerator(const DesignSpectrum& target, double duration,
   if (!(duration >= 10.0 * dt)) throw InputError("motion generator: duration must be >= 10 dt");
   if (!(settings.match_t_min > 0.0 && settings.match_t_max > settings.match_t_min &&
         settings.match_periods >= 2 && settings.match_extend >= 0))
-    throw InputError("motion generator: need 0 < match_t_min < match_t_max, >= 2 periods, "
-                     "match_extend >= 0");
+    throw InputError(
+        "motion generator: need 0 < match_t_min < match_t_max, >= 2 periods, "
+        "match_extend >= 0");
   if (!(settings.max_iterations >= 0 && settings.tolerance > 0.0))
     throw InputError("motion generator: max_iterations >= 0 and tolerance > 0 required");
   d.n = static_cast<std::size_t>(std::llround(duration / dt)) + 1;
@@ -165,8 +166,8 @@ SimqkeGenerator::SimqkeGenerator(const DesignSpectrum& target, double duration,
   const double zeta = std::max(target.damping(), 0.005);
   const double dw = 2.0 * M_PI / (double(d.nfft) * dt);
   const double f_nyq = 0.5 / dt;
-  const double f_max = settings.max_frequency > 0.0 ? std::min(settings.max_frequency, f_nyq)
-                                                    : 0.8 * f_nyq;
+  const double f_max =
+      settings.max_frequency > 0.0 ? std::min(settings.max_frequency, f_nyq) : 0.8 * f_nyq;
   const double f_min = 1.0 / (1.5 * settings.match_t_max);
   const double ts = env.strong_duration();
   d.amp0.assign(d.nbins, 0.0);
@@ -207,7 +208,9 @@ SimqkeGenerator::~SimqkeGenerator() = default;
 const std::vector<double>& SimqkeGenerator::match_periods() const {
   return impl_->spectra->periods();
 }
-const std::vector<double>& SimqkeGenerator::match_target() const { return impl_->target_psa; }
+const std::vector<double>& SimqkeGenerator::match_target() const {
+  return impl_->target_psa;
+}
 
 GeneratedMotion SimqkeGenerator::generate(std::uint64_t seed, std::uint64_t index) {
   Impl& d = *impl_;

@@ -41,8 +41,8 @@
 namespace pound {
 
 struct SimqkeSettings {
-  double dt = 0.01;             ///< sample spacing [s]
-  EnvelopeSettings envelope;    ///< intensity envelope
+  double dt = 0.01;           ///< sample spacing [s]
+  EnvelopeSettings envelope;  ///< intensity envelope
   /// Matching periods: match_periods log-spaced from match_t_min to match_t_max [s], plus
   /// match_extend more at the same spacing beyond each end (default 100 periods 0.05-4 s,
   /// extended to 0.040-4.99 s, so that the check grid of the acceptance is matched exactly).
@@ -50,11 +50,11 @@ struct SimqkeSettings {
   double match_t_max = 4.0;
   int match_periods = 100;
   int match_extend = 5;
-  int max_iterations = 35;      ///< correction iterations at most [-]
+  int max_iterations = 35;  ///< correction iterations at most [-]
   /// Stop when every q = computed / target satisfies 1 - tol <= q <= 1 + 2 tol [-].
   double tolerance = 0.04;
-  double max_frequency = 0.0;   ///< highest frequency with energy [Hz]; 0: 0.8 Nyquist
-  int padding = 2;              ///< FFT length >= padding * samples [-]
+  double max_frequency = 0.0;  ///< highest frequency with energy [Hz]; 0: 0.8 Nyquist
+  int padding = 2;             ///< FFT length >= padding * samples [-]
   /// Fourier amplitudes are multiplied by ratio^relaxation per iteration [-]; > 1 because a
   /// peak response grows less than proportionally with the amplitudes of its band.
   double relaxation = 1.6;
@@ -79,12 +79,12 @@ SpectrumMatch compare_spectra(const std::vector<double>& computed,
                               const std::vector<double>& target);
 
 struct GeneratedMotion {
-  GroundMotion motion;            ///< baseline-corrected acceleration [m/s^2]
-  int iterations = 0;             ///< correction iterations of the returned motion
-  int attempt = 0;                ///< phase set of the returned motion (0 = first)
-  SpectrumMatch match;            ///< at the matching periods
-  double final_velocity = 0.0;    ///< [m/s]
-  double final_displacement = 0.0;///< [m]
+  GroundMotion motion;              ///< baseline-corrected acceleration [m/s^2]
+  int iterations = 0;               ///< correction iterations of the returned motion
+  int attempt = 0;                  ///< phase set of the returned motion (0 = first)
+  SpectrumMatch match;              ///< at the matching periods
+  double final_velocity = 0.0;      ///< [m/s]
+  double final_displacement = 0.0;  ///< [m]
 };
 
 /// A generator for one target, duration and settings. FFTW plans and buffers are made once

@@ -10,8 +10,7 @@ namespace pound {
 Asce7Spectrum::Asce7Spectrum(double sds, double sd1, double tl) : sds_(sds), sd1_(sd1), tl_(tl) {
   if (!(sds > 0.0 && sd1 > 0.0 && tl > 0.0))
     throw InputError("ASCE 7 spectrum: SDS, SD1 and TL must be > 0");
-  if (!(tl > sd1 / sds))
-    throw InputError("ASCE 7 spectrum: TL must exceed TS = SD1/SDS");
+  if (!(tl > sd1 / sds)) throw InputError("ASCE 7 spectrum: TL must exceed TS = SD1/SDS");
 }
 
 double Asce7Spectrum::sa(double T) const {

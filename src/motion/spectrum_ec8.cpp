@@ -11,12 +11,16 @@ namespace pound {
 
 Ec8Parameters ec8_parameters(Ec8Type type, Ec8Ground ground) {
   // EN 1998-1:2004 Table 3.2 (Type 1) and Table 3.3 (Type 2): S, TB [s], TC [s], TD [s].
-  static const Ec8Parameters type1[] = {
-      {1.00, 0.15, 0.4, 2.0}, {1.20, 0.15, 0.5, 2.0}, {1.15, 0.20, 0.6, 2.0},
-      {1.35, 0.20, 0.8, 2.0}, {1.40, 0.15, 0.5, 2.0}};
-  static const Ec8Parameters type2[] = {
-      {1.00, 0.05, 0.25, 1.2}, {1.35, 0.05, 0.25, 1.2}, {1.50, 0.10, 0.25, 1.2},
-      {1.80, 0.10, 0.30, 1.2}, {1.60, 0.05, 0.25, 1.2}};
+  static const Ec8Parameters type1[] = {{1.00, 0.15, 0.4, 2.0},
+                                        {1.20, 0.15, 0.5, 2.0},
+                                        {1.15, 0.20, 0.6, 2.0},
+                                        {1.35, 0.20, 0.8, 2.0},
+                                        {1.40, 0.15, 0.5, 2.0}};
+  static const Ec8Parameters type2[] = {{1.00, 0.05, 0.25, 1.2},
+                                        {1.35, 0.05, 0.25, 1.2},
+                                        {1.50, 0.10, 0.25, 1.2},
+                                        {1.80, 0.10, 0.30, 1.2},
+                                        {1.60, 0.05, 0.25, 1.2}};
   const auto i = static_cast<std::size_t>(ground);
   return type == Ec8Type::type1 ? type1[i] : type2[i];
 }
@@ -27,7 +31,11 @@ double ec8_eta(double damping) {
 }
 
 Ec8Spectrum::Ec8Spectrum(Ec8Type type, Ec8Ground ground, double ag, double damping)
-    : type_(type), ground_(ground), ag_(ag), damping_(damping), eta_(ec8_eta(damping)),
+    : type_(type),
+      ground_(ground),
+      ag_(ag),
+      damping_(damping),
+      eta_(ec8_eta(damping)),
       p_(ec8_parameters(type, ground)) {
   if (!(ag > 0.0)) throw InputError("Eurocode 8 spectrum: ag must be > 0");
   if (!(damping >= 0.0 && damping < 1.0))

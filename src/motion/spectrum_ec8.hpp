@@ -4,8 +4,8 @@
 
 namespace pound {
 
-enum class Ec8Type { type1, type2 };           ///< Type 1 (Ms > 5.5) or Type 2 (Ms <= 5.5)
-enum class Ec8Ground { A, B, C, D, E };         ///< ground types of EN 1998-1 Table 3.1
+enum class Ec8Type { type1, type2 };     ///< Type 1 (Ms > 5.5) or Type 2 (Ms <= 5.5)
+enum class Ec8Ground { A, B, C, D, E };  ///< ground types of EN 1998-1 Table 3.1
 
 /// Soil factor S [-] and corner periods TB, TC, TD [s] (EN 1998-1 Tables 3.2 and 3.3).
 struct Ec8Parameters {

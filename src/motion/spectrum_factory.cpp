@@ -44,8 +44,9 @@ int letter(const Options& o, const std::string& key) {
 
 void require_5_percent(const Options& o, const std::string& code) {
   if (std::fabs(o.get_double("damping") - 0.05) > 1e-12)
-    throw o.invalid("damping", code + " gives 5 % spectra without a damping correction; valid: "
-                                      "0.05");
+    throw o.invalid("damping", code +
+                                   " gives 5 % spectra without a damping correction; valid: "
+                                   "0.05");
 }
 
 }  // namespace
@@ -77,8 +78,8 @@ std::unique_ptr<DesignSpectrum> make_design_spectrum(const Options& o) {
     const double n = o.get_double("N");
     if (!(n >= 1.0)) throw o.invalid("N", "valid: N >= 1");
     const double d = o.given("fault-distance") ? o.get_nonnegative("fault-distance") : -1.0;
-    return std::make_unique<Nzs1170Spectrum>(static_cast<NzsSiteClass>(letter(o, "site-class")),
-                                             z, r, n, d);
+    return std::make_unique<Nzs1170Spectrum>(static_cast<NzsSiteClass>(letter(o, "site-class")), z,
+                                             r, n, d);
   }
   if (name == "asce7") {
     require_5_percent(o, "ASCE 7");
@@ -92,11 +93,16 @@ std::unique_ptr<DesignSpectrum> make_design_spectrum(const Options& o) {
     if (lv != "1" && lv != "2") throw o.invalid("japan-level", "valid: 1 or 2");
     const std::string s = o.get_string("japan-soil");
     JapanSoil soil;
-    if (s == "bedrock") soil = JapanSoil::bedrock;
-    else if (s == "1") soil = JapanSoil::type1;
-    else if (s == "2") soil = JapanSoil::type2;
-    else if (s == "3") soil = JapanSoil::type3;
-    else throw o.invalid("japan-soil", "valid: bedrock, 1, 2 or 3");
+    if (s == "bedrock")
+      soil = JapanSoil::bedrock;
+    else if (s == "1")
+      soil = JapanSoil::type1;
+    else if (s == "2")
+      soil = JapanSoil::type2;
+    else if (s == "3")
+      soil = JapanSoil::type3;
+    else
+      throw o.invalid("japan-soil", "valid: bedrock, 1, 2 or 3");
     const double zone = o.get_positive("japan-zone");
     if (zone > 1.0) throw o.invalid("japan-zone", "valid: 0 < Z <= 1");
     return std::make_unique<JapanSpectrum>(lv == "1" ? JapanLevel::level1 : JapanLevel::level2,

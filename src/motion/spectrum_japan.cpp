@@ -9,7 +9,8 @@ namespace pound {
 double japan_amplification(JapanSoil soil, double T) {
   // Notification No. 1457 (2000), article 10, simplified Gs.
   switch (soil) {
-    case JapanSoil::bedrock: return 1.0;
+    case JapanSoil::bedrock:
+      return 1.0;
     case JapanSoil::type1:
       if (T < 0.576) return 1.5;
       if (T < 0.64) return 0.864 / T;
@@ -43,15 +44,14 @@ double JapanSpectrum::sa(double T) const {
 }
 
 std::string JapanSpectrum::describe() const {
-  static const char* soils[] = {"engineering bedrock (no amplification)",
-                                "type 1 ground (Gs of Notification 1457)",
-                                "type 2 ground (Gs of Notification 1457)",
-                                "type 3 ground (Gs of Notification 1457)"};
+  static const char* soils[] = {
+      "engineering bedrock (no amplification)", "type 1 ground (Gs of Notification 1457)",
+      "type 2 ground (Gs of Notification 1457)", "type 3 ground (Gs of Notification 1457)"};
   std::ostringstream s;
-  s << "Japanese BSL 2000 spectrum, level " << (level_ == JapanLevel::level1 ? 1 : 2)
-    << " (" << (level_ == JapanLevel::level1 ? "rare" : "extremely rare") << "), "
-    << soils[static_cast<int>(soil_)] << ", Z = " << zone_ << ", damping "
-    << 100.0 * damping_ << " %; MOC Notification 1461 (2000) item 4";
+  s << "Japanese BSL 2000 spectrum, level " << (level_ == JapanLevel::level1 ? 1 : 2) << " ("
+    << (level_ == JapanLevel::level1 ? "rare" : "extremely rare") << "), "
+    << soils[static_cast<int>(soil_)] << ", Z = " << zone_ << ", damping " << 100.0 * damping_
+    << " %; MOC Notification 1461 (2000) item 4";
   return s.str();
 }
 

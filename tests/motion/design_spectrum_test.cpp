@@ -19,18 +19,18 @@ namespace {
 
 constexpr double g = kGravity;
 
-TEST(DesignSpectrum, Ec8Type1GroundC) {
+TEST(MotionDesignSpectrum, Ec8Type1GroundC) {
   // Table 3.2, C: S = 1.15, TB = 0.2, TC = 0.6, TD = 2.0; ag = 0.35 g, eta = 1.
   const Ec8Spectrum s(Ec8Type::type1, Ec8Ground::C, 0.35 * g);
   EXPECT_NEAR(s.sa(0.0) / g, 0.35 * 1.15, 1e-12);                    // ag S
   EXPECT_NEAR(s.sa(0.1) / g, 0.35 * 1.15 * (1 + 0.5 * 1.5), 1e-12);  // eq. 3.2
   EXPECT_NEAR(s.sa(0.2) / g, 1.00625, 1e-12);                        // 2.5 ag S
   EXPECT_NEAR(s.sa(0.6) / g, 1.00625, 1e-12);
-  EXPECT_NEAR(s.sa(2.0) / g, 1.00625 * 0.6 / 2.0, 1e-12);            // 0.301875
-  EXPECT_NEAR(s.sa(4.0) / g, 1.00625 * 0.6 * 2.0 / 16.0, 1e-12);     // 0.07546875
+  EXPECT_NEAR(s.sa(2.0) / g, 1.00625 * 0.6 / 2.0, 1e-12);         // 0.301875
+  EXPECT_NEAR(s.sa(4.0) / g, 1.00625 * 0.6 * 2.0 / 16.0, 1e-12);  // 0.07546875
 }
 
-TEST(DesignSpectrum, Ec8Type2GroundDAndDamping) {
+TEST(MotionDesignSpectrum, Ec8Type2GroundDAndDamping) {
   // Table 3.3, D: S = 1.8, TB = 0.1, TC = 0.3, TD = 1.2.
   const Ec8Spectrum s(Ec8Type::type2, Ec8Ground::D, 0.2 * g);
   EXPECT_NEAR(s.sa(0.1) / g, 0.9, 1e-12);
@@ -44,7 +44,7 @@ TEST(DesignSpectrum, Ec8Type2GroundDAndDamping) {
   EXPECT_NEAR(d.sa(0.0) / g, 0.2 * 1.8, 1e-12);  // eta does not act at T = 0
 }
 
-TEST(DesignSpectrum, Nzs1170ClassC) {
+TEST(MotionDesignSpectrum, Nzs1170ClassC) {
   // Table 3.1 class C with Z = 0.4, R = 1, N = 1.
   const Nzs1170Spectrum s(NzsSiteClass::C, 0.4, 1.0);
   EXPECT_NEAR(s.sa(0.0) / g, 1.33 * 0.4, 1e-12);
@@ -52,7 +52,7 @@ TEST(DesignSpectrum, Nzs1170ClassC) {
   EXPECT_NEAR(s.sa(0.3) / g, 2.93 * 0.4, 1e-12);
   EXPECT_NEAR(s.sa(1.5) / g, 2.0 * std::pow(0.5 / 1.5, 0.75) * 0.4, 1e-12);  // 0.351
   EXPECT_NEAR(s.sa(2.0) / g, 1.32 / 2.0 * 0.4, 1e-12);                       // 0.264
-  EXPECT_NEAR(s.sa(3.0) / g, 0.44 * 0.4, 1e-12);        // 0.176
+  EXPECT_NEAR(s.sa(3.0) / g, 0.44 * 0.4, 1e-12);                             // 0.176
   EXPECT_NEAR(s.sa(4.0) / g, 3.96 / 16.0 * 0.4, 1e-12);
   // The branches of Table 3.1 meet at the corners to the table's rounding (0.5 %).
   for (NzsSiteClass c : {NzsSiteClass::A, NzsSiteClass::C, NzsSiteClass::D, NzsSiteClass::E})
@@ -63,7 +63,7 @@ TEST(DesignSpectrum, Nzs1170ClassC) {
   EXPECT_NEAR(nzs_spectral_shape(NzsSiteClass::D, 1.0), 1.935, 0.001);
 }
 
-TEST(DesignSpectrum, Nzs1170ReturnPeriodAndNearFault) {
+TEST(MotionDesignSpectrum, Nzs1170ReturnPeriodAndNearFault) {
   EXPECT_DOUBLE_EQ(nzs_return_period_factor(500), 1.0);
   EXPECT_DOUBLE_EQ(nzs_return_period_factor(2500), 1.8);
   EXPECT_DOUBLE_EQ(nzs_return_period_factor(25), 0.25);
@@ -79,7 +79,7 @@ TEST(DesignSpectrum, Nzs1170ReturnPeriodAndNearFault) {
   EXPECT_THROW(Nzs1170Spectrum(NzsSiteClass::C, 0.5, 1.5), InputError);  // Z R > 0.7
 }
 
-TEST(DesignSpectrum, Asce7) {
+TEST(MotionDesignSpectrum, Asce7) {
   // SDS = 1.0 g, SD1 = 0.6 g, TL = 8 s: T0 = 0.12 s, TS = 0.6 s.
   const Asce7Spectrum s(1.0 * g, 0.6 * g, 8.0);
   EXPECT_NEAR(s.t0(), 0.12, 1e-14);
@@ -93,7 +93,7 @@ TEST(DesignSpectrum, Asce7) {
   EXPECT_NEAR(s.sa(10.0) / g, 0.048, 1e-12);
 }
 
-TEST(DesignSpectrum, JapanBedrockAndSurface) {
+TEST(MotionDesignSpectrum, JapanBedrockAndSurface) {
   const JapanSpectrum rock(JapanLevel::level2, JapanSoil::bedrock);
   EXPECT_NEAR(rock.sa(0.0), 3.2, 1e-12);
   EXPECT_NEAR(rock.sa(0.16), 8.0, 1e-12);
@@ -110,11 +110,10 @@ TEST(DesignSpectrum, JapanBedrockAndSurface) {
   EXPECT_NEAR(t1.sa(0.6), 8.0 * 0.864 / 0.6 * 0.8, 1e-12);
   EXPECT_NEAR(t1.sa(2.0), 5.12 / 2.0 * 1.35 * 0.8, 1e-12);
   // Fh = 1.5 / (1 + 10 h): 0.75 at h = 0.10.
-  EXPECT_NEAR(JapanSpectrum(JapanLevel::level2, JapanSoil::bedrock, 1.0, 0.10).sa(0.3), 6.0,
-              1e-12);
+  EXPECT_NEAR(JapanSpectrum(JapanLevel::level2, JapanSoil::bedrock, 1.0, 0.10).sa(0.3), 6.0, 1e-12);
 }
 
-TEST(DesignSpectrum, TableLogLog) {
+TEST(MotionDesignSpectrum, TableLogLog) {
   const auto dir = std::filesystem::path(::testing::TempDir());
   const std::string p = (dir / "pound_table_spectrum.txt").string();
   std::ofstream(p) << "# T [s]  Sa [g]\n0.1 1.0\n1.0 0.1\n2.0 0.1\n";
@@ -132,14 +131,14 @@ TEST(DesignSpectrum, TableLogLog) {
   }
 }
 
-TEST(DesignSpectrum, FactoryFromOptions) {
+TEST(MotionDesignSpectrum, FactoryFromOptions) {
   Options o("motion target", "", design_spectrum_option_specs());
   const char* argv[] = {"target", "--spectrum", "ec8", "--ground-type", "C", "--ag", "0.35"};
   o.parse(7, argv);
   EXPECT_NEAR(make_design_spectrum(o)->sa(0.4) / g, 1.00625, 1e-12);
   Options bad("motion target", "", design_spectrum_option_specs());
-  const char* argv2[] = {"target", "--spectrum", "nzs1170", "--site-class", "F", "--Z", "0.4",
-                         "--R", "1"};
+  const char* argv2[] = {"target", "--spectrum", "nzs1170", "--site-class", "F", "--Z",
+                         "0.4",    "--R",        "1"};
   bad.parse(9, argv2);
   try {
     make_design_spectrum(bad);

@@ -10,7 +10,7 @@
 namespace pound {
 namespace {
 
-TEST(Envelope, JenningsTrapezoidalExponential) {
+TEST(MotionEnvelope, JenningsTrapezoidalExponential) {
   EnvelopeSettings s;  // automatic: t1 = 0.1 tw, t2 = 0.5 tw, I(tw) = 0.05
   const Envelope e(s, 20.0);
   EXPECT_DOUBLE_EQ(e(0.0), 0.0);
@@ -29,14 +29,14 @@ TEST(Envelope, JenningsTrapezoidalExponential) {
   EXPECT_THROW(Envelope(s, 20.0), InputError);
 }
 
-TEST(Envelope, SaragoniHartPeakAndEnd) {
+TEST(MotionEnvelope, SaragoniHartPeakAndEnd) {
   EnvelopeSettings s;
   s.shape = EnvelopeShape::saragoni_hart;
   s.epsilon = 0.2;
   s.eta = 0.05;
   const Envelope e(s, 20.0);
-  EXPECT_NEAR(e(4.0), 1.0, 1e-12);   // peak at eps tw
-  EXPECT_NEAR(e(20.0), 0.05, 1e-12); // eta at tw
+  EXPECT_NEAR(e(4.0), 1.0, 1e-12);    // peak at eps tw
+  EXPECT_NEAR(e(20.0), 0.05, 1e-12);  // eta at tw
   EXPECT_LT(e(3.9), 1.0);
   EXPECT_LT(e(4.1), 1.0);
   EXPECT_GT(e.strong_duration(), 3.0);

@@ -77,8 +77,7 @@ TEST(MotionReader, PeerAt2AlternativeHeaderAndShortCount) {
   MotionFileSpec spec;
   spec.path = p;
   const std::string e = error_of(spec);
-  EXPECT_NE(e.find("alt.at2:5: 3 values but the header (line 4) says NPTS= 4"),
-            std::string::npos)
+  EXPECT_NE(e.find("alt.at2:5: 3 values but the header (line 4) says NPTS= 4"), std::string::npos)
       << e;
 }
 

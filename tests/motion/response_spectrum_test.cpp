@@ -20,7 +20,7 @@ GroundMotion elcentro() {
 // Constant ground acceleration a0 from rest: x(t) = -a0/w^2 (1 - e^{-z w t}(cos wd t +
 // z/sqrt(1-z^2) sin wd t)); exact for a piecewise-linear input, so the recurrence must
 // reproduce it to round-off at every sample.
-TEST(ResponseSpectrum, StepResponseIsExact) {
+TEST(MotionResponseSpectrum, StepResponseIsExact) {
   const double T = 0.7, z = 0.05, a0 = 2.5, dt = 0.013;
   GroundMotion m{"step", dt, std::vector<double>(500, a0)};
   const SdofHistory h = sdof_history(m, T, z);
@@ -37,7 +37,7 @@ TEST(ResponseSpectrum, StepResponseIsExact) {
 
 // Peak of the step response: SD = a0/w^2 (1 + exp(-pi z / sqrt(1 - z^2))), reached at
 // t = pi / wd; a step of pi / (40 wd) lands on it.
-TEST(ResponseSpectrum, StepResponsePeak) {
+TEST(MotionResponseSpectrum, StepResponsePeak) {
   const double T = 1.0, z = 0.05, a0 = 1.0;
   const double w = 2 * M_PI / T, wd = w * std::sqrt(1 - z * z);
   GroundMotion m{"step", M_PI / wd / 40.0, std::vector<double>(400, a0)};
@@ -51,7 +51,7 @@ TEST(ResponseSpectrum, StepResponsePeak) {
 // Harmonic input a_g = A sin(W t) from rest: steady state plus the free vibration that
 // cancels its initial conditions. With 200 samples per forcing period the only error is the
 // linear interpolation of the sine, O((W dt)^2 / 12) ~ 1e-4 relative.
-TEST(ResponseSpectrum, HarmonicInputClosedForm) {
+TEST(MotionResponseSpectrum, HarmonicInputClosedForm) {
   const double T = 0.5, z = 0.05, A = 3.0;
   const double w = 2 * M_PI / T, q = std::sqrt(1 - z * z), wd = w * q;
   for (const double beta : {0.5, 1.0, 1.6}) {
@@ -64,13 +64,12 @@ TEST(ResponseSpectrum, HarmonicInputClosedForm) {
     const double C = -A * (w * w - W * W) / den, D = A * 2 * z * w * W / den;
     // Free vibration with x(0) = -D, v(0) = -C W.
     const double x0 = -D, v0 = -C * W;
-    double peak = 0.0, abs_peak = 0.0;
+    double peak = 0.0;
     for (std::size_t i = 0; i < n; ++i) {
       const double t = dt * double(i), e = std::exp(-z * w * t);
       const double x = C * std::sin(W * t) + D * std::cos(W * t) +
                        e * (x0 * std::cos(wd * t) + (v0 + z * w * x0) / wd * std::sin(wd * t));
       peak = std::max(peak, std::fabs(x));
-      (void)abs_peak;
     }
     const ResponseSpectrum r = response_spectrum(m, {T}, z);
     EXPECT_NEAR(r.sd[0] / peak, 1.0, 2e-4) << "beta = " << beta;
@@ -81,7 +80,7 @@ TEST(ResponseSpectrum, HarmonicInputClosedForm) {
   }
 }
 
-TEST(ResponseSpectrum, ElCentroPublishedValues) {
+TEST(MotionResponseSpectrum, ElCentroPublishedValues) {
   const GroundMotion m = elcentro();
   const std::vector<double> T = {0.2, 0.5, 1.0, 2.0};
   const ResponseSpectrum plain = response_spectrum(m, T, 0.05, {0.0});
@@ -102,14 +101,14 @@ TEST(ResponseSpectrum, ElCentroPublishedValues) {
   }
 }
 
-TEST(ResponseSpectrum, ZeroPeriodIsPga) {
+TEST(MotionResponseSpectrum, ZeroPeriodIsPga) {
   const GroundMotion m = elcentro();
   const ResponseSpectrum r = response_spectrum(m, {0.0, 0.01}, 0.05);
   EXPECT_DOUBLE_EQ(r.psa[0], m.pga());
   EXPECT_NEAR(r.psa[1] / m.pga(), 1.0, 0.02);  // a stiff oscillator follows the ground
 }
 
-TEST(ResponseSpectrum, LogSpacedPeriods) {
+TEST(MotionResponseSpectrum, LogSpacedPeriods) {
   const auto t = log_spaced_periods(0.05, 4.0, 100);
   ASSERT_EQ(t.size(), 100u);
   EXPECT_DOUBLE_EQ(t.front(), 0.05);

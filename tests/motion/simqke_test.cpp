@@ -14,11 +14,11 @@
 namespace pound {
 namespace {
 
-TEST(Simqke, PhiloxKnownAnswer) {
+TEST(MotionSimqke, PhiloxKnownAnswer) {
   // Random123 known-answer vector: Philox4x32-10, counter 0 and key 0 give
   // 6627e8d5 e169c58d bc57ac4c 9b00dbd8; u uses the first two words (27 + 26 bits).
-  const double u = (double(0x6627e8d5u >> 5) * 67108864.0 + double(0xe169c58du >> 6)) /
-                   9007199254740992.0;
+  const double u =
+      (double(0x6627e8d5u >> 5) * 67108864.0 + double(0xe169c58du >> 6)) / 9007199254740992.0;
   EXPECT_EQ(philox_uniform(0, 0, 0), u);
   EXPECT_NE(philox_uniform(0, 1, 0), u);
   EXPECT_NE(philox_uniform(1, 0, 0), u);
@@ -29,7 +29,7 @@ TEST(Simqke, PhiloxKnownAnswer) {
   EXPECT_NEAR(sum / 20000.0, 0.5, 4.0 * std::sqrt(1.0 / 12.0 / 20000.0));
 }
 
-TEST(Simqke, DeterministicForSameInputs) {
+TEST(MotionSimqke, DeterministicForSameInputs) {
   const Ec8Spectrum target(Ec8Type::type1, Ec8Ground::C, 0.35 * kGravity);
   SimqkeSettings s;
   s.max_iterations = 5;
@@ -71,11 +71,13 @@ void check_acceptance(const DesignSpectrum& target) {
   EXPECT_LE(mm.max_ratio, 1.05);
 }
 
-TEST(Simqke, AcceptanceEurocode8Type1GroundC) {
+TEST(MotionSimqke, AcceptanceEurocode8Type1GroundC) {
   check_acceptance(Ec8Spectrum(Ec8Type::type1, Ec8Ground::C, 0.35 * kGravity));
 }
 
-TEST(Simqke, AcceptanceNzs1170ClassC) { check_acceptance(Nzs1170Spectrum(NzsSiteClass::C, 0.4, 1.0)); }
+TEST(MotionSimqke, AcceptanceNzs1170ClassC) {
+  check_acceptance(Nzs1170Spectrum(NzsSiteClass::C, 0.4, 1.0));
+}
 
 }  // namespace
 }  // namespace pound

@@ -1,0 +1,142 @@
+// The campaign program end to end: the same numbers on 1 and 2 ranks, a SIGKILL in the middle
+// of a run followed by --resume gives the uninterrupted file, SIGTERM stops cleanly.
+#include <gtest/gtest.h>
+#include <hdf5.h>
+#include <signal.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kStudy = std::string(POUND_SOURCE_DIR) + "/studies/campaign-smoke.ini";
+
+std::string dir() {
+  static const std::string d = [] {
+    const fs::path p = fs::temp_directory_path() / ("pound_campaign_" + std::to_string(::getpid()));
+    fs::create_directories(p);
+    return p.string();
+  }();
+  return d;
+}
+
+int sh(const std::string& cmd) {
+  ::setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
+  ::setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
+  const int s = std::system((cmd + " 2>>" + dir() + "/stderr.log").c_str());
+  return WIFEXITED(s) ? WEXITSTATUS(s) : -1;
+}
+
+std::vector<char> read_raw(const std::string& file, const std::string& path) {
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  const hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  EXPECT_GE(f, 0) << file;
+  const hid_t d = H5Dopen2(f, path.c_str(), H5P_DEFAULT);
+  EXPECT_GE(d, 0) << path;
+  const hid_t t = H5Dget_type(d);
+  const hid_t s = H5Dget_space(d);
+  const std::size_t n = static_cast<std::size_t>(H5Sget_simple_extent_npoints(s)) * H5Tget_size(t);
+  std::vector<char> buf(n);
+  H5Dread(d, t, H5S_ALL, H5S_ALL, H5P_DEFAULT, buf.data());
+  H5Sclose(s);
+  H5Tclose(t);
+  H5Dclose(d);
+  H5Fclose(f);
+  return buf;
+}
+
+void expect_same_numbers(const std::string& a, const std::string& b) {
+  for (const char* p : {"/samples/id", "/samples/status", "/samples/im", "/samples/scale",
+                        "/samples/e", "/samples/gap", "/samples/k_factor",
+                        "/response/peak_disp_pounding", "/response/peak_disp_free",
+                        "/response/peak_drift_pounding", "/response/peak_drift_free",
+                        "/response/peak_accel_pounding", "/response/peak_accel_free",
+                        "/response/peak_force", "/response/impacts"}) {
+    EXPECT_EQ(read_raw(a, p), read_raw(b, p)) << p << " differs between " << a << " and " << b;
+  }
+}
+
+std::string pound(const std::string& args) { return std::string(POUND_BINARY) + " campaign --config " + kStudy + " --quiet " + args; }
+
+TEST(CampaignRun, SameNumbersOnOneAndTwoRanks) {
+  const std::string one = dir() + "/one.h5", two = dir() + "/two.h5";
+  ASSERT_EQ(sh("mpirun -np 1 " + pound("--out " + one)), 0);
+  ASSERT_EQ(sh("mpirun -np 2 --oversubscribe " + pound("--out " + two)), 0);
+  expect_same_numbers(one, two);
+  EXPECT_FALSE(fs::exists(one + ".journal"));
+}
+
+TEST(CampaignRun, KilledRunResumesToTheUninterruptedFile) {
+  const std::string ref = dir() + "/ref.h5", cut = dir() + "/cut.h5";
+  const std::string n = "--samples 160";
+  ASSERT_EQ(sh(pound(n + " --out " + ref)), 0);
+  // Start the same run and SIGKILL it once its journal holds some samples.
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    ::execl("/bin/sh", "sh", "-c", ("exec " + pound(n + " --out " + cut)).c_str(), nullptr);
+    ::_exit(127);
+  }
+  const std::string journal = cut + ".journal";
+  const auto t0 = std::chrono::steady_clock::now();
+  while (std::chrono::steady_clock::now() - t0 < std::chrono::seconds(60)) {
+    struct stat s;
+    if (::stat(journal.c_str(), &s) == 0 && s.st_size > 40 * 1024 / 10) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  ::kill(pid, SIGKILL);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFSIGNALED(status)) << "the run finished before it could be killed";
+  ASSERT_TRUE(fs::exists(journal));
+  EXPECT_FALSE(fs::exists(cut));
+  // Without --resume the existing journal is refused; with it the run completes.
+  EXPECT_EQ(sh(pound(n + " --out " + cut)), 2);
+  ASSERT_EQ(sh("mpirun -np 2 --oversubscribe " + pound(n + " --out " + cut + " --resume")), 0);
+  expect_same_numbers(ref, cut);
+}
+
+TEST(CampaignRun, SigtermStopsCleanlyAndTheRunResumes) {
+  const std::string ref = dir() + "/ref2.h5", cut = dir() + "/term.h5";
+  const std::string n = "--samples 160";
+  ASSERT_EQ(sh(pound(n + " --out " + ref)), 0);
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    ::execl("/bin/sh", "sh", "-c", ("exec " + pound(n + " --out " + cut)).c_str(), nullptr);
+    ::_exit(127);
+  }
+  std::this_thread::sleep_for(std::chrono::milliseconds(600));
+  ::kill(pid, SIGTERM);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0);
+  if (fs::exists(cut + ".journal")) {  // stopped before the end (the usual case)
+    EXPECT_FALSE(fs::exists(cut));
+    ASSERT_EQ(sh(pound(n + " --out " + cut + " --resume")), 0);
+  }
+  expect_same_numbers(ref, cut);
+}
+
+TEST(CampaignRun, StudyErrorCreatesNoFile) {
+  const std::string out = dir() + "/bad.h5";
+  EXPECT_EQ(sh(std::string(POUND_BINARY) + " campaign --config " + kStudy +
+               " --sample.e 'uniform(0.5, 1.5)' --out " + out),
+            2);
+  EXPECT_FALSE(fs::exists(out));
+  EXPECT_FALSE(fs::exists(out + ".journal"));
+  // An existing result is not overwritten without --force.
+  ASSERT_EQ(sh(pound("--samples 4 --out " + out)), 0);
+  EXPECT_EQ(sh(pound("--samples 4 --out " + out)), 2);
+  EXPECT_EQ(sh(pound("--samples 4 --out " + out + " --force")), 0);
+}
+
+}  // namespace

@@ -1,0 +1,132 @@
+// The `pound motion` command: JSON output, generated files, and bad input giving exit code 2
+// with one line on stderr.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "motion/motion_reader.hpp"
+
+namespace pound {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CmdResult {
+  int code = -1;
+  std::string out, err;
+};
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+fs::path temp_dir() {
+  const fs::path d = fs::path(::testing::TempDir()) / "pound_cmd_motion";
+  fs::create_directories(d);
+  return d;
+}
+
+CmdResult run(const std::string& args) {
+  const fs::path d = temp_dir();
+  const std::string out = (d / "stdout.txt").string(), err = (d / "stderr.txt").string();
+  const std::string cmd =
+      std::string("'") + POUND_BINARY + "' motion " + args + " >'" + out + "' 2>'" + err + "'";
+  const int status = std::system(cmd.c_str());
+  CmdResult r;
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.out = slurp(out);
+  r.err = slurp(err);
+  return r;
+}
+
+std::string write(const std::string& name, const std::string& text) {
+  const std::string p = (temp_dir() / name).string();
+  std::ofstream(p) << text;
+  return p;
+}
+
+int lines(const std::string& s) {
+  int n = 0;
+  for (char c : s) n += c == '\n';
+  return n;
+}
+
+const std::string kElCentro = std::string(POUND_SOURCE_DIR) + "/motions/elcentro-1940-ns.dat";
+
+TEST(MotionCommand, SpectrumJson) {
+  const CmdResult r =
+      run("spectrum --input '" + kElCentro + "' --periods 0.5,1,2 --substep 0 --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  for (const char* k : {"\"period_s\":[", "\"sd_m\":[", "\"psv_mps\":[", "\"psa_g\":[",
+                        "\"sa_abs_g\":[", "\"pga_g\":"})
+    EXPECT_NE(r.out.find(k), std::string::npos) << k << " missing in " << r.out;
+  EXPECT_EQ(lines(r.out), 1);
+  // PSA 0.916 g at 0.5 s (motions/README.md), printed with 17 digits.
+  EXPECT_NE(r.out.find("\"psa_g\":[0.916"), std::string::npos) << r.out;
+}
+
+TEST(MotionCommand, TargetJson) {
+  const CmdResult r = run("target --spectrum ec8 --ground-type C --ag 0.35 --periods 0.4 --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"psa_g\":[1.00624"), std::string::npos) << r.out;
+  for (const char* k : {"\"period_s\":[", "\"sd_m\":[", "\"psv_mps\":[", "\"sa_abs_g\":["})
+    EXPECT_NE(r.out.find(k), std::string::npos) << k;
+}
+
+TEST(MotionCommand, GenerateWritesReadableFiles) {
+  const fs::path dir = temp_dir() / "gen";
+  fs::remove_all(dir);
+  const CmdResult r =
+      run("generate --spectrum nzs1170 --site-class C --Z 0.4 --R 1 --count 2 "
+          "--duration 8 --dt 0.01 --seed 3 --json --out '" +
+          dir.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  for (const char* k :
+       {"\"motions\":[", "\"mean\":{", "\"min_ratio\":", "\"max_ratio\":", "\"pga_g\":",
+        "\"final_velocity_mps\":", "\"final_displacement_m\":", "\"iterations\":"})
+    EXPECT_NE(r.out.find(k), std::string::npos) << k;
+  EXPECT_TRUE(fs::exists(dir / "motions.h5"));
+  EXPECT_TRUE(fs::exists(dir / "motion-001.txt"));
+  EXPECT_FALSE(fs::exists(dir / "motion-002.txt"));
+  // The text file states its units and dt, so the reader needs nothing else.
+  MotionFileSpec spec;
+  spec.path = (dir / "motion-000.txt").string();
+  const GroundMotion m = read_motion(spec);
+  EXPECT_EQ(m.accel.size(), 801u);
+  EXPECT_NEAR(m.dt, 0.01, 1e-12);
+  EXPECT_GT(m.pga(), 0.2 * kGravity);
+}
+
+void expect_input_error(const std::string& args, const std::string& needle) {
+  const CmdResult r = run(args);
+  EXPECT_EQ(r.code, 2) << args;
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find(needle), std::string::npos) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+}
+
+TEST(MotionCommand, BadInputGivesExitCode2AndOneLine) {
+  const std::string text = write("text.txt", "0 0.1\n0.01 0.2\n0.02 abc\n");
+  expect_input_error("spectrum --units g --input '" + text + "'", "text.txt:3: 'abc'");
+  const std::string nan = write("nan.txt", "0 0.1\n0.01 NaN\n0.02 0.3\n");
+  expect_input_error("spectrum --units g --input '" + nan + "'", "nan.txt:2: 'NaN' is not finite");
+  const std::string step = write("step.txt", "0 0.1\n0.01 0.2\n0.02 0.1\n0.035 0\n0.04 0.1\n");
+  expect_input_error("spectrum --units g --input '" + step + "'", "step.txt:4: time 0.035");
+  const std::string nounit = write("nounit.txt", "0 0.1\n0.01 0.2\n0.02 0.1\n");
+  expect_input_error("spectrum --input '" + nounit + "'", "give units g, m/s2 or cm/s2");
+  expect_input_error("spectrum --units ft --input '" + nounit + "'", "valid: g, m/s2, cm/s2");
+  expect_input_error("target --spectrum ec9", "valid: ec8, nzs1170, asce7, japan, table");
+  expect_input_error("target --spectrum nzs1170 --site-class C --Z 0.4 --R 1 --damping 0.1",
+                     "valid: 0.05");
+}
+
+}  // namespace
+}  // namespace pound
