@@ -7,6 +7,8 @@
 #include "contact/registry.hpp"
 #include "io/json.hpp"
 #include "io/options.hpp"
+#include "sears/sears_impact.hpp"
+#include "sears/sears_options.hpp"
 #include "solver/free_impact.hpp"
 
 namespace pound::app {
@@ -14,7 +16,7 @@ namespace {
 
 std::vector<OptionSpec> impact_specs() {
   return {
-      {"model", "", "hc-linear", "contact model: " + contact_model_names()},
+      {"model", "", "hc-linear", "contact model: " + contact_model_names() + ", sears"},
       {"e", "-", "0.65", "coefficient of restitution, in (0, 1]"},
       {"k", "N/m or N/m^1.5", "", "contact stiffness (N/m linear laws, N/m^1.5 Hertz laws)"},
       {"m1", "kg", "1", "mass of body 1 (moving towards body 2)"},
@@ -58,19 +60,27 @@ void print(const ImpactResult& r, bool json) {
 }  // namespace
 
 int run_impact(int argc, const char* const* argv) {
-  Options opt("impact", "Two free bodies (no springs, no ground motion) colliding once.",
-              impact_specs());
+  auto specs = impact_specs();
+  const auto sears_specs = sears::sears_impact_option_specs();
+  specs.insert(specs.end(), sears_specs.begin(), sears_specs.end());
+  Options opt("impact", "Two free bodies (no springs, no ground motion) colliding once.", specs);
   opt.parse(argc, argv);
   if (opt.help_requested()) {
     std::cout << opt.help_text();
     return 0;
   }
   const std::string model = opt.get_string("model");
-  const auto& info = find_contact_model(model, opt.where("model"));
   FreeImpactSpec spec;
   spec.m1 = opt.get_positive("m1");
   spec.m2 = opt.get_positive("m2");
   spec.v0 = opt.get_positive("v0");
+  if (model == "sears") {
+    // Damped Sears model: two free bars (docs/sears.md).
+    const auto s = sears::sears_impact_spec_from(opt, spec.m1, spec.m2, spec.v0);
+    print(sears::simulate_sears_impact(s), opt.flag("json"));
+    return 0;
+  }
+  const auto& info = find_contact_model(model, opt.where("model"));
   ContactParameters p;
   p.e = opt.get_double("e");
   if (!(p.e > 0 && p.e <= 1)) throw opt.invalid("e", "valid: e in (0, 1]");

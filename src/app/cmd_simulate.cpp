@@ -8,11 +8,13 @@
 #include "io/options.hpp"
 #include "simulation/simulate_row.hpp"
 #include "study/row_options.hpp"
+#include "study/sears_row_options.hpp"
 
 namespace pound::app {
 namespace {
 
-void print_json(const RowSimulation& s, const BuildingRow& row) {
+void print_json(const RowSimulation& s, const BuildingRow& row,
+                const std::vector<sears::SlabPeaks>& slabs) {
   JsonWriter w;
   w.begin_object().key("buildings").begin_array();
   for (std::size_t b = 0; b < row.buildings.size(); ++b) {
@@ -45,11 +47,25 @@ void print_json(const RowSimulation& s, const BuildingRow& row) {
         .field("first_contact_s", c.impacts ? c.first_contact : -1.0)
         .end_object();
   }
-  w.end_array().end_object();
+  w.end_array();
+  if (!slabs.empty()) {
+    // Damped Sears model: peak accelerations of the colliding slabs.
+    w.key("slabs").begin_array();
+    for (const auto& p : slabs)
+      w.begin_object()
+          .field("building", p.building)
+          .field("floor", p.floor)
+          .field("peak_face_accel_mps2", p.face_accel)
+          .field("peak_centre_accel_mps2", p.centre_accel)
+          .end_object();
+    w.end_array();
+  }
+  w.end_object();
   std::cout << w.str() << "\n";
 }
 
-void print_table(const RowSimulation& s, const BuildingRow& row) {
+void print_table(const RowSimulation& s, const BuildingRow& row,
+                 const std::vector<sears::SlabPeaks>& slabs) {
   std::printf("%-12s %5s %12s %12s %8s %12s %12s %8s %12s %12s\n", "building", "floor",
               "disp_pnd[m]", "disp_free[m]", "ratio", "drift_pnd[-]", "drift_free[-]", "ratio",
               "acc_pnd[g]", "acc_free[g]");
@@ -63,12 +79,19 @@ void print_table(const RowSimulation& s, const BuildingRow& row) {
   for (const auto& c : s.sites)
     std::printf("%-6d %5d %8d %14.6g %16.6g %14.4f\n", c.pair + 1, c.floor, c.impacts,
                 c.peak_force, c.peak_penetration, c.first_contact);
+  if (slabs.empty()) return;
+  std::printf("\n%-12s %5s %16s %18s\n", "building", "floor", "face_accel[g]", "centre_accel[g]");
+  for (const auto& p : slabs)
+    std::printf("%-12s %5d %16.4g %18.4g\n", row.buildings[p.building].name.c_str(), p.floor,
+                p.face_accel / kGravity, p.centre_accel / kGravity);
 }
 
 }  // namespace
 
 int run_simulate(int argc, const char* const* argv) {
   auto specs = row_option_specs();
+  const auto sears_specs = sears_row_option_specs();
+  specs.insert(specs.end(), sears_specs.begin(), sears_specs.end());
   specs.push_back({"json", "", "", "print one JSON object", true});
   specs.push_back({"histories", "", "", "write time histories to this HDF5 file"});
   Options opt("simulate",
@@ -80,7 +103,15 @@ int run_simulate(int argc, const char* const* argv) {
   }
   // Everything is read and validated before anything is simulated or written.
   const BuildingRow row = row_from_options(opt);
-  const ContactSpec contact = contact_from_options(opt, row);
+  const bool is_sears = opt.get_string("contact.model") == "sears";
+  ContactSpec contact;
+  sears::SearsRowModel sears_model;
+  if (is_sears) {
+    contact.model = "sears";
+    sears_model = sears_row_from_options(opt, row);
+  } else {
+    contact = contact_from_options(opt, row);
+  }
   const IntegratorSettings integ = integrator_from_options(opt);
   const GroundMotion motion = motion_from_options(opt);
   RowSimulationOptions so;
@@ -89,12 +120,21 @@ int run_simulate(int argc, const char* const* argv) {
   std::fprintf(stderr, "pound simulate: %zu buildings, contact model %s, motion %s (%zu samples at %g s, PGA %.4g g)\n",
                row.buildings.size(), contact.model.c_str(), motion.name.c_str(), motion.accel.size(),
                motion.dt, motion.pga() / kGravity);
-  const RowSimulation sim = simulate_row(row, motion, contact, integ, so);
+  RowSimulation sim;
+  std::vector<sears::SlabPeaks> slabs;
+  if (is_sears) {
+    auto ss = sears::simulate_sears_row(row, motion, sears_model, so);
+    sim = std::move(ss.base);
+    slabs = std::move(ss.slabs);
+    std::fprintf(stderr, "pound simulate: damped Sears model, step %.3g s\n", ss.dt_s);
+  } else {
+    sim = simulate_row(row, motion, contact, integ, so);
+  }
   if (so.record_history) write_histories(opt.get_string("histories"), row, motion, sim, opt.resolved_text());
   if (opt.flag("json"))
-    print_json(sim, row);
+    print_json(sim, row, slabs);
   else
-    print_table(sim, row);
+    print_table(sim, row, slabs);
   return 0;
 }
 

@@ -211,47 +211,15 @@ SearsRowSimulation simulate_sears_row(const BuildingRow& row, const GroundMotion
   p.motion = &motion;
   p.t_end = motion.duration() + opt.extra_time;
   p.record_history = opt.record_history;
-  SearsRowSimulation out;
   p.contacts = false;
-  out.base.free = solve_sears_row(p, model).row;
+  RowResult free = solve_sears_row(p, model).row;
   p.contacts = true;
   SearsRowResult pounding = solve_sears_row(p, model);
-  out.base.pounding = std::move(pounding.row);
+  SearsRowSimulation out;
   out.slabs = std::move(pounding.slabs);
   out.dt_s = pounding.dt_s;
-
-  // Physics.md section 4, as simulate_row() computes it for the lumped models.
-  const AssembledRow a = assemble(row);
-  auto ratio = [](double x, double y) { return y > 0.0 ? x / y : (x > 0.0 ? INFINITY : 1.0); };
-  for (std::size_t b = 0; b < row.buildings.size(); ++b) {
-    const Building& bd = row.buildings[b];
-    for (int j = 0; j < bd.floors(); ++j) {
-      const int i = a.offset[b] + j;
-      FloorResponse f;
-      f.building = static_cast<int>(b);
-      f.floor = j + 1;
-      f.disp_pounding = out.base.pounding.peak_disp(i);
-      f.disp_free = out.base.free.peak_disp(i);
-      f.disp_amplification = ratio(f.disp_pounding, f.disp_free);
-      f.drift_ratio_pounding = out.base.pounding.peak_drift(i) / bd.storey_heights[j];
-      f.drift_ratio_free = out.base.free.peak_drift(i) / bd.storey_heights[j];
-      f.drift_amplification = ratio(f.drift_ratio_pounding, f.drift_ratio_free);
-      f.accel_pounding = out.base.pounding.peak_abs_accel(i);
-      f.accel_free = out.base.free.peak_abs_accel(i);
-      out.base.floors.push_back(f);
-    }
-  }
-  for (std::size_t k = 0; k < a.sites.size(); ++k) {
-    const SiteResult& sr = out.base.pounding.sites[k];
-    SiteResponse s;
-    s.pair = a.sites[k].pair;
-    s.floor = a.sites[k].level + 1;
-    s.impacts = sr.impacts;
-    s.peak_force = sr.peak_force;
-    s.peak_penetration = sr.peak_penetration;
-    s.first_contact = sr.first_contact;
-    out.base.sites.push_back(s);
-  }
+  // Physics.md section 4, shared with the lumped models.
+  out.base = summarize_runs(row, std::move(free), std::move(pounding.row));
   return out;
 }
 

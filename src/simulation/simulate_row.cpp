@@ -2,23 +2,13 @@
 
 namespace pound {
 
-RowSimulation simulate_row(const BuildingRow& row, const GroundMotion& motion,
-                           const ContactSpec& contact, const IntegratorSettings& integ,
-                           const RowSimulationOptions& opt) {
+RowSimulation summarize_runs(const BuildingRow& row, RowResult free, RowResult pounding) {
   const AssembledRow a = assemble(row);
-  const auto laws = make_site_laws(contact, row, a);
-  RowProblem p;
-  p.row = &a;
-  p.motion = &motion;
-  p.t_end = motion.duration() + opt.extra_time;
-  p.record_history = opt.record_history;
   RowSimulation out;
-  out.free = solve(p, integ);  // no laws: contacts off
-  for (const auto& l : laws) p.laws.push_back(l.get());
-  out.pounding = solve(p, integ);
-
+  out.free = std::move(free);
+  out.pounding = std::move(pounding);
   // Physics.md section 4: amplification of the peak response by pounding.
-  auto ratio = [](double a_, double b) { return b > 0.0 ? a_ / b : (a_ > 0.0 ? INFINITY : 1.0); };
+  auto ratio = [](double x, double y) { return y > 0.0 ? x / y : (x > 0.0 ? INFINITY : 1.0); };
   for (std::size_t b = 0; b < row.buildings.size(); ++b) {
     const Building& bd = row.buildings[b];
     for (int j = 0; j < bd.floors(); ++j) {
@@ -49,6 +39,22 @@ RowSimulation simulate_row(const BuildingRow& row, const GroundMotion& motion,
     out.sites.push_back(s);
   }
   return out;
+}
+
+RowSimulation simulate_row(const BuildingRow& row, const GroundMotion& motion,
+                           const ContactSpec& contact, const IntegratorSettings& integ,
+                           const RowSimulationOptions& opt) {
+  const AssembledRow a = assemble(row);
+  const auto laws = make_site_laws(contact, row, a);
+  RowProblem p;
+  p.row = &a;
+  p.motion = &motion;
+  p.t_end = motion.duration() + opt.extra_time;
+  p.record_history = opt.record_history;
+  RowResult free = solve(p, integ);  // no laws: contacts off
+  for (const auto& l : laws) p.laws.push_back(l.get());
+  RowResult pounding = solve(p, integ);
+  return summarize_runs(row, std::move(free), std::move(pounding));
 }
 
 }  // namespace pound

@@ -42,6 +42,10 @@ struct RowSimulationOptions {
   bool record_history = false;   ///< keep time histories of both runs
 };
 
+/// The response measures of physics.md section 4 from a free and a pounding run of the same
+/// row (any contact model): fills floors and sites.
+RowSimulation summarize_runs(const BuildingRow& row, RowResult free, RowResult pounding);
+
 RowSimulation simulate_row(const BuildingRow& row, const GroundMotion& motion,
                            const ContactSpec& contact, const IntegratorSettings& integ,
                            const RowSimulationOptions& opt = {});

@@ -1,0 +1,59 @@
+#include "study/sears_row_options.hpp"
+
+#include <cmath>
+
+namespace pound {
+
+std::vector<OptionSpec> sears_row_option_specs() {
+  return {
+      {"building#.slab_length", "m", "", "sears: floor slab length along the row"},
+      {"building#.E", "Pa", "", "sears: Young's modulus of the floor slabs"},
+      {"building#.rho", "kg/m^3", "", "sears: density of the floor slabs"},
+      {"building#.poisson", "-", "0.15", "sears: Poisson's ratio of the floor slabs"},
+      {"sears.modes", "-", "100", "sears: internal axial modes per colliding floor N"},
+      {"sears.xi_s", "-", "0.05", "sears: modal damping ratio of the slabs' axial vibration"},
+      {"sears.chi", "-", "0.125", "sears: wave-speed factor, c = chi sqrt(E/rho)"},
+      {"sears.contact", "", "flat", "sears: flat (k_L from D, Th. 8.1-8.2) or hertz (k delta^1.5)"},
+      {"sears.D", "-", "1", "sears: fraction factor of the flat contact stiffness, >= 1"},
+      {"sears.k", "N/m^1.5", "", "sears: Hertz contact stiffness (contact = hertz)"},
+      {"sears.force_cap", "N", "", "sears: cap PF_max on the contact force (Th. 9.1)"},
+      {"sears.dt", "s", "", "sears: time step (default: automatic, docs/sears.md)"},
+  };
+}
+
+sears::SearsRowModel sears_row_from_options(const Options& opt, const BuildingRow& row) {
+  sears::SearsRowModel m;
+  for (std::size_t b = 1; b <= row.buildings.size(); ++b) {
+    const std::string pre = "building" + std::to_string(b) + ".";
+    sears::FloorSlabProperties s;
+    s.length_m = opt.get_positive(pre + "slab_length");
+    s.E_Pa = opt.get_positive(pre + "E");
+    s.rho_kg_m3 = opt.get_positive(pre + "rho");
+    s.poisson = opt.get_double(pre + "poisson");
+    if (!(s.poisson >= 0 && s.poisson < 0.5)) throw opt.invalid(pre + "poisson", "valid: [0, 0.5)");
+    m.slabs.push_back(s);
+  }
+  const long n = opt.get_int("sears.modes");
+  if (n < 1) throw opt.invalid("sears.modes", "valid: a whole number >= 1");
+  m.modes = static_cast<int>(n);
+  m.xi_s = opt.get_double("sears.xi_s");
+  if (!(m.xi_s >= 0 && m.xi_s < 1)) throw opt.invalid("sears.xi_s", "valid: [0, 1)");
+  m.chi = opt.get_double("sears.chi");
+  if (!(m.chi > 0 && m.chi <= 1)) throw opt.invalid("sears.chi", "valid: (0, 1]");
+  const std::string c = opt.get_string("sears.contact");
+  if (c == "flat") {
+    m.contact = sears::ContactKind::flat;
+    m.D = opt.get_double("sears.D");
+    if (!(m.D >= 1)) throw opt.invalid("sears.D", "valid: a fraction factor >= 1");
+  } else if (c == "hertz") {
+    m.contact = sears::ContactKind::hertz;
+    m.hertz_k = opt.get_positive("sears.k");
+  } else {
+    throw opt.invalid("sears.contact", "valid: flat or hertz");
+  }
+  if (opt.given("sears.force_cap")) m.force_cap_N = opt.get_positive("sears.force_cap");
+  if (opt.given("sears.dt")) m.dt_s = opt.get_positive("sears.dt");
+  return m;
+}
+
+}  // namespace pound
