@@ -9,6 +9,7 @@
 #include "motion/motion_reader.hpp"
 #include "motion/spectrum_factory.hpp"
 #include "study/row_options.hpp"
+#include "study/sears_row_options.hpp"
 
 namespace pound {
 namespace {
@@ -27,6 +28,8 @@ const std::vector<OptionSpec>& sampled_specs() {
       {"gap", "m", "", "gap at every colliding floor of every pair (distribution)"},
       {"damping", "-", "", "damping ratio of every building (distribution)"},
       {"model", "", "", "contact model: discrete(name: weight, ...)"},
+      {"chi", "-", "", "wave-speed factor of the damped Sears model (distribution)"},
+      {"D", "-", "", "fraction factor of the Sears flat contact (distribution)"},
       {"building#.mass_scale", "-", "", "factor on the building's floor masses (distribution)"},
       {"building#.stiffness_scale", "-", "",
        "factor on the building's storey stiffnesses (distribution)"},
@@ -63,6 +66,8 @@ int CampaignStudy::max_levels() const {
 
 std::vector<OptionSpec> campaign_option_specs() {
   std::vector<OptionSpec> s = row_option_specs();
+  const auto sears_specs = sears_row_option_specs();
+  s.insert(s.end(), sears_specs.begin(), sears_specs.end());
   const std::vector<OptionSpec> own = {
       {"campaign.samples", "-", "100", "number of samples"},
       {"campaign.seed", "-", "1", "study seed (every draw derives from it and the sample id)"},
@@ -119,7 +124,7 @@ CampaignStudy campaign_from_options(const Options& opt, long samples_override,
     for (const char* what : {".mass_scale", ".stiffness_scale"})
       if (smp.given("building" + std::to_string(b) + what))
         keys.insert("building" + std::to_string(b) + what);
-  for (const char* k : {"e", "k", "k_factor", "gap", "damping", "model"})
+  for (const char* k : {"e", "k", "k_factor", "gap", "damping", "model", "chi", "D"})
     if (smp.given(k)) keys.insert(k);
   if (smp.count_numbered("building") > st.buildings())
     throw InputError(opt.where("sample.building" + std::to_string(smp.count_numbered("building")) +
@@ -131,7 +136,8 @@ CampaignStudy campaign_from_options(const Options& opt, long samples_override,
       if (p.distribution.kind() != DistributionKind::discrete)
         throw smp.invalid(k, "valid: discrete(name: weight, ...) with names from " +
                                  contact_model_names());
-      for (const auto& l : p.distribution.labels()) find_contact_model(l, smp.where(k));
+      for (const auto& l : p.distribution.labels())
+        if (l != "sears") find_contact_model(l, smp.where(k));
     } else {
       if (p.distribution.kind() == DistributionKind::discrete) p.distribution.lower();  // numeric check
       const double lo = p.distribution.lower(), hi = p.distribution.upper();
@@ -142,26 +148,41 @@ CampaignStudy campaign_from_options(const Options& opt, long samples_override,
         throw smp.invalid(k, "its values must be >= 0; truncate the distribution");
       if (k == "e" && !(hi <= 1)) throw smp.invalid(k, "e must stay in (0, 1]; truncate at 1");
       if (k == "damping" && !(hi < 1)) throw smp.invalid(k, "damping must stay below 1");
+      if (k == "chi" && !(hi <= 1)) throw smp.invalid(k, "chi must stay in (0, 1]; truncate at 1");
+      if (k == "D" && !(lo >= 1)) throw smp.invalid(k, "D must be >= 1; truncate at 1");
     }
     st.parameters.push_back(std::move(p));
   }
 
   // The contact model: fixed keys, with sampled ones checked for what each model needs.
-  bool model_sampled = false;
-  for (const auto& p : st.parameters) model_sampled |= p.key == "model";
+  bool uses_sears = opt.get_string("contact.model") == "sears";
+  bool uses_lumped = !uses_sears;
+  for (const auto& p : st.parameters)
+    if (p.key == "model") {
+      uses_sears = uses_lumped = false;
+      for (const auto& l : p.distribution.labels()) (l == "sears" ? uses_sears : uses_lumped) = true;
+    }
+  if (uses_sears) {
+    st.has_sears = true;
+    st.sears = sears_row_from_options(opt, st.row);
+  }
   bool k_sampled = false;
   for (const auto& p : st.parameters) k_sampled |= p.key == "k" || p.key == "k_factor";
-  if (k_sampled && !opt.given("contact.k") && !opt.given("contact.k_factor")) {
-    // contact_from_options needs some k; the sampled value replaces it per sample.
-    st.contact.model = opt.get_string("contact.model");
-    find_contact_model(st.contact.model, opt.where("contact.model"));
+  st.contact.model = opt.get_string("contact.model");
+  if (uses_lumped && !k_sampled && st.contact.model != "sears") {
+    st.contact = contact_from_options(opt, st.row);
+  } else {
+    // The sampled k (or the Sears model) replaces the stiffness per sample.
+    if (st.contact.model != "sears") find_contact_model(st.contact.model, opt.where("contact.model"));
     st.contact.params.e = opt.get_double("contact.e");
+    if (!(st.contact.params.e > 0 && st.contact.params.e <= 1))
+      throw opt.invalid("contact.e", "valid: e in (0, 1]");
     st.contact.params.v0_min = opt.get_positive("contact.v0_min");
     st.contact.params.xi_relation = opt.get_string("contact.xi_relation");
-  } else {
-    st.contact = contact_from_options(opt, st.row);
+    if (uses_lumped && !k_sampled)
+      throw InputError(opt.where("contact.k") + ": missing; the lumped models need contact.k, "
+                       "contact.k_factor or a sampled sample.k / sample.k_factor");
   }
-  (void)model_sampled;
 
   // Ground motion.
   const std::string src = opt.get_string("motion.source");

@@ -12,6 +12,7 @@
 #include "motion/ground_motion.hpp"
 #include "motion/simqke.hpp"
 #include "sampling/distribution.hpp"
+#include "sears/sears_simulation.hpp"
 #include "simulation/contact_spec.hpp"
 #include "solver/integrator_settings.hpp"
 #include "structure/building_row.hpp"
@@ -25,6 +26,7 @@ enum class MotionSource { generated, records };
 /// One sampled study parameter: its key as written under [sample] and its distribution.
 struct SampledParameter {
   std::string key;  ///< e, k, k_factor, gap, damping, model, chi, D, building#.mass_scale, ...
+                    ///< (chi and D act on the damped Sears model only)
   Distribution distribution;
 };
 
@@ -33,6 +35,8 @@ struct CampaignStudy {
   BuildingRow row;
   ContactSpec contact;
   IntegratorSettings integrator;
+  bool has_sears = false;          ///< slabs given: the damped Sears model can be used
+  sears::SearsRowModel sears;      ///< its fixed options (chi and D may be sampled)
   double extra_time = 0.0;  ///< free vibration after the record [s]
 
   // Sampling.

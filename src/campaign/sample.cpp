@@ -117,7 +117,17 @@ SampleOutcome SampleRunner::run(long id) {
 
     RowSimulationOptions so;
     so.extra_time = st_.extra_time;
-    const RowSimulation sim = simulate_row(row, g, contact, st_.integrator, so);
+    RowSimulation sim;
+    if (d.model == "sears") {
+      sears::SearsRowModel m = st_.sears;
+      for (std::size_t i = 0; i < st_.parameters.size(); ++i) {
+        if (st_.parameters[i].key == "chi") m.chi = d.values[i];
+        if (st_.parameters[i].key == "D") m.D = d.values[i];
+      }
+      sim = sears::simulate_sears_row(row, g, m, so).base;
+    } else {
+      sim = simulate_row(row, g, contact, st_.integrator, so);
+    }
     for (const auto& f : sim.floors) {
       const std::size_t i = static_cast<std::size_t>(f.building * nf + f.floor - 1);
       out.disp_pounding[i] = f.disp_pounding;
