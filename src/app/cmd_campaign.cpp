@@ -145,8 +145,10 @@ int run_campaign(int argc, const char* const* argv) {
                    "keeps them. Resume with: %s --resume\n",
                    sum.done, sum.total, sum.failed, out.c_str(), cmd.c_str());
     } else {
-      std::fprintf(stderr, "campaign: done: %ld samples, %ld failed, written to %s\n", sum.done,
-                   sum.failed, out.c_str());
+      std::fprintf(stderr,
+                   "campaign: done: %ld samples, %ld failed, written to %s (peak memory per "
+                   "rank %.1f MB)\n",
+                   sum.done, sum.failed, out.c_str(), sum.peak_rss_mb);
     }
   }
   if (!sum.interrupted && sum.failed > 0) code = 4;

@@ -25,6 +25,7 @@ const Command kCommands[] = {
      "ground motions: response spectra, design spectra, spectrum-compatible generation"},
     {"campaign", pound::app::run_campaign,
      "Monte Carlo campaign over MPI ranks, results in one HDF5 file (mpirun -np N ...)"},
+    {"fragility", pound::app::run_fragility, "fragility curves with and without pounding from a campaign file"},
 };
 
 void usage(std::ostream& out) {
@@ -62,6 +63,6 @@ int main(int argc, char** argv) {
     }
   }
   std::cerr << "pound: error: unknown command '" << argv[1]
-            << "'; valid commands: impact, simulate, motion, campaign (see 'pound --help')\n";
+            << "'; valid commands: impact, simulate, motion, campaign, fragility (see 'pound --help')\n";
   return 2;
 }

@@ -118,8 +118,8 @@ bool decode_record(const char* bytes, const RecordLayout& l, SampleOutcome& o) {
   return true;
 }
 
-std::vector<SampleOutcome> read_journal(const std::string& path, const CampaignStudy& st,
-                                        long* valid_end) {
+long for_each_record(const std::string& path, const CampaignStudy& st,
+                     const std::function<void(const SampleOutcome&)>& fn) {
   std::FILE* f = std::fopen(path.c_str(), "rb");
   if (!f) throw InputError(path + ": cannot open the campaign journal to resume");
   const RecordLayout l(st);
@@ -134,16 +134,22 @@ std::vector<SampleOutcome> read_journal(const std::string& path, const CampaignS
     throw InputError(path + ": the journal belongs to a different study, sample count or seed; "
                             "resume with the same study file and options, or start again with --force");
   }
-  std::vector<SampleOutcome> out;
   std::vector<char> rec(l.record_bytes());
   long end = static_cast<long>(kHeaderBytes);
+  SampleOutcome o;
   while (std::fread(rec.data(), 1, rec.size(), f) == rec.size()) {
-    SampleOutcome o;
     if (!decode_record(rec.data(), l, o)) break;  // torn or corrupt tail
-    out.push_back(std::move(o));
+    fn(o);
     end += static_cast<long>(rec.size());
   }
   std::fclose(f);
+  return end;
+}
+
+std::vector<SampleOutcome> read_journal(const std::string& path, const CampaignStudy& st,
+                                        long* valid_end) {
+  std::vector<SampleOutcome> out;
+  const long end = for_each_record(path, st, [&](const SampleOutcome& o) { out.push_back(o); });
   if (valid_end) *valid_end = end;
   return out;
 }
@@ -151,8 +157,7 @@ std::vector<SampleOutcome> read_journal(const std::string& path, const CampaignS
 JournalWriter::JournalWriter(const std::string& path, const CampaignStudy& st, bool append)
     : path_(path) {
   if (append) {
-    long end = 0;
-    read_journal(path, st, &end);
+    const long end = for_each_record(path, st, [](const SampleOutcome&) {});
     if (::truncate(path.c_str(), end) != 0)
       throw InputError(path + ": cannot cut the torn tail of the journal (" + std::strerror(errno) + ")");
     f_ = std::fopen(path.c_str(), "ab");

@@ -13,6 +13,7 @@
 // of the record (u64).
 #include <cstdint>
 #include <cstdio>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -60,5 +61,10 @@ class JournalWriter {
 /// the byte offset after the last valid record in `valid_end` (a torn tail is not counted).
 std::vector<SampleOutcome> read_journal(const std::string& path, const CampaignStudy& st,
                                         long* valid_end = nullptr);
+
+/// Streams the valid records to `fn` one at a time (memory independent of the sample count).
+/// Returns the byte offset after the last valid record.
+long for_each_record(const std::string& path, const CampaignStudy& st,
+                     const std::function<void(const SampleOutcome&)>& fn);
 
 }  // namespace pound

@@ -1,5 +1,6 @@
 #include "campaign/mpi_campaign.hpp"
 
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -140,13 +141,13 @@ CampaignSummary master_loop(const CampaignStudy& st, const CampaignRunOptions& o
   sum.total = st.samples;
   std::vector<char> done(static_cast<std::size_t>(st.samples), 0);
   if (opt.resume) {
-    for (const auto& o : read_journal(journal_path, st)) {
+    for_each_record(journal_path, st, [&](const SampleOutcome& o) {
       if (o.id >= 0 && o.id < st.samples && !done[o.id]) {
         done[o.id] = 1;
         ++sum.done;
         if (o.status != SampleStatus::ok) ++sum.failed;
       }
-    }
+    });
   }
   JournalWriter journal(journal_path, st, opt.resume);
   std::vector<long> pending;
@@ -281,6 +282,12 @@ CampaignSummary run_campaign(const CampaignStudy& st, const CampaignRunOptions& 
     out.commit();
     std::remove((opt.out + ".journal").c_str());
   }
+  // Peak resident memory of the largest rank (ru_maxrss is in kB on Linux).
+  struct rusage ru {};
+  getrusage(RUSAGE_SELF, &ru);
+  double mb = static_cast<double>(ru.ru_maxrss) / 1024.0, max_mb = 0.0;
+  MPI_Allreduce(&mb, &max_mb, 1, MPI_DOUBLE, MPI_MAX, comm);
+  sum.peak_rss_mb = max_mb;
   MPI_Barrier(comm);
   return sum;
 }

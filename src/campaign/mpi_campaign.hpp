@@ -20,6 +20,7 @@ struct CampaignRunOptions {
 struct CampaignSummary {
   long total = 0, done = 0, failed = 0;
   bool interrupted = false;  ///< stopped by SIGTERM/SIGUSR1/SIGINT before the end
+  double peak_rss_mb = 0.0;  ///< largest peak resident memory of any rank [MB]
 };
 
 /// Collective over `comm`. Returns the same summary on every rank. Throws InputError on the

@@ -59,7 +59,6 @@ class RowDataset {
 
 void write_result_file(const std::string& path, const CampaignStudy& st,
                        const std::string& journal_path, const RunInfo& info) {
-  const auto outcomes = read_journal(journal_path, st);
   const hsize_t n = static_cast<hsize_t>(st.samples);
   const hsize_t nb = st.buildings(), nf = st.max_floors(), np = st.pairs(), nl = st.max_levels();
   h5::File f(path);
@@ -89,8 +88,8 @@ void write_result_file(const std::string& path, const CampaignStudy& st,
     RowDataset wall(fid, "/run/wall_seconds", n, 0, 0, H5T_NATIVE_DOUBLE, "s");
 
     std::vector<char> seen(n, 0);
-    for (const auto& o : outcomes) {
-      if (o.id < 0 || static_cast<hsize_t>(o.id) >= n || seen[o.id]) continue;  // duplicates: first wins
+    for_each_record(journal_path, st, [&](const SampleOutcome& o) {
+      if (o.id < 0 || static_cast<hsize_t>(o.id) >= n || seen[o.id]) return;  // duplicates: first wins
       seen[o.id] = 1;
       const hsize_t r = static_cast<hsize_t>(o.id);
       const long idv = o.id;
@@ -117,7 +116,7 @@ void write_result_file(const std::string& path, const CampaignStudy& st,
       impacts.write(r, o.impacts.data());
       rank.write(r, &o.rank);
       wall.write(r, &o.wall_seconds);
-    }
+    });
     for (hsize_t i = 0; i < n; ++i)
       if (!seen[i])
         throw InputError(journal_path + ": sample " + std::to_string(i) +

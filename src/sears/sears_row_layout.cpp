@@ -24,6 +24,8 @@ RowContactLayout make_layout(const BuildingRow& row, const AssembledRow& a,
   if (model.modes < 1) throw InputError("damped Sears model: modes must be >= 1");
   if (!(model.xi_s >= 0.0 && model.xi_s < 1.0))
     throw InputError("damped Sears model: xi_s must be in [0, 1)");
+  if (!(model.impact_force_fraction >= 0.0 && model.impact_force_fraction <= 1.0))
+    throw InputError("damped Sears model: impact_force_fraction must be in [0, 1]");
   RowContactLayout L;
   auto floor_index = [&](int dof) {
     for (std::size_t i = 0; i < L.floors.size(); ++i)

@@ -38,6 +38,17 @@ double shortest_building_period(const AssembledRow& a) {
 
 }  // namespace
 
+void count_impacts(SiteContacts& c, double fraction) {
+  double largest = 0.0;
+  for (const auto& ph : c.phases) largest = std::max(largest, ph.peak_force_N);
+  c.impacts = 0;
+  c.first_impact_s = -1.0;
+  for (const auto& ph : c.phases)
+    if (ph.peak_force_N > 0.0 && ph.peak_force_N >= fraction * largest) {
+      if (c.impacts++ == 0) c.first_impact_s = ph.start_s;
+    }
+}
+
 double sears_row_step(const BuildingRow& row, const GroundMotion* motion,
                       const SearsRowModel& model) {
   const AssembledRow a = assemble(row);
@@ -114,7 +125,11 @@ SearsRowResult solve_sears_row(const SearsRowProblem& p, const SearsRowModel& mo
   r.sites.assign(ns, SiteResult{});
   for (const auto& f : L.floors) out.slabs.push_back(SlabPeaks{f.building, f.floor, 0.0, 0.0});
   std::vector<bool> in_contact(ns, false);
-  for (int s = 0; s < ns; ++s) in_contact[s] = delta(s) > 0.0;
+  out.contacts.assign(ns, SiteContacts{});
+  for (int s = 0; s < ns; ++s) {
+    in_contact[s] = delta(s) > 0.0;
+    if (in_contact[s]) out.contacts[s].phases.push_back(ContactPhase{});  // open at t = 0
+  }
   const long steps = static_cast<long>(std::ceil(p.t_end / dt - 1e-9));
 
   for (long i = 0; i < steps; ++i) {
@@ -154,19 +169,28 @@ SearsRowResult solve_sears_row(const SearsRowProblem& p, const SearsRowModel& mo
                        disp[L.site_left_floor[s]].right - disp[L.site_right_floor[s]].left -
                        a.sites[s].gap;
       SiteResult& sr = r.sites[s];
-      sr.impulse += 0.5 * (F(s) + F_next(s)) * dt;
+      const double step_impulse = 0.5 * (F(s) + F_next(s)) * dt;
+      sr.impulse += step_impulse;
       sr.peak_force = std::max(sr.peak_force, F_next(s));
       sr.peak_penetration = std::max(sr.peak_penetration, d);
       const double t_cross = delta(s) != d ? t_next - dt + dt * delta(s) / (delta(s) - d) : t_next;
+      std::vector<ContactPhase>& phases = out.contacts[s].phases;
       if (!in_contact[s] && d > 0.0) {
         in_contact[s] = true;
         ++sr.impacts;
         ++r.events;
         if (sr.first_contact < 0.0) sr.first_contact = t_cross;
+        phases.push_back(ContactPhase{t_cross, -1.0, 0.0, 0.0});
       } else if (in_contact[s] && !(d > 0.0)) {
         in_contact[s] = false;
         ++r.events;
         sr.last_separation = t_cross;
+        phases.back().end_s = t_cross;
+        phases.back().impulse_Ns += step_impulse;  // the force falls to zero in this step
+      }
+      if (in_contact[s]) {
+        phases.back().peak_force_N = std::max(phases.back().peak_force_N, F_next(s));
+        phases.back().impulse_Ns += step_impulse;
       }
       delta(s) = d;
     }
@@ -197,6 +221,7 @@ SearsRowResult solve_sears_row(const SearsRowProblem& p, const SearsRowModel& mo
       r.history.force.push_back(F);
     }
   }
+  for (auto& c : out.contacts) count_impacts(c, model.impact_force_fraction);
   r.u_end = u;
   r.v_end = v;
   r.t_end = steps * dt;
@@ -217,6 +242,7 @@ SearsRowSimulation simulate_sears_row(const BuildingRow& row, const GroundMotion
   SearsRowResult pounding = solve_sears_row(p, model);
   SearsRowSimulation out;
   out.slabs = std::move(pounding.slabs);
+  out.contacts = std::move(pounding.contacts);
   out.dt_s = pounding.dt_s;
   // Physics.md section 4, shared with the lumped models.
   out.base = summarize_runs(row, std::move(free), std::move(pounding.row));

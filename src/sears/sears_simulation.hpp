@@ -48,7 +48,37 @@ struct SearsRowModel {
   double dt_s = 0.0;                                             ///< 0 = automatic
   /// Approach velocity used for the Hertz contact time scale of the step rule [m/s].
   double hertz_reference_velocity = 1.0;
+  /// A contact phase counts as an impact when its peak force is at least this fraction of the
+  /// largest force at its site during the run (see ContactPhase, docs/sears.md) [-].
+  double impact_force_fraction = 0.01;
 };
+
+/// One contact phase of a site: from the instant the faces overlap (delta > 0, Th. 8.1 law
+/// active) to the instant they part, both located by linear interpolation of the overlap.
+/// Every phase is kept, however small its force ("raw" count); count_impacts() applies the
+/// impact threshold. With a zero gap the buildings touch at small amplitude whenever their
+/// relative motion reverses, which opens phases carrying a negligible force; with too few modes
+/// the truncated series also lets a face creep ahead of the wave front and open microscopic
+/// phases. Neither is an impact in the engineering sense, hence the threshold.
+struct ContactPhase {
+  double start_s = 0.0;       ///< overlap begins [s] (0 when the faces overlap at the start)
+  double end_s = -1.0;        ///< faces part [s]; -1 while still in contact at the end
+  double peak_force_N = 0.0;  ///< [N]
+  double impulse_Ns = 0.0;    ///< integral of the force over the phase [N s]
+};
+
+/// Contact phases of one site and the impact count with the threshold applied.
+struct SiteContacts {
+  std::vector<ContactPhase> phases;  ///< every phase in time order; phases.size() = raw count
+  int impacts = 0;            ///< phases with peak force >= fraction x the site's largest [-]
+  double first_impact_s = -1.0;  ///< start of the first counted phase [s]; -1 when none
+};
+
+/// Fills impacts and first_impact_s of `c` from its phases: a phase counts when its peak force
+/// is positive and at least `fraction` times the largest peak force of the site. A relative
+/// threshold keeps the count independent of the record's scale, as every other measure is for
+/// a flat (linear) contact with a zero gap (the problem is then positively homogeneous).
+void count_impacts(SiteContacts& c, double fraction);
 
 struct SlabPeaks {
   int building = 0;           ///< 0-based
@@ -69,6 +99,7 @@ struct SearsRowProblem {
 struct SearsRowResult {
   RowResult row;                 ///< the fields the lumped solver reports
   std::vector<SlabPeaks> slabs;  ///< colliding floors only
+  std::vector<SiteContacts> contacts;  ///< per site (row.sites[s].impacts is the raw count)
   double dt_s = 0.0;             ///< step used [s]
 };
 
@@ -82,6 +113,7 @@ SearsRowResult solve_sears_row(const SearsRowProblem& p, const SearsRowModel& mo
 struct SearsRowSimulation {
   RowSimulation base;            ///< as simulate_row() returns for the lumped models
   std::vector<SlabPeaks> slabs;  ///< peak face and slab-centre accelerations (pounding run)
+  std::vector<SiteContacts> contacts;  ///< per site: phases and thresholded impact count
   double dt_s = 0.0;             ///< [s]
 };
 

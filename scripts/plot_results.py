@@ -1,0 +1,267 @@
+#!/usr/bin/python3
+"""Figures of a pound campaign and its fragility analysis (PNG, matplotlib Agg backend).
+
+Run with Debian's python (python3-matplotlib, python3-h5py):
+
+  /usr/bin/python3 scripts/plot_results.py --campaign RUN.h5 --fragility RUN-fragility \
+      --out RUN-fragility/plots [--motions motions.h5] [--histories histories.h5]
+
+Figures (one PNG each, units on every axis):
+  fragility_<building>_<edp>.png  fitted curves with (solid) and without (dashed) pounding,
+                                  90 % bootstrap bands, observed exceedance fractions
+  amplification_<building>.png    pounding / free peak displacement and drift against each
+                                  sampled parameter, with a running median
+  spectra.png                     (--motions, from 'pound motion generate') response spectra of
+                                  the generated motions, their mean and the target
+  history.png                     (--histories, from 'pound simulate --histories') top-floor
+                                  displacement of each building and the pounding force
+Inputs: the campaign file (schema src/campaign/result_file.hpp), fragility.h5 of
+'pound fragility' (src/fragility/report_files.hpp); both are opened read-only.
+"""
+import argparse
+import os
+import sys
+import textwrap
+
+import matplotlib
+
+matplotlib.use("Agg")
+import h5py  # noqa: E402
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+G = 9.80665  # m/s^2 per g
+EDP_LABEL = {
+    "drift": ("peak inter-storey drift ratio", lambda x: f"{100 * x:g} %"),
+    "disp": ("peak floor displacement", lambda x: f"{1000 * x:g} mm"),
+    "accel": ("peak floor acceleration", lambda x: f"{x / G:.3g} g"),
+    "force": ("peak pounding force", lambda x: f"{x / 1000:g} kN"),
+}
+SKIP_SAMPLES = {"id", "status", "message", "im", "scale"}
+PARAM_UNITS = {"gap": "m", "e": "-", "k_factor": "-", "k": "N/m", "damping": "-", "chi": "-",
+               "D": "-"}
+
+
+def text(attr):
+    return attr.decode() if isinstance(attr, bytes) else str(attr)
+
+
+def im_name(measure):
+    return "Sa(T1)" if measure == "sa" else "PGA"
+
+
+def save(fig, out, name):
+    path = os.path.join(out, name)
+    fig.savefig(path, dpi=120, bbox_inches="tight")
+    plt.close(fig)
+    print(path)
+
+
+def plot_fragility(frag_path, out):
+    with h5py.File(frag_path, "r") as f:
+        g = f["fragility"]
+        grid = g["grid_im"][:] / G
+        measure = text(g.attrs.get("intensity_measure", "pga"))
+        names = [n.strip() for n in text(g.attrs.get("building_names", "")).split(",")]
+        design = text(g.attrs.get("design", "stripes"))
+        curves = []
+        for key in sorted(k for k in g if k.startswith("curve")):
+            c = g[key]
+            curves.append({
+                "building": int(c.attrs["building"]), "edp": text(c.attrs["edp"]),
+                "limit": float(c.attrs["limit"]), "pounding": text(c.attrs["pounding"]) == "true",
+                "status": text(c.attrs["status"]), "theta": float(c.attrs["theta"]),
+                "beta": float(c.attrs["beta"]),
+                "im": c["observed_im"][:] / G, "n": c["observed_n"][:], "z": c["observed_z"][:],
+                "p": c["probability"][:], "lo": c["band_lo"][:], "hi": c["band_hi"][:]})
+    groups = {}
+    for c in curves:
+        groups.setdefault((c["building"], c["edp"]), []).append(c)
+    for (b, edp), cs in groups.items():
+        limits = sorted({c["limit"] for c in cs})
+        colors = plt.cm.viridis(np.linspace(0.0, 0.85, len(limits)))
+        fig, ax = plt.subplots(figsize=(11, 5))
+        for c in cs:
+            col = colors[limits.index(c["limit"])]
+            style = "-" if c["pounding"] else "--"
+            lab = EDP_LABEL[edp][1](c["limit"]) + (", pounding" if c["pounding"] else ", no pounding")
+            if c["status"] == "ok":
+                lab += f": θ = {c['theta'] / G:.3f} g, β = {c['beta']:.2f}"
+                ax.plot(grid, c["p"], style, color=col, lw=1.8, label=lab)
+                ok = np.isfinite(c["lo"]) & np.isfinite(c["hi"])
+                ax.fill_between(grid[ok], c["lo"][ok], c["hi"][ok], color=col,
+                                alpha=0.18 if c["pounding"] else 0.08, lw=0)
+            else:
+                lab += f": no estimate ({c['status'].replace('_', ' ')})"
+                ax.plot([], [], style, color=col, lw=1.0, label=lab)
+            frac = np.where(c["n"] > 0, c["z"] / np.maximum(c["n"], 1), np.nan)
+            ax.plot(c["im"], frac, "o" if c["pounding"] else "s", color=col, ms=6,
+                    mfc=col if c["pounding"] else "none", mew=1.3, ls="none")
+        ax.set_xscale("log")
+        seen = np.concatenate([c["im"] for c in cs])
+        ax.set_xlim(max(grid[0], seen.min() / 1.6), min(grid[-1], seen.max() * 1.6))
+        ax.set_ylim(-0.02, 1.02)
+        ax.set_xlabel(f"{im_name(measure)} [g]")
+        ax.set_ylabel("P(EDP > limit) [-]")
+        bname = names[b] if b < len(names) else f"building {b + 1}"
+        pts = "stripes" if design == "stripes" else "IM bins"
+        ax.set_title(f"Fragility of {bname}: {EDP_LABEL[edp][0]}\n"
+                     f"solid/filled: with pounding, dashed/open: without; "
+                     f"points: observed ({pts}), shading: 90 % bootstrap band", fontsize=10)
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0), frameon=False,
+                  title="limit, case: fit", title_fontsize=8)
+        save(fig, out, f"fragility_{b}_{edp}.png")
+
+
+def running_median(x, y, window):
+    order = np.argsort(x)
+    xs, ys = x[order], y[order]
+    half = max(1, window // 2)
+    med = [np.median(ys[max(0, i - half):i + half + 1]) for i in range(len(xs))]
+    return xs, np.array(med)
+
+
+def plot_amplification(campaign_path, out):
+    with h5py.File(campaign_path, "r") as f:
+        ok = f["samples/status"][:] == 0
+        measure = text(f.attrs.get("intensity_measure", "pga"))
+        names = [n.strip() for n in text(f.attrs.get("building_names", "")).split(",")]
+        params = {}
+        for key in f["samples"]:
+            d = f["samples"][key]
+            if key in SKIP_SAMPLES or d.dtype.kind not in "fiu":
+                continue
+            v = d[:][ok]
+            if np.nanmin(v) < np.nanmax(v):
+                params[key] = (v, PARAM_UNITS.get(key.split(".")[-1], "-"))
+        im = f["samples/im"][:][ok] / G
+        if np.nanmin(im) < np.nanmax(im):
+            params[f"{im_name(measure)}"] = (im, "g")
+        resp = {}
+        for r in ("disp", "drift"):
+            p = np.nanmax(f[f"response/peak_{r}_pounding"][:][ok], axis=2)
+            q = np.nanmax(f[f"response/peak_{r}_free"][:][ok], axis=2)
+            with np.errstate(divide="ignore", invalid="ignore"):
+                resp[r] = np.where(q > 0, p / q, np.nan)
+    if not params:
+        return
+    nb = resp["disp"].shape[1]
+    keys = list(params)
+    for b in range(nb):
+        fig, axes = plt.subplots(2, len(keys), figsize=(3.3 * len(keys), 6.2), squeeze=False)
+        for i, r in enumerate(("disp", "drift")):
+            y = resp[r][:, b]
+            for j, k in enumerate(keys):
+                x, unit = params[k]
+                good = np.isfinite(x) & np.isfinite(y)
+                ax = axes[i][j]
+                ax.scatter(x[good], y[good], s=8, alpha=0.45, color="tab:blue", lw=0)
+                if good.sum() >= 5:
+                    xs, med = running_median(x[good], y[good], max(5, good.sum() // 10))
+                    ax.plot(xs, med, color="tab:red", lw=1.8, label="running median")
+                ax.axhline(1.0, color="k", lw=0.8, ls=":")
+                ax.set_xlabel(f"{k} [{unit}]")
+                if j == 0:
+                    label = "peak displacement" if r == "disp" else "peak drift"
+                    ax.set_ylabel(f"{label}\npounding / free [-]")
+                ax.grid(True, alpha=0.3)
+        axes[0][0].legend(fontsize=8, loc="best")
+        bname = names[b] if b < len(names) else f"building {b + 1}"
+        fig.suptitle(f"Amplification of the peak response of {bname} by pounding "
+                     f"against each sampled parameter (red: running median)", fontsize=11)
+        fig.tight_layout()
+        save(fig, out, f"amplification_{b}.png")
+
+
+def plot_spectra(motions_path, out):
+    with h5py.File(motions_path, "r") as f:
+        tp = f["target/period"][:]
+        target = f["target/psa"][:] / G
+        psa = f["motions/psa"][:] / G
+        mean = f["target/mean_psa"][:] / G if "target/mean_psa" in f else psa.mean(axis=0)
+        describe = text(f.attrs.get("target", "target"))
+        damping = float(f.attrs.get("damping", 0.05))
+    fig, ax = plt.subplots(figsize=(7.5, 5))
+    for i, row in enumerate(psa):
+        ax.plot(tp, row, color="0.6", lw=0.7, label="generated motions" if i == 0 else None)
+    ax.plot(tp, mean, color="tab:blue", lw=2, label=f"mean of {len(psa)} motions")
+    ax.plot(tp, target, color="tab:red", lw=2, ls="--", label="target")
+    ax.set_xscale("log")
+    ax.set_xlabel("period T [s]")
+    ax.set_ylabel(f"pseudo-spectral acceleration PSA [g] ({100 * damping:g} % damping)")
+    ax.set_title("Response spectra of the generated motions against the target\n"
+                 + textwrap.fill(describe, 95), fontsize=9)
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=9)
+    save(fig, out, "spectra.png")
+
+
+def plot_history(hist_path, out, names):
+    with h5py.File(hist_path, "r") as f:
+        bld = f["row/dof_building"][:]
+        floor = f["row/dof_floor"][:]
+        tp, xp = f["pounding/time"][:], f["pounding/displacement"]
+        tf, xf = f["free/time"][:], f["free/displacement"]
+        force = f["pounding/contact_force"][:]  # [steps, sites] on pounding/time
+        pair = f["row/site_pair"][:]
+        sfloor = f["row/site_floor"][:]
+        step = 1  # full resolution: thinning could clip the short impact peaks
+        fig, (a1, a2) = plt.subplots(2, 1, figsize=(9, 6.5), sharex=True)
+        colors = plt.cm.tab10.colors
+        for b in np.unique(bld):
+            top = np.where(bld == b)[0][np.argmax(floor[bld == b])]
+            nm = names[b] if b < len(names) else f"building {b + 1}"
+            c = colors[int(b) % 10]
+            a1.plot(tp[::step], 1000 * xp[::step, top], color=c, lw=1.1,
+                    label=f"{nm}, floor {floor[top]}, pounding")
+            a1.plot(tf[::step], 1000 * xf[::step, top], color=c, lw=0.9, ls="--", alpha=0.8,
+                    label=f"{nm}, floor {floor[top]}, no pounding")
+        for s in range(force.shape[1]):
+            if np.nanmax(np.abs(force[:, s])) > 0:
+                a2.plot(tp, force[:, s] / 1000, lw=1.0,
+                        label=f"pair {pair[s] + 1}, floor {sfloor[s]}")
+    a1.set_ylabel("displacement relative to the ground [mm]")
+    a1.legend(fontsize=8, ncol=2)
+    a1.grid(True, alpha=0.3)
+    a1.set_title("Top-floor displacement of each building with (solid) and without (dashed) pounding")
+    a2.set_ylabel("pounding force [kN]")
+    a2.set_xlabel("time t [s]")
+    a2.set_title("Contact force at the colliding floors")
+    if a2.lines:
+        a2.legend(fontsize=8)
+    a2.grid(True, alpha=0.3)
+    fig.tight_layout()
+    save(fig, out, "history.png")
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    p.add_argument("--campaign", required=True, help="campaign result file (HDF5)")
+    p.add_argument("--fragility", help="output folder of 'pound fragility' (fragility.h5)")
+    p.add_argument("--out", required=True, help="folder for the PNGs")
+    p.add_argument("--motions", help="motions.h5 of 'pound motion generate'")
+    p.add_argument("--histories", help="HDF5 of 'pound simulate --histories'")
+    a = p.parse_args()
+    os.makedirs(a.out, exist_ok=True)
+    for path in [a.campaign, a.motions, a.histories] + (
+            [os.path.join(a.fragility, "fragility.h5")] if a.fragility else []):
+        if path and not os.path.isfile(path):
+            sys.exit(f"plot_results.py: error: {path}: no such file")
+    if a.fragility:
+        plot_fragility(os.path.join(a.fragility, "fragility.h5"), a.out)
+    plot_amplification(a.campaign, a.out)
+    if a.motions:
+        plot_spectra(a.motions, a.out)
+    if a.histories:
+        with h5py.File(a.campaign, "r") as f:
+            names = [n.strip() for n in text(f.attrs.get("building_names", "")).split(",")]
+        with h5py.File(a.histories, "r") as f:
+            cfg = text(f.attrs.get("config", ""))
+        hn = [l.split("=", 1)[1].strip() for l in cfg.splitlines()
+              if l.strip().startswith("building") and ".name" in l.split("=")[0]]
+        plot_history(a.histories, a.out, hn or names)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,299 @@
+#!/usr/bin/env bash
+# End-to-end test of the Slurm scripts in slurm/ on a real single-node Slurm started here.
+#
+#   bash slurm/test-local-slurm.sh          (from .ci/run; root, or sudo for apt-get)
+#
+# Installs Debian's slurm-wlm and munge when missing, starts a private munged, slurmctld and
+# slurmd with a loopback-only configuration in a temporary folder (nothing under /etc is
+# used or changed), submits the real scripts on a small study and checks:
+#   1. campaign.sbatch (srun --mpi=pmix) runs a campaign to completion (the reference);
+#   2. a campaign.sbatch job with a time limit shorter than the campaign (--time=1 with
+#      --signal=B:USR1@50) is stopped by Slurm's signal, keeps its journal and exits 75;
+#      campaign-mpirun.sbatch resumes it and is stopped again with
+#      `scancel --signal=USR1 --batch`; a third submission completes it; the final file has
+#      every sample exactly once and equals the reference (/samples, /response);
+#   3. submit-array.sh splits the campaign over a 2-task job array and merges the parts;
+#      the merged file equals the reference.
+# Exits 0 only when every check holds. Stops every daemon it started (by the process ids it
+# recorded) and removes the temporary folder, also when a check fails (POUND_SLURM_KEEP=1
+# keeps the folder for inspection).
+#
+# Environment: POUND (binary, default build/bin/pound), POUND_SLURM_TEST_SAMPLES (default 3000).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+repo=$(pwd)
+t0=$(date +%s)
+say() { echo "test-local-slurm[$(( $(date +%s) - t0 ))s]: $*"; }
+
+POUND=${POUND:-build/bin/pound}
+[[ "$POUND" = /* ]] || POUND=$repo/$POUND
+if [[ ! -x "$POUND" ]]; then
+  echo "test-local-slurm: $POUND not found; build it first (cmake --preset release && cmake --build build)" >&2
+  exit 1
+fi
+export POUND
+samples=${POUND_SLURM_TEST_SAMPLES:-3000}
+study=$repo/studies/campaign-smoke.ini
+PY=/usr/bin/python3
+parts_py=$repo/slurm/pound_parts.py
+
+# ---------------------------------------------------------------- packages
+pkgs=(slurm-wlm munge openmpi-bin python3-h5py python3-numpy)
+missing=()
+for p in "${pkgs[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [[ ${#missing[@]} -gt 0 ]]; then
+  SUDO=""
+  [[ $(id -u) -ne 0 ]] && SUDO=sudo
+  say "installing ${missing[*]}"
+  $SUDO apt-get update -qq
+  # policy-rc.d: the packages must not start the system's own munged/slurmd.
+  DEBIAN_FRONTEND=noninteractive RUNLEVEL=1 $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+say "packages present: ${pkgs[*]}"
+if [[ $(id -u) -ne 0 ]]; then
+  echo "test-local-slurm: the Slurm daemons must run as root here; run the test as root" >&2
+  exit 1
+fi
+
+# ---------------------------------------------------------------- daemons
+T=$(mktemp -d /tmp/pound-slurm-test.XXXXXX)
+chmod 700 "$T"
+daemon_pids=()
+daemon_names=()
+cleanup() {
+  local rc=$?
+  set +e
+  trap - EXIT INT TERM
+  if [[ -n "${SLURM_CONF:-}" && ${#daemon_pids[@]} -ge 2 ]]; then
+    # Cancel what is still queued or running and let slurmd end the job steps.
+    if [[ -n "$(squeue -h -o %i 2>/dev/null)" ]]; then
+      say "cleanup: cancelling jobs still in the queue"
+      scancel --full $(squeue -h -o %i 2>/dev/null) 2>/dev/null
+      for _ in $(seq 60); do [[ -z "$(squeue -h -o %i 2>/dev/null)" ]] && break; sleep 0.5; done
+    fi
+  fi
+  local i
+  for ((i = ${#daemon_pids[@]} - 1; i >= 0; --i)); do
+    kill -TERM "${daemon_pids[$i]}" 2>/dev/null
+  done
+  for ((i = ${#daemon_pids[@]} - 1; i >= 0; --i)); do
+    local pid=${daemon_pids[$i]}
+    for _ in $(seq 100); do kill -0 "$pid" 2>/dev/null || break; sleep 0.1; done
+    if kill -0 "$pid" 2>/dev/null; then
+      say "cleanup: ${daemon_names[$i]} (pid $pid) did not stop on SIGTERM; SIGKILL"
+      kill -KILL "$pid" 2>/dev/null
+    fi
+    wait "$pid" 2>/dev/null
+    say "cleanup: stopped ${daemon_names[$i]} (pid $pid)"
+  done
+  if [[ $rc -ne 0 || "${POUND_SLURM_KEEP:-0}" == 1 ]] && [[ -d "$T" ]]; then
+    say "logs of the daemons (last lines):"
+    for f in "$T"/log/*.log; do [[ -f "$f" ]] && { echo "--- $f"; tail -n 15 "$f"; }; done
+  fi
+  if [[ "${POUND_SLURM_KEEP:-0}" == 1 ]]; then
+    say "cleanup: kept $T"
+  else
+    rm -rf "$T"
+  fi
+  if [[ $rc -eq 0 ]]; then say "PASS (all checks hold) in $(( $(date +%s) - t0 )) s"; else say "FAIL (exit status $rc) after $(( $(date +%s) - t0 )) s"; fi
+  exit "$rc"
+}
+trap cleanup EXIT
+trap 'exit 130' INT
+trap 'exit 143' TERM
+
+start_daemon() {  # name, command...
+  local name=$1
+  shift
+  "$@" &
+  daemon_pids+=($!)
+  daemon_names+=("$name")
+  say "started $name (pid $!)"
+}
+
+mkdir -p "$T"/{etc,munge,state,spool,log,run,jobs}
+chmod 700 "$T/munge"
+host=$(hostname -s)
+read -r ctld_port slurmd_port < <("$PY" -c '
+import socket
+s = [socket.socket() for _ in range(2)]
+for x in s: x.bind(("127.0.0.1", 0))
+print(*[x.getsockname()[1] for x in s])')
+
+# munge: a private key and socket; slurm.conf points at the socket.
+dd if=/dev/urandom of="$T/munge/munge.key" bs=1024 count=1 status=none
+chmod 400 "$T/munge/munge.key"
+start_daemon munged munged -F --force --socket="$T/munge/munge.socket" \
+  --key-file="$T/munge/munge.key" --pid-file="$T/run/munged.pid" \
+  --log-file="$T/log/munged.log" --seed-file="$T/munge/munged.seed"
+for _ in $(seq 100); do [[ -S "$T/munge/munge.socket" ]] && break; sleep 0.1; done
+munge -S "$T/munge/munge.socket" -n | unmunge -S "$T/munge/munge.socket" >/dev/null
+say "munged answers on $T/munge/munge.socket"
+
+cat >"$T/etc/slurm.conf" <<EOF
+# Test cluster of slurm/test-local-slurm.sh: one node, loopback only.
+ClusterName=poundtest
+SlurmctldHost=$host(127.0.0.1)
+SlurmctldPort=$ctld_port
+SlurmdPort=$slurmd_port
+CommunicationParameters=NoInAddrAny
+AuthType=auth/munge
+AuthInfo=socket=$T/munge/munge.socket
+CredType=cred/munge
+SlurmUser=root
+SlurmdUser=root
+StateSaveLocation=$T/state
+SlurmdSpoolDir=$T/spool
+SlurmctldPidFile=$T/run/slurmctld.pid
+SlurmdPidFile=$T/run/slurmd.pid
+SlurmctldLogFile=$T/log/slurmctld.log
+SlurmdLogFile=$T/log/slurmd.log
+SlurmctldDebug=info
+SlurmdDebug=info
+ProctrackType=proctrack/pgid
+TaskPlugin=task/none
+SelectType=select/cons_tres
+SelectTypeParameters=CR_Core
+SchedulerType=sched/backfill
+SwitchType=switch/none
+MpiDefault=none
+AccountingStorageType=accounting_storage/none
+JobAcctGatherType=jobacct_gather/none
+JobCompType=jobcomp/none
+MailProg=/bin/true
+ReturnToService=2
+MinJobAge=3600
+KillWait=30
+InactiveLimit=0
+PlugStackConfig=$T/etc/plugstack.conf
+NodeName=$host NodeAddr=127.0.0.1 NodeHostname=$host CPUs=2 RealMemory=4000 State=UNKNOWN
+PartitionName=test Nodes=$host Default=YES MaxTime=INFINITE State=UP
+EOF
+: >"$T/etc/plugstack.conf"
+export SLURM_CONF=$T/etc/slurm.conf
+start_daemon slurmctld slurmctld -D -c -f "$SLURM_CONF"
+start_daemon slurmd slurmd -D -f "$SLURM_CONF" -N "$host"
+for _ in $(seq 120); do
+  state=$(sinfo -h -N -o %T 2>/dev/null || true)
+  [[ "$state" == idle ]] && break
+  sleep 0.5
+done
+[[ "$state" == idle ]] || { echo "test-local-slurm: node state '$state', not idle" >&2; exit 1; }
+say "slurm is up: node $host idle (slurmctld port $ctld_port, slurmd port $slurmd_port)"
+
+# Jobs inherit this environment (sbatch --export=ALL): SLURM_CONF, POUND and, as root in CI,
+# Open MPI's permission to run as root (the user-facing scripts do not set it).
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+export POUND_PYTHON=$PY
+
+# ---------------------------------------------------------------- helpers
+J=$T/jobs
+checks=0
+ok() { checks=$((checks + 1)); say "ok $checks - $*"; }
+die() { say "not ok - $*"; exit 1; }
+
+# job_field ID FIELD: FIELD=value from scontrol (first record).
+job_field() { scontrol show job "$1" -o 2>/dev/null | head -n 1 | tr ' ' '\n' | sed -n "s/^$2=//p"; }
+# wait_job ID TIMEOUT: waits until no record of the job (or its array tasks) is pending or running.
+wait_job() {
+  local id=$1 limit=$2 s=0
+  while [[ -n "$(squeue -h -j "$id" -o %i 2>/dev/null)" ]]; do
+    (( s >= limit )) && die "job $id still queued or running after $limit s"
+    sleep 1
+    s=$((s + 1))
+  done
+}
+show_log() { echo "----- $1"; cat "$1" 2>/dev/null || echo "(missing)"; echo "-----"; }
+expect_job() {  # ID STATE EXIT LOG
+  local st ec
+  st=$(job_field "$1" JobState)
+  ec=$(job_field "$1" ExitCode)
+  if [[ "$st" != "$2" || "$ec" != "$3" ]]; then
+    show_log "$4"
+    die "job $1: JobState=$st ExitCode=$ec, expected $2 $3"
+  fi
+}
+
+submit() { sbatch --parsable -D "$J" "$@" | cut -d';' -f1; }
+
+# ---------------------------------------------------------------- 1. a complete run (srun)
+say "study: $study with --samples $samples; binary $POUND"
+ref=$J/ref.h5
+a=$(submit --nodes=1 --ntasks-per-node=2 --time=10 -o "$J/ref.out" \
+  slurm/campaign.sbatch "$study" "$ref" --samples "$samples")
+say "job $a: campaign.sbatch, 2 ranks, full campaign (reference)"
+wait_job "$a" 400
+expect_job "$a" COMPLETED 0:0 "$J/ref.out"
+[[ -f "$ref" && ! -e "$ref.journal" ]] || { show_log "$J/ref.out"; die "reference: no $ref or a journal left"; }
+grep -q "campaign: done: $samples samples, 0 failed" "$J/ref.out" || { show_log "$J/ref.out"; die "reference: no 'done' line"; }
+"$PY" "$parts_py" check "$ref" >/dev/null || die "reference: sample ids"
+ok "campaign.sbatch (srun --mpi=pmix, 2 ranks) completed: JobState=COMPLETED ExitCode=0:0, $samples samples in $(job_field "$a" RunTime)"
+
+# ---------------------------------------------------------------- 2. time limit, signal, resume
+cut=$J/cut.h5
+b=$(submit --nodes=1 --ntasks-per-node=2 --time=1 --signal=B:USR1@50 -o "$J/cut-1.out" \
+  slurm/campaign.sbatch "$study" "$cut" --samples "$samples")
+say "job $b: campaign.sbatch with --time=1 --signal=B:USR1@50 (shorter than the campaign)"
+wait_job "$b" 200
+expect_job "$b" FAILED 75:0 "$J/cut-1.out"
+grep -q "received SIGUSR1" "$J/cut-1.out" && grep -q "campaign: interrupted after" "$J/cut-1.out" \
+  || { show_log "$J/cut-1.out"; die "job $b did not stop on SIGUSR1"; }
+grep -q "DUE TO TIME LIMIT" "$J/cut-1.out" && { show_log "$J/cut-1.out"; die "job $b reached its time limit"; }
+[[ -f "$cut.journal" && ! -e "$cut" ]] || die "job $b: expected the journal and no result file"
+ok "job $b stopped on Slurm's SIGUSR1 before its time limit: $(grep -o 'interrupted after [0-9]* of [0-9]* samples' "$J/cut-1.out"), exit 75, journal kept (RunTime $(job_field "$b" RunTime))"
+
+jsize=$(stat -c %s "$cut.journal")
+c=$(submit --nodes=1 --ntasks-per-node=2 --time=10 -o "$J/cut-2.out" \
+  slurm/campaign-mpirun.sbatch "$study" "$cut" --samples "$samples")
+say "job $c: campaign-mpirun.sbatch, resubmitted; stopped with scancel --signal=USR1 --batch once it runs"
+for _ in $(seq 600); do
+  [[ -f "$cut.journal" ]] && (( $(stat -c %s "$cut.journal") > jsize )) && break
+  [[ -z "$(squeue -h -j "$c" -o %i)" ]] && break
+  sleep 0.2
+done
+scancel --signal=USR1 --batch "$c"
+wait_job "$c" 200
+expect_job "$c" FAILED 75:0 "$J/cut-2.out"
+grep -q "found .* resuming" "$J/cut-2.out" && grep -q "(resuming)" "$J/cut-2.out" \
+  && grep -q "received SIGUSR1" "$J/cut-2.out" && grep -q "campaign: interrupted after" "$J/cut-2.out" \
+  || { show_log "$J/cut-2.out"; die "job $c did not resume and stop on SIGUSR1"; }
+ok "job $c (mpirun) resumed the journal and stopped on scancel --signal=USR1 --batch: $(grep -o 'interrupted after [0-9]* of [0-9]* samples' "$J/cut-2.out"), exit 75"
+
+d=$(submit --nodes=1 --ntasks-per-node=2 --time=10 -o "$J/cut-3.out" \
+  slurm/campaign-mpirun.sbatch "$study" "$cut" --samples "$samples")
+say "job $d: campaign-mpirun.sbatch, resubmitted again to complete it"
+wait_job "$d" 400
+expect_job "$d" COMPLETED 0:0 "$J/cut-3.out"
+[[ -f "$cut" && ! -e "$cut.journal" ]] || { show_log "$J/cut-3.out"; die "job $d: no complete $cut"; }
+ok "job $d resumed and completed the campaign"
+"$PY" "$parts_py" check "$cut" || die "resumed file: sample ids"
+ok "resumed file holds every sample exactly once"
+"$PY" "$parts_py" compare "$cut" "$ref" || die "the resumed file differs from the uninterrupted run"
+ok "resumed file equals the uninterrupted run (/samples, /response)"
+
+# ---------------------------------------------------------------- 3. job array + merge
+merged=$J/merged.h5
+ids=$(cd "$J" && "$repo/slurm/submit-array.sh" --ntasks=1 --time=10 -o "$J/chunk-%a.out" -- \
+  2 "$study" "$merged" --samples "$samples")
+read -r arr mrg <<<"$ids"
+[[ -n "$arr" && -n "$mrg" ]] || die "submit-array.sh printed '$ids', not two job ids"
+say "array job $arr (2 chunks, 1 rank each) and merge job $mrg submitted by submit-array.sh"
+wait_job "$arr" 400
+for k in 0 1; do
+  expect_job "${arr}_$k" COMPLETED 0:0 "$J/chunk-$k.out"
+  lohi=$("$PY" "$parts_py" range --chunk "$k" --chunks 2 --samples "$samples")
+  grep -q "chunk $k of 2 = samples \[${lohi% *}, ${lohi#* })" "$J/chunk-$k.out" \
+    || { show_log "$J/chunk-$k.out"; die "chunk $k: no seeding line"; }
+done
+ok "array tasks ${arr}_0 and ${arr}_1 completed, each on its own half of the samples"
+wait_job "$mrg" 200
+expect_job "$mrg" COMPLETED 0:0 "$J/pound-merge-$mrg.out"
+[[ -f "$merged" ]] || die "no merged file"
+ok "merge job $mrg completed"
+"$PY" "$parts_py" check "$merged" || die "merged file: sample ids"
+"$PY" "$parts_py" compare "$merged" "$ref" || die "the merged file differs from the single run"
+ok "merged file equals the single run (/samples, /response)"
+
+say "$checks checks hold"

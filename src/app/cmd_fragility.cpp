@@ -1,0 +1,242 @@
+// pound fragility --input RUN.h5 [--out DIR] [--json]: lognormal fragility curves with and
+// without pounding from a campaign result file, their bootstrap bands, the shift of the median
+// capacity by pounding (printed first) and the rank sensitivity of the amplification. Parses
+// options, calls src/fragility, reports; the campaign file is opened read-only and the results
+// go to DIR (default RUN-fragility/ beside the input), each file written atomically.
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "app/commands.hpp"
+#include "core/error.hpp"
+#include "fragility/campaign_reader.hpp"
+#include "fragility/fragility_analysis.hpp"
+#include "fragility/report_files.hpp"
+#include "io/json.hpp"
+#include "io/options.hpp"
+#include "motion/ground_motion.hpp"
+
+namespace pound::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<OptionSpec> specs() {
+  return {
+      {"input", "", "", "campaign result file (HDF5) of 'pound campaign --out'"},
+      {"out", "", "", "output folder (default: RUN-fragility/ beside RUN.h5)"},
+      {"drift-limits", "-", "0.005, 0.01, 0.02, 0.025",
+       "damage-state limits of the peak inter-storey drift ratio (0.01 = 1 %)"},
+      {"disp-limits", "m", "", "limits of the peak floor displacement (none: no curves)"},
+      {"accel-limits", "m/s^2", "", "limits of the peak absolute floor acceleration (none: no curves)"},
+      {"force-limits", "N", "", "limits of the peak pounding force (none: no curves)"},
+      {"replicates", "-", "1000", "bootstrap replicates of the 90 % bands"},
+      {"seed", "-", "1", "seed of the bootstrap draws"},
+      {"json", "", "", "print one JSON object instead of the tables", true},
+  };
+}
+
+std::vector<double> limits(const Options& o, const std::string& key) {
+  if (!o.has(key)) return {};
+  const auto v = o.get_doubles(key);
+  for (double x : v)
+    if (!(x > 0)) throw o.invalid(key, "valid: a list of limits > 0 in SI units");
+  return v;
+}
+
+std::string fmt(const char* f, double x) {
+  if (!std::isfinite(x)) return "-";
+  char b[64];
+  std::snprintf(b, sizeof b, f, x);
+  return b;
+}
+
+// A limit for people: drift in %, the others in their SI unit.
+std::string limit_text(Edp e, double x) {
+  return e == Edp::drift ? fmt("%.3g %%", 100 * x) : fmt("%.4g ", x) + unit_of(e);
+}
+
+void print_text(const CampaignData& c, const FragilityReport& r, const std::vector<std::string>& files) {
+  const std::string im = c.intensity_measure == "sa" ? "Sa(T1)" : "PGA";
+  std::printf("Shift of the median capacity by pounding: theta_pounding / theta_free (%s, 90 %% bootstrap band)\n",
+              im.c_str());
+  std::printf("  %-12s %-6s %-10s %8s  %-17s %12s %12s\n", "building", "edp", "limit", "ratio",
+              "band", "pounding [g]", "free [g]");
+  for (std::size_t k = 0, j = 0; k < r.shifts.size(); ++k) {
+    const auto& s = r.shifts[k];
+    while (j < r.curves.size() && !(r.curves[j].building == s.building && r.curves[j].edp == s.edp &&
+                                    r.curves[j].limit == s.limit && r.curves[j].pounding))
+      ++j;
+    const auto& p = r.curves[j].fit;
+    const auto& f = r.curves[j + 1].fit;
+    std::printf("  %-12s %-6s %-10s %8s  [%6s, %6s] %12s %12s\n", c.building_names[s.building].c_str(),
+                to_string(s.edp), limit_text(s.edp, s.limit).c_str(), fmt("%.3f", s.ratio).c_str(),
+                fmt("%.3f", s.ci.lo).c_str(), fmt("%.3f", s.ci.hi).c_str(),
+                p.finite() ? fmt("%.4f", p.theta / kGravity).c_str() : to_string(p.status),
+                f.finite() ? fmt("%.4f", f.theta / kGravity).c_str() : to_string(f.status));
+  }
+  std::printf("\nCurves: P(EDP > limit | %s = x) = Phi(ln(x / theta) / beta), maximum likelihood "
+              "(Baker 2015)\n", im.c_str());
+  std::printf("  %-12s %-6s %-10s %-5s %-16s %10s %19s %7s %17s %9s\n", "building", "edp", "limit",
+              "pound", "status", "theta [g]", "90 % band [g]", "beta", "90 % band", "exceed");
+  for (const auto& k : r.curves) {
+    long n = 0, z = 0;
+    for (const auto& o : k.observed) n += o.n, z += o.z;
+    const bool f = k.fit.finite();
+    std::printf("  %-12s %-6s %-10s %-5s %-16s %10s [%7s, %7s] %7s [%6s, %6s] %4ld/%-4ld\n",
+                c.building_names[k.building].c_str(), to_string(k.edp),
+                limit_text(k.edp, k.limit).c_str(), k.pounding ? "yes" : "no",
+                to_string(k.fit.status), f ? fmt("%.4f", k.fit.theta / kGravity).c_str() : "-",
+                f ? fmt("%.4f", k.theta_ci.lo / kGravity).c_str() : "-",
+                f ? fmt("%.4f", k.theta_ci.hi / kGravity).c_str() : "-",
+                f ? fmt("%.3f", k.fit.beta).c_str() : "-", f ? fmt("%.3f", k.beta_ci.lo).c_str() : "-",
+                f ? fmt("%.3f", k.beta_ci.hi).c_str() : "-", z, n);
+  }
+  std::printf("\nSensitivity of the amplification (pounding / free) to the sampled parameters, "
+              "ranked by |PRCC|\n");
+  std::printf("  %-12s %-20s %-24s %9s %9s %8s\n", "building", "response", "parameter", "Spearman",
+              "PRCC", "samples");
+  for (const auto& s : r.sensitivity)
+    std::printf("  %-12s %-20s %-24s %9s %9s %8zu\n", c.building_names[s.building].c_str(),
+                s.response.c_str(), s.parameter.c_str(), fmt("%+.3f", s.spearman).c_str(),
+                fmt("%+.3f", s.prcc).c_str(), s.samples);
+  if (!r.unranked.empty()) {
+    std::printf("  (not ranked, labels:");
+    for (const auto& u : r.unranked) std::printf(" %s", u.c_str());
+    std::printf(")\n");
+  }
+  std::printf("\nFiles:");
+  for (const auto& f : files) std::printf(" %s", f.c_str());
+  std::printf("\n");
+}
+
+void interval(JsonWriter& w, const std::string& key, double lo, double hi, bool finite) {
+  w.key(key);
+  if (!finite || !std::isfinite(lo) || !std::isfinite(hi)) {
+    w.null();
+    return;
+  }
+  w.array({lo, hi});
+}
+
+void print_json(const CampaignData& c, const FragilityReport& r, const FragilityRunInfo& info,
+                const std::string& dir, const std::vector<std::string>& files) {
+  JsonWriter w;
+  w.begin_object();
+  w.field("input", info.input).field("out", dir);
+  w.field("intensity_measure", c.intensity_measure).field("im_units", "m/s^2");
+  w.field("design", r.stripes ? "stripes" : "continuous");
+  w.field("samples", long(r.samples)).field("failed", long(r.failed)).field("used", long(r.used));
+  w.field("bootstrap_replicates", info.replicates).field("bootstrap_seed", info.seed);
+  w.key("building_names").begin_array();
+  for (const auto& n : c.building_names) w.value(n);
+  w.end_array();
+  w.key("shift").begin_array();
+  for (const auto& s : r.shifts) {
+    w.begin_object().field("building", long(s.building)).field("edp", to_string(s.edp));
+    w.field("limit", s.limit).field("theta_ratio", s.ratio);
+    interval(w, "theta_ratio_ci90", s.ci.lo, s.ci.hi, std::isfinite(s.ratio));
+    w.end_object();
+  }
+  w.end_array();
+  w.key("curves").begin_array();
+  for (const auto& k : r.curves) {
+    const bool f = k.fit.finite();
+    long n = 0, z = 0;
+    for (const auto& o : k.observed) n += o.n, z += o.z;
+    w.begin_object().field("building", long(k.building)).field("edp", to_string(k.edp));
+    w.field("limit", k.limit).field("pounding", k.pounding).field("status", to_string(k.fit.status));
+    w.key("theta");
+    f ? w.value(k.fit.theta) : w.null();
+    w.key("beta");
+    f ? w.value(k.fit.beta) : w.null();
+    interval(w, "theta_ci90", k.theta_ci.lo, k.theta_ci.hi, f);
+    interval(w, "beta_ci90", k.beta_ci.lo, k.beta_ci.hi, f);
+    interval(w, "theta_asymptotic90", k.theta_asym_lo, k.theta_asym_hi, f);
+    interval(w, "beta_asymptotic90", k.beta_asym_lo, k.beta_asym_hi, f);
+    w.field("bootstrap_finite", long(k.theta_ci.finite)).field("analyses", n).field("exceedances", z);
+    w.end_object();
+  }
+  w.end_array();
+  w.key("sensitivity").begin_array();
+  for (const auto& s : r.sensitivity)
+    w.begin_object()
+        .field("building", long(s.building))
+        .field("response", s.response)
+        .field("parameter", s.parameter)
+        .field("spearman", s.spearman)
+        .field("prcc", s.prcc)
+        .field("samples", long(s.samples))
+        .end_object();
+  w.end_array();
+  w.key("files").begin_array();
+  for (const auto& f : files) w.value(f);
+  w.end_array();
+  w.end_object();
+  std::cout << w.str() << "\n";
+}
+
+}  // namespace
+
+int run_fragility(int argc, const char* const* argv) {
+  Options opt("fragility",
+              "Lognormal fragility curves with and without pounding from a campaign result file "
+              "(maximum likelihood, Baker 2015), bootstrap bands, rank sensitivity.",
+              specs());
+  opt.parse(argc, argv);
+  if (opt.help_requested()) {
+    std::cout << opt.help_text();
+    return 0;
+  }
+  if (!opt.given("input")) throw InputError("command line: --input RUN.h5 is required");
+  const std::string input = opt.get_path("input");
+  FragilitySettings s;
+  s.drift_limits = limits(opt, "drift-limits");
+  s.disp_limits = limits(opt, "disp-limits");
+  s.accel_limits = limits(opt, "accel-limits");
+  s.force_limits = limits(opt, "force-limits");
+  const long reps = opt.get_int("replicates");
+  if (reps < 10 || reps > 100000) throw opt.invalid("replicates", "valid: 10 to 100000");
+  const long seed = opt.get_int("seed");
+  if (seed < 0) throw opt.invalid("seed", "valid: a whole number >= 0");
+  s.bootstrap.replicates = int(reps);
+  s.bootstrap.seed = std::uint64_t(seed);
+  if (s.drift_limits.empty() && s.disp_limits.empty() && s.accel_limits.empty() &&
+      s.force_limits.empty())
+    throw opt.invalid("drift-limits", "give at least one list of limits");
+
+  std::string dir;
+  if (opt.given("out")) {
+    dir = opt.get_path("out");
+  } else {
+    fs::path p(input);
+    dir = (p.parent_path() / (p.stem().string() + "-fragility")).string();
+  }
+  const CampaignData c = read_campaign(input);
+  const FragilityReport r = analyse_fragility(c, s);
+
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec || !fs::is_directory(dir))
+    throw InputError(opt.where("out") + ": cannot create the folder " + dir);
+  for (const char* name : {"curves.csv", "shift.csv", "observations.csv", "sensitivity.csv",
+                           "fragility.h5"})
+    if (fs::equivalent(fs::path(dir) / name, input, ec))
+      throw InputError(opt.where("out") + ": " + dir + "/" + name +
+                       " is the campaign file; choose another output folder");
+  FragilityRunInfo info{input, int(reps), std::to_string(seed), opt.resolved_text()};
+  const auto files = write_fragility_files(dir, c, r, info);
+  if (opt.flag("json"))
+    print_json(c, r, info, dir, files);
+  else
+    print_text(c, r, files);
+  if (r.failed)
+    std::fprintf(stderr, "fragility: %zu of %zu samples failed and are excluded\n", r.failed,
+                 r.samples);
+  return 0;
+}
+
+}  // namespace pound::app

@@ -1,0 +1,48 @@
+#pragma once
+// Bootstrap confidence bands of fragility fits (Efron & Tibshirani 1993, percentile method;
+// Baker 2015 section "Uncertainty in fitted fragility functions"). A replicate redraws, with
+// replacement, as many analyses from each intensity stripe as the stripe holds (resampling
+// within stripes keeps the experimental design fixed), or from all analyses when the
+// intensities are continuous. Every curve sees the same redrawn analyses, so ratios of two
+// curves' parameters (theta with pounding / theta without) get bands as well.
+// Draws come from CounterRng(seed, stream_id("fragility.bootstrap")).uniform(replicate, k):
+// the same seed gives the same bands on any machine.
+#include <cstdint>
+#include <vector>
+
+#include "fragility/lognormal_fit.hpp"
+
+namespace pound {
+
+/// Where each analysis sits: its intensity and, for multiple-stripe designs, its stripe.
+struct ExceedanceDesign {
+  std::vector<double> im;      ///< per analysis [m/s^2]
+  std::vector<int> stripe;     ///< per analysis: stripe index into `levels`, or -1 (continuous)
+  std::vector<double> levels;  ///< stripe intensities [m/s^2]; empty when continuous
+  bool stripes() const { return !levels.empty(); }
+};
+
+/// The observations of the analyses `rows` (all when empty): one per stripe with its counts,
+/// or one per analysis (n = 1) when the intensities are continuous. `exceed` is per analysis.
+std::vector<Observation> observations(const ExceedanceDesign& d, const std::vector<char>& exceed,
+                                      const std::vector<std::size_t>& rows = {});
+
+struct BootstrapSettings {
+  int replicates = 1000;    ///< bootstrap replicates [-]
+  std::uint64_t seed = 1;   ///< generator seed
+};
+
+/// fits[c][r]: curve c (outcomes[c], per analysis) fitted to replicate r.
+std::vector<std::vector<LognormalFit>> bootstrap_fits(
+    const ExceedanceDesign& d, const std::vector<std::vector<char>>& outcomes,
+    const BootstrapSettings& s);
+
+struct Interval {
+  double lo, hi;  ///< NaN when no value was finite
+  int finite = 0; ///< values that entered
+};
+/// Central percentile interval holding `confidence` (e.g. 0.90) of the finite values
+/// (linear interpolation between order statistics); non-finite values are dropped.
+Interval percentile_interval(std::vector<double> values, double confidence);
+
+}  // namespace pound

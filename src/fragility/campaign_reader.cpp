@@ -1,0 +1,188 @@
+#include "fragility/campaign_reader.hpp"
+
+#include <hdf5.h>
+
+#include <cmath>
+#include <sstream>
+
+#include "core/error.hpp"
+#include "io/options.hpp"
+
+namespace pound {
+namespace {
+
+// Closes an HDF5 identifier with the matching function at scope exit.
+struct Handle {
+  hid_t id;
+  herr_t (*close)(hid_t);
+  ~Handle() {
+    if (id >= 0) close(id);
+  }
+};
+
+class Reader {
+ public:
+  explicit Reader(const std::string& path) : path_(path) {
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+    if (H5Fis_hdf5(path.c_str()) <= 0)
+      throw InputError(path + ": cannot open as an HDF5 file; give a campaign result file "
+                              "written by 'pound campaign --out'");
+    file_ = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    if (file_ < 0) throw InputError(path + ": cannot open for reading");
+  }
+  ~Reader() { H5Fclose(file_); }
+  hid_t id() const { return file_; }
+
+  bool exists(const std::string& p) const {
+    return H5Lexists(file_, p.c_str(), H5P_DEFAULT) > 0;
+  }
+
+  // A dataset of doubles (any numeric type converts) with its dimensions.
+  std::vector<double> doubles(const std::string& p, std::vector<hsize_t>* dims = nullptr) const {
+    if (!exists(p)) throw missing(p);
+    Handle ds{H5Dopen2(file_, p.c_str(), H5P_DEFAULT), H5Dclose};
+    Handle sp{H5Dget_space(ds.id), H5Sclose};
+    const int rank = H5Sget_simple_extent_ndims(sp.id);
+    std::vector<hsize_t> d(std::size_t(std::max(rank, 0)));
+    H5Sget_simple_extent_dims(sp.id, d.data(), nullptr);
+    hsize_t count = 1;
+    for (hsize_t x : d) count *= x;
+    std::vector<double> v(count);
+    if (count && H5Dread(ds.id, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) < 0)
+      throw InputError(path_ + ": cannot read " + p + " as numbers");
+    if (dims) *dims = d;
+    return v;
+  }
+
+  bool is_numeric(const std::string& p) const {
+    Handle ds{H5Dopen2(file_, p.c_str(), H5P_DEFAULT), H5Dclose};
+    Handle ty{H5Dget_type(ds.id), H5Tclose};
+    const H5T_class_t c = H5Tget_class(ty.id);
+    return c == H5T_FLOAT || c == H5T_INTEGER;
+  }
+
+  // A string attribute of the root ("" when absent), or a number written as text.
+  std::string text_attribute(const std::string& name) const {
+    if (H5Aexists(file_, name.c_str()) <= 0) return "";
+    Handle a{H5Aopen(file_, name.c_str(), H5P_DEFAULT), H5Aclose};
+    Handle ty{H5Aget_type(a.id), H5Tclose};
+    if (H5Tget_class(ty.id) != H5T_STRING) {
+      double x = 0;
+      H5Aread(a.id, H5T_NATIVE_DOUBLE, &x);
+      std::ostringstream s;
+      s << x;
+      return s.str();
+    }
+    Handle mem{H5Tcopy(H5T_C_S1), H5Tclose};
+    H5Tset_size(mem.id, H5T_VARIABLE);
+    H5Tset_cset(mem.id, H5Tget_cset(ty.id));  // ASCII and UTF-8 do not convert into each other
+    if (!H5Tis_variable_str(ty.id)) return "";
+    char* p = nullptr;
+    if (H5Aread(a.id, mem.id, &p) < 0 || !p) return "";
+    std::string s(p);
+    H5free_memory(p);
+    return s;
+  }
+
+  std::vector<std::string> members(const std::string& group) const {
+    std::vector<std::string> out;
+    Handle g{H5Gopen2(file_, group.c_str(), H5P_DEFAULT), H5Gclose};
+    H5G_info_t info;
+    if (g.id < 0 || H5Gget_info(g.id, &info) < 0) throw missing(group);
+    for (hsize_t i = 0; i < info.nlinks; ++i) {
+      const ssize_t len = H5Lget_name_by_idx(g.id, ".", H5_INDEX_NAME, H5_ITER_INC, i, nullptr,
+                                             0, H5P_DEFAULT);
+      std::string name(std::size_t(len), '\0');
+      H5Lget_name_by_idx(g.id, ".", H5_INDEX_NAME, H5_ITER_INC, i, name.data(),
+                         std::size_t(len) + 1, H5P_DEFAULT);
+      out.push_back(name);
+    }
+    return out;
+  }
+
+  InputError missing(const std::string& what) const {
+    return InputError(path_ + ": no " + what + "; not a campaign result file of 'pound campaign' "
+                              "(schema in src/campaign/result_file.hpp)");
+  }
+
+ private:
+  std::string path_;
+  hid_t file_ = -1;
+};
+
+FloorArray floor_array(const Reader& r, const std::string& p, std::size_t samples) {
+  std::vector<hsize_t> d;
+  FloorArray a;
+  a.v = r.doubles(p, &d);
+  if (d.size() != 3 || d[0] != samples)
+    throw InputError(r.missing(p + " of shape [samples, a, b]").what());
+  a.samples = d[0];
+  a.buildings = d[1];
+  a.floors = d[2];
+  return a;
+}
+
+std::vector<std::string> split_names(const std::string& s) {
+  std::vector<std::string> out;
+  std::stringstream in(s);
+  std::string item;
+  while (std::getline(in, item, ',')) {
+    const auto b = item.find_first_not_of(" \t"), e = item.find_last_not_of(" \t");
+    if (b != std::string::npos) out.push_back(item.substr(b, e - b + 1));
+  }
+  return out;
+}
+
+}  // namespace
+
+double FloorArray::max_over_floors(std::size_t s, std::size_t b) const {
+  double m = NAN;
+  for (std::size_t f = 0; f < floors; ++f) {
+    const double x = at(s, b, f);
+    if (std::isfinite(x) && !(x <= m)) m = x;
+  }
+  return m;
+}
+
+CampaignData read_campaign(const std::string& path) {
+  const Reader r(path);
+  CampaignData c;
+  c.path = path;
+  const auto status = r.doubles("/samples/status");
+  c.samples = status.size();
+  for (double s : status) c.status.push_back(std::isfinite(s) ? int(s) : 1);
+  c.im = r.doubles("/samples/im");
+  c.scale = r.doubles("/samples/scale");
+  if (c.im.size() != c.samples || c.scale.size() != c.samples)
+    throw r.missing("/samples/im and /samples/scale of one length per sample");
+  for (const auto& key : r.members("/samples")) {
+    if (key == "id" || key == "status" || key == "message" || key == "im" || key == "scale")
+      continue;
+    if (!r.is_numeric("/samples/" + key)) {
+      c.text_parameters.push_back(key);
+      continue;
+    }
+    c.parameters.push_back({key, r.doubles("/samples/" + key)});
+  }
+  c.disp_pounding = floor_array(r, "/response/peak_disp_pounding", c.samples);
+  c.disp_free = floor_array(r, "/response/peak_disp_free", c.samples);
+  c.drift_pounding = floor_array(r, "/response/peak_drift_pounding", c.samples);
+  c.drift_free = floor_array(r, "/response/peak_drift_free", c.samples);
+  c.accel_pounding = floor_array(r, "/response/peak_accel_pounding", c.samples);
+  c.accel_free = floor_array(r, "/response/peak_accel_free", c.samples);
+  c.peak_force = floor_array(r, "/response/peak_force", c.samples);
+
+  c.study = r.text_attribute("study");
+  c.intensity_measure = r.text_attribute("intensity_measure");
+  c.seed = r.text_attribute("seed");
+  const std::string period = r.text_attribute("im_period_s");
+  c.im_period = period.empty() ? 0.0 : std::atof(period.c_str());
+  c.building_names = split_names(r.text_attribute("building_names"));
+  const std::string levels = r.text_attribute("im_levels_mps2");
+  if (!levels.empty()) c.levels = parse_number_list(levels, path + ": attribute im_levels_mps2");
+  for (std::size_t b = c.building_names.size(); b < c.drift_pounding.buildings; ++b)
+    c.building_names.push_back("building" + std::to_string(b + 1));
+  return c;
+}
+
+}  // namespace pound

@@ -1,0 +1,52 @@
+#pragma once
+// Reads a campaign result file (schema in campaign/result_file.hpp) read-only: the sample
+// table, the peak responses with and without pounding and the root attributes the fragility
+// analysis needs. The file is opened with H5F_ACC_RDONLY and never modified.
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace pound {
+
+/// Responses per sample, building and floor, row-major [samples][buildings][floors]
+/// (NaN where a building has fewer floors or the sample failed).
+struct FloorArray {
+  std::size_t samples = 0, buildings = 0, floors = 0;
+  std::vector<double> v;
+  double at(std::size_t s, std::size_t b, std::size_t f) const {
+    return v[(s * buildings + b) * floors + f];
+  }
+  /// Largest finite value over the floors of building b in sample s (NaN if none).
+  double max_over_floors(std::size_t s, std::size_t b) const;
+};
+
+struct SampledColumn {
+  std::string key;             ///< study key under [sample], e.g. "gap", "k_factor"
+  std::vector<double> values;  ///< per sample (SI, as stored)
+};
+
+struct CampaignData {
+  std::string path;
+  std::string study;                 ///< resolved study text (root attribute "study")
+  std::string intensity_measure;     ///< "pga" or "sa"
+  double im_period = 0.0;            ///< T1 of Sa(T1) [s] (0 for PGA)
+  std::string seed;                  ///< study seed (root attribute)
+  std::vector<std::string> building_names;
+  std::vector<double> levels;        ///< stripe intensities [m/s^2]; empty: continuous IM
+  std::size_t samples = 0;
+  std::vector<int> status;           ///< 0 ok, else failed
+  std::vector<double> im;            ///< intensity of the scaled motion [m/s^2]
+  std::vector<double> scale;         ///< scale factor on the motion [-]
+  std::vector<SampledColumn> parameters;      ///< numeric sampled parameters
+  std::vector<std::string> text_parameters;   ///< sampled labels (e.g. model), not ranked
+  FloorArray disp_pounding, disp_free;    ///< peak floor displacement [m]
+  FloorArray drift_pounding, drift_free;  ///< peak inter-storey drift ratio [-]
+  FloorArray accel_pounding, accel_free;  ///< peak absolute floor acceleration [m/s^2]
+  /// Peak pounding force [samples][pairs][levels] [N]; pair p lies between buildings p, p+1.
+  FloorArray peak_force;
+};
+
+/// Throws InputError naming the file and what is missing when it is not a campaign file.
+CampaignData read_campaign(const std::string& path);
+
+}  // namespace pound

@@ -1,0 +1,252 @@
+#include "fragility/fragility_analysis.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/error.hpp"
+#include "fragility/rank_correlation.hpp"
+#include "sampling/normal.hpp"
+
+namespace pound {
+namespace {
+
+constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
+
+// Analyses that succeeded, with their stripe (nearest level within 1e-5 relative: the file
+// stores the levels as text with six decimals, the samples' IM in full precision).
+ExceedanceDesign design_of(const CampaignData& c, std::vector<std::size_t>* used) {
+  ExceedanceDesign d;
+  std::vector<double> sum(c.levels.size(), 0.0);
+  std::vector<long> count(c.levels.size(), 0);
+  for (std::size_t s = 0; s < c.samples; ++s) {
+    if (c.status[s] != 0 || !(c.im[s] > 0)) continue;
+    int stripe = -1;
+    for (std::size_t l = 0; l < c.levels.size(); ++l)
+      if (std::abs(c.im[s] - c.levels[l]) <= 1e-5 * c.levels[l]) stripe = int(l);
+    if (!c.levels.empty() && stripe < 0)
+      throw InputError(c.path + ": sample " + std::to_string(s) + " has IM " +
+                       std::to_string(c.im[s]) + " m/s^2, on none of the stripes im_levels_mps2");
+    used->push_back(s);
+    d.im.push_back(c.im[s]);
+    d.stripe.push_back(stripe);
+    if (stripe >= 0) sum[std::size_t(stripe)] += c.im[s], ++count[std::size_t(stripe)];
+  }
+  for (std::size_t l = 0; l < c.levels.size(); ++l)
+    d.levels.push_back(count[l] ? sum[l] / double(count[l]) : c.levels[l]);
+  return d;
+}
+
+// Observed fractions for the plots: the stripes, or about ten equal-count IM bins (geometric
+// mean IM of each bin) when the intensity is continuous.
+std::vector<Observation> observed(const ExceedanceDesign& d, const std::vector<char>& exceed) {
+  if (d.stripes()) return observations(d, exceed);
+  std::vector<std::size_t> order(d.im.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return d.im[a] < d.im[b]; });
+  const std::size_t bins = std::max<std::size_t>(1, std::min<std::size_t>(10, order.size() / 20));
+  std::vector<Observation> out;
+  for (std::size_t k = 0; k < bins; ++k) {
+    const std::size_t lo = k * order.size() / bins, hi = (k + 1) * order.size() / bins;
+    Observation o;
+    double log_sum = 0.0;
+    for (std::size_t i = lo; i < hi; ++i) {
+      log_sum += std::log(d.im[order[i]]);
+      ++o.n;
+      o.z += exceed[order[i]] ? 1 : 0;
+    }
+    if (o.n == 0) continue;
+    o.im = std::exp(log_sum / double(o.n));
+    out.push_back(o);
+  }
+  return out;
+}
+
+void rank_sensitivity(const CampaignData& c, const std::vector<std::size_t>& used,
+                      FragilityReport* r) {
+  // The candidate columns: numeric sampled parameters and the intensity measure.
+  std::vector<std::string> names;
+  std::vector<std::vector<double>> all;
+  for (const auto& p : c.parameters) {
+    names.push_back(p.key);
+    std::vector<double> v;
+    for (std::size_t s : used) v.push_back(p.values[s]);
+    all.push_back(v);
+  }
+  names.push_back("im");
+  {
+    std::vector<double> v;
+    for (std::size_t s : used) v.push_back(c.im[s]);
+    all.push_back(v);
+  }
+  const std::size_t nb = c.drift_pounding.buildings;
+  for (std::size_t b = 0; b < nb; ++b)
+    for (const Edp e : {Edp::disp, Edp::drift}) {
+      // Amplification = pounding / free, on the samples where both are finite and free > 0.
+      std::vector<std::size_t> rows;
+      std::vector<double> y;
+      for (std::size_t k = 0; k < used.size(); ++k) {
+        const double p = edp_value(c, e, true, used[k], b), f = edp_value(c, e, false, used[k], b);
+        if (std::isfinite(p) && std::isfinite(f) && f > 0) rows.push_back(k), y.push_back(p / f);
+      }
+      // Keep the columns that vary and are finite on those rows.
+      std::vector<std::vector<double>> cols;
+      std::vector<std::string> keep;
+      for (std::size_t j = 0; j < all.size(); ++j) {
+        std::vector<double> v;
+        bool ok = true;
+        for (std::size_t k : rows) ok &= std::isfinite(all[j][k]), v.push_back(all[j][k]);
+        if (!ok || v.empty() || *std::min_element(v.begin(), v.end()) == *std::max_element(v.begin(), v.end()))
+          continue;
+        cols.push_back(v);
+        keep.push_back(names[j]);
+      }
+      const std::size_t first = r->sensitivity.size();
+      for (std::size_t j = 0; j < cols.size(); ++j)
+        r->sensitivity.push_back({b, std::string(to_string(e)) + "_amplification", keep[j],
+                                  spearman(cols[j], y), partial_rank_correlation(cols, y, j),
+                                  y.size()});
+      std::stable_sort(r->sensitivity.begin() + long(first), r->sensitivity.end(),
+                       [](const SensitivityRow& a, const SensitivityRow& b2) {
+                         const double x = std::isfinite(a.prcc) ? std::abs(a.prcc) : -1;
+                         const double y2 = std::isfinite(b2.prcc) ? std::abs(b2.prcc) : -1;
+                         return x > y2;
+                       });
+    }
+}
+
+}  // namespace
+
+const char* to_string(Edp e) {
+  switch (e) {
+    case Edp::drift: return "drift";
+    case Edp::disp: return "disp";
+    case Edp::accel: return "accel";
+    case Edp::force: return "force";
+  }
+  return "unknown";
+}
+
+const char* unit_of(Edp e) {
+  switch (e) {
+    case Edp::drift: return "-";
+    case Edp::disp: return "m";
+    case Edp::accel: return "m/s^2";
+    case Edp::force: return "N";
+  }
+  return "";
+}
+
+double edp_value(const CampaignData& c, Edp e, bool pounding, std::size_t s, std::size_t b) {
+  switch (e) {
+    case Edp::drift: return (pounding ? c.drift_pounding : c.drift_free).max_over_floors(s, b);
+    case Edp::disp: return (pounding ? c.disp_pounding : c.disp_free).max_over_floors(s, b);
+    case Edp::accel: return (pounding ? c.accel_pounding : c.accel_free).max_over_floors(s, b);
+    case Edp::force: {
+      if (!pounding) return 0.0;
+      double m = kNan;
+      const std::size_t pairs = c.peak_force.buildings;  // [samples][pairs][levels]
+      for (std::size_t p = 0; p < pairs; ++p)
+        if (p == b || p + 1 == b) {
+          const double f = c.peak_force.max_over_floors(s, p);
+          if (std::isfinite(f) && !(f <= m)) m = f;
+        }
+      return std::isfinite(m) ? m : 0.0;  // a building without a neighbour: no force
+    }
+  }
+  return kNan;
+}
+
+FragilityReport analyse_fragility(const CampaignData& c, const FragilitySettings& s) {
+  FragilityReport r;
+  r.samples = c.samples;
+  std::vector<std::size_t> used;
+  const ExceedanceDesign d = design_of(c, &used);
+  r.used = used.size();
+  for (int st : c.status) r.failed += st != 0;
+  r.stripes = d.stripes();
+  if (used.empty()) throw InputError(c.path + ": no successful sample to fit");
+
+  // Every curve's outcomes, per used analysis.
+  std::vector<std::vector<char>> outcomes;
+  const std::pair<Edp, const std::vector<double>*> lists[] = {
+      {Edp::drift, &s.drift_limits}, {Edp::disp, &s.disp_limits},
+      {Edp::accel, &s.accel_limits}, {Edp::force, &s.force_limits}};
+  for (std::size_t b = 0; b < c.drift_pounding.buildings; ++b)
+    for (const auto& [edp, limits] : lists)
+      for (double limit : *limits) {
+        if (!(limit > 0)) throw InputError(std::string(to_string(edp)) + " limit " +
+                                           std::to_string(limit) + ": limits must be > 0");
+        for (const bool pounding : {true, false}) {
+          if (edp == Edp::force && !pounding) continue;  // no force without pounding
+          FragilityCurve fc;
+          fc.building = b;
+          fc.edp = edp;
+          fc.limit = limit;
+          fc.pounding = pounding;
+          std::vector<char> z(used.size());
+          for (std::size_t k = 0; k < used.size(); ++k)
+            z[k] = edp_value(c, edp, pounding, used[k], b) > limit;
+          fc.fit = fit_lognormal(observations(d, z));
+          fc.observed = observed(d, z);
+          r.curves.push_back(fc);
+          outcomes.push_back(z);
+        }
+      }
+
+  // IM grid of the bands: log-spaced over [min / 2, 2 max] of the analysed intensities.
+  const double lo = *std::min_element(d.im.begin(), d.im.end()) / 2;
+  const double hi = *std::max_element(d.im.begin(), d.im.end()) * 2;
+  for (std::size_t i = 0; i < s.grid_points; ++i)
+    r.grid.push_back(lo * std::pow(hi / lo, double(i) / double(std::max<std::size_t>(1, s.grid_points - 1))));
+
+  const auto reps = bootstrap_fits(d, outcomes, s.bootstrap);
+  const double zq = normal_quantile(0.5 * (1.0 + s.confidence));
+  for (std::size_t k = 0; k < r.curves.size(); ++k) {
+    FragilityCurve& fc = r.curves[k];
+    std::vector<double> th, be;
+    for (const auto& f : reps[k]) {
+      th.push_back(f.finite() ? f.theta : kNan);
+      be.push_back(f.finite() ? f.beta : kNan);
+    }
+    fc.theta_ci = percentile_interval(th, s.confidence);
+    fc.beta_ci = percentile_interval(be, s.confidence);
+    if (fc.fit.finite()) {
+      const double sl = std::sqrt(fc.fit.var_ln_theta), sb = std::sqrt(fc.fit.var_beta);
+      fc.theta_asym_lo = fc.fit.theta * std::exp(-zq * sl);
+      fc.theta_asym_hi = fc.fit.theta * std::exp(zq * sl);
+      fc.beta_asym_lo = fc.fit.beta - zq * sb;
+      fc.beta_asym_hi = fc.fit.beta + zq * sb;
+    } else {
+      fc.theta_asym_lo = fc.theta_asym_hi = fc.beta_asym_lo = fc.beta_asym_hi = kNan;
+    }
+    for (double x : r.grid) {
+      std::vector<double> p;
+      for (const auto& f : reps[k]) p.push_back(f.probability(x));
+      const Interval iv = percentile_interval(p, s.confidence);
+      fc.band_lo.push_back(iv.lo);
+      fc.band_hi.push_back(iv.hi);
+    }
+  }
+
+  // The shift: curves come in (pounding, free) pairs except force.
+  for (std::size_t k = 0; k + 1 < r.curves.size(); ++k) {
+    const FragilityCurve &p = r.curves[k], &f = r.curves[k + 1];
+    if (!p.pounding || f.pounding || p.edp != f.edp || p.limit != f.limit || p.building != f.building)
+      continue;
+    FragilityShift sh{p.building, p.edp, p.limit, kNan, {}};
+    if (p.fit.finite() && f.fit.finite()) sh.ratio = p.fit.theta / f.fit.theta;
+    std::vector<double> ratio;
+    for (std::size_t i = 0; i < reps[k].size(); ++i)
+      ratio.push_back(reps[k][i].finite() && reps[k + 1][i].finite()
+                          ? reps[k][i].theta / reps[k + 1][i].theta : kNan);
+    sh.ci = percentile_interval(ratio, s.confidence);
+    r.shifts.push_back(sh);
+  }
+
+  rank_sensitivity(c, used, &r);
+  r.unranked = c.text_parameters;
+  return r;
+}
+
+}  // namespace pound

@@ -1,0 +1,83 @@
+#pragma once
+// The fragility analysis of a campaign: engineering demand parameters (EDP) per sample and
+// building, lognormal fragility curves with and without pounding for every damage-state limit
+// (lognormal_fit.hpp), their bootstrap and asymptotic 90 % bands, the headline shift
+// theta_pounding / theta_free, and the rank sensitivity of the pounding amplification to the
+// sampled parameters (rank_correlation.hpp). Pure: data in, numbers out.
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "fragility/bootstrap.hpp"
+#include "fragility/campaign_reader.hpp"
+#include "fragility/lognormal_fit.hpp"
+
+namespace pound {
+
+/// Engineering demand parameters, each the maximum over the building's floors (storeys).
+enum class Edp {
+  drift,  ///< peak inter-storey drift ratio [-]
+  disp,   ///< peak floor displacement relative to the ground [m]
+  accel,  ///< peak absolute floor acceleration [m/s^2]
+  force   ///< peak pounding force on the building, over its pairs and levels [N]
+};
+const char* to_string(Edp e);
+const char* unit_of(Edp e);
+
+struct FragilitySettings {
+  std::vector<double> drift_limits{0.005, 0.01, 0.02, 0.025};  ///< [-] (ratio, not %)
+  std::vector<double> disp_limits;    ///< [m]; empty: no disp curves
+  std::vector<double> accel_limits;   ///< [m/s^2]; empty: no accel curves
+  std::vector<double> force_limits;   ///< [N]; empty: no force curves
+  BootstrapSettings bootstrap;        ///< replicates and seed
+  double confidence = 0.90;           ///< of the bands [-]
+  std::size_t grid_points = 120;      ///< IM points of the curve bands [-]
+};
+
+struct FragilityCurve {
+  std::size_t building = 0;  ///< 0-based
+  Edp edp = Edp::drift;
+  double limit = 0.0;        ///< damage-state limit [unit_of(edp)]
+  bool pounding = true;
+  LognormalFit fit;
+  Interval theta_ci, beta_ci;            ///< bootstrap percentile bands
+  double theta_asym_lo = 0, theta_asym_hi = 0;  ///< asymptotic: exp(ln theta -+ z sd)
+  double beta_asym_lo = 0, beta_asym_hi = 0;    ///< asymptotic: beta -+ z sd
+  std::vector<Observation> observed;     ///< per stripe (or per IM bin when continuous)
+  std::vector<double> band_lo, band_hi;  ///< bootstrap band of P on the report's grid
+};
+
+/// The headline: median ratio theta_pounding / theta_free for one building, EDP and limit.
+struct FragilityShift {
+  std::size_t building = 0;
+  Edp edp = Edp::drift;
+  double limit = 0.0;
+  double ratio = 0.0;  ///< NaN when either curve has no finite estimate
+  Interval ci;         ///< bootstrap band of the ratio (paired replicates)
+};
+
+struct SensitivityRow {
+  std::size_t building = 0;
+  std::string response;   ///< "disp_amplification" or "drift_amplification" (pounding / free)
+  std::string parameter;  ///< sampled key, or "im" (intensity measure)
+  double spearman = 0.0, prcc = 0.0;
+  std::size_t samples = 0;
+};
+
+struct FragilityReport {
+  std::size_t samples = 0, failed = 0, used = 0;  ///< analyses in the file, failed, fitted
+  bool stripes = true;                    ///< multiple stripes (else continuous IM)
+  std::vector<double> grid;               ///< IM grid of the bands [m/s^2]
+  std::vector<FragilityCurve> curves;
+  std::vector<FragilityShift> shifts;
+  std::vector<SensitivityRow> sensitivity;  ///< ranked by |PRCC| within building and response
+  std::vector<std::string> unranked;         ///< sampled labels left out (e.g. model)
+};
+
+/// Throws InputError when no sample succeeded or the limits are not positive.
+FragilityReport analyse_fragility(const CampaignData& c, const FragilitySettings& s);
+
+/// The EDP of sample s, building b (NaN where undefined).
+double edp_value(const CampaignData& c, Edp e, bool pounding, std::size_t s, std::size_t b);
+
+}  // namespace pound

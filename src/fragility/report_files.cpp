@@ -1,0 +1,175 @@
+#include "fragility/report_files.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+
+#include "core/error.hpp"
+#include "io/atomic_file.hpp"
+#include "io/h5.hpp"
+#include "pound/version.hpp"
+
+namespace pound {
+namespace {
+
+// A number, or an empty field for NaN / infinity.
+std::string num(double x) {
+  if (!std::isfinite(x)) return "";
+  char b[32];
+  std::snprintf(b, sizeof b, "%.10g", x);
+  return b;
+}
+
+std::string name_of(const CampaignData& c, std::size_t b) {
+  return b < c.building_names.size() ? c.building_names[b] : "building" + std::to_string(b + 1);
+}
+
+// Writes `text` to path atomically.
+void write_file(const std::string& path, const std::string& text) {
+  AtomicPath out(path);
+  {
+    std::ofstream f(out.temp(), std::ios::binary);
+    if (!f) throw InputError(path + ": cannot write; give a writable --out folder");
+    f << text;
+    f.flush();
+    if (!f) throw InputError(path + ": write failed");
+  }
+  out.commit();
+}
+
+std::string curves_csv(const CampaignData& c, const FragilityReport& r) {
+  std::string s =
+      "building,building_name,edp,unit,limit,pounding,status,theta_mps2,beta,"
+      "theta_ci90_lo,theta_ci90_hi,beta_ci90_lo,beta_ci90_hi,theta_asym90_lo,theta_asym90_hi,"
+      "beta_asym90_lo,beta_asym90_hi,bootstrap_finite,analyses,exceedances\n";
+  for (const auto& k : r.curves) {
+    long n = 0, z = 0;
+    for (const auto& o : k.observed) n += o.n, z += o.z;
+    const bool f = k.fit.finite();
+    s += std::to_string(k.building) + "," + name_of(c, k.building) + "," + to_string(k.edp) + "," +
+         unit_of(k.edp) + "," + num(k.limit) + "," + (k.pounding ? "true" : "false") + "," +
+         to_string(k.fit.status) + "," + num(f ? k.fit.theta : NAN) + "," +
+         num(f ? k.fit.beta : NAN) + "," + num(f ? k.theta_ci.lo : NAN) + "," +
+         num(f ? k.theta_ci.hi : NAN) + "," + num(f ? k.beta_ci.lo : NAN) + "," +
+         num(f ? k.beta_ci.hi : NAN) + "," + num(k.theta_asym_lo) + "," + num(k.theta_asym_hi) +
+         "," + num(k.beta_asym_lo) + "," + num(k.beta_asym_hi) + "," +
+         std::to_string(k.theta_ci.finite) + "," + std::to_string(n) + "," + std::to_string(z) +
+         "\n";
+  }
+  return s;
+}
+
+std::string shift_csv(const CampaignData& c, const FragilityReport& r) {
+  std::string s = "building,building_name,edp,unit,limit,ratio,ratio_ci90_lo,ratio_ci90_hi\n";
+  for (const auto& k : r.shifts)
+    s += std::to_string(k.building) + "," + name_of(c, k.building) + "," + to_string(k.edp) +
+         "," + unit_of(k.edp) + "," + num(k.limit) + "," + num(k.ratio) + "," + num(k.ci.lo) +
+         "," + num(k.ci.hi) + "\n";
+  return s;
+}
+
+std::string observations_csv(const FragilityReport& r) {
+  std::string s = std::string("building,edp,limit,") + (r.stripes ? "stripe" : "bin") +
+                  ",im_mps2,n,exceed_pounding,exceed_free\n";
+  for (std::size_t k = 0; k < r.curves.size(); ++k) {
+    const auto& p = r.curves[k];
+    if (!p.pounding) continue;
+    const bool paired = k + 1 < r.curves.size() && !r.curves[k + 1].pounding;
+    for (std::size_t j = 0; j < p.observed.size(); ++j)
+      s += std::to_string(p.building) + "," + to_string(p.edp) + "," + num(p.limit) + "," +
+           std::to_string(j) + "," + num(p.observed[j].im) + "," +
+           std::to_string(p.observed[j].n) + "," + std::to_string(p.observed[j].z) + "," +
+           (paired ? std::to_string(r.curves[k + 1].observed[j].z) : "") + "\n";
+  }
+  return s;
+}
+
+std::string sensitivity_csv(const CampaignData& c, const FragilityReport& r) {
+  std::string s = "building,building_name,response,rank,parameter,spearman,prcc,samples\n";
+  std::string last;
+  int rank = 0;
+  for (const auto& k : r.sensitivity) {
+    const std::string group = std::to_string(k.building) + k.response;
+    rank = group == last ? rank + 1 : 1;
+    last = group;
+    s += std::to_string(k.building) + "," + name_of(c, k.building) + "," + k.response + "," +
+         std::to_string(rank) + "," + k.parameter + "," + num(k.spearman) + "," + num(k.prcc) +
+         "," + std::to_string(k.samples) + "\n";
+  }
+  return s;
+}
+
+void write_h5(const std::string& path, const CampaignData& c, const FragilityReport& r,
+              const FragilityRunInfo& info) {
+  AtomicPath out(path);
+  {
+    h5::File f(out.temp());
+    const hid_t id = f.id();
+    h5::ensure_group(id, "/fragility");
+    h5::attribute(id, "/fragility", "input", info.input);
+    h5::attribute(id, "/fragility", "config", info.config);
+    h5::attribute(id, "/fragility", "engine_version", kVersion);
+    h5::attribute(id, "/fragility", "git_revision", kGitRevision);
+    h5::attribute(id, "/fragility", "bootstrap_seed", info.seed);
+    h5::attribute(id, "/fragility", "bootstrap_replicates", double(info.replicates));
+    h5::attribute(id, "/fragility", "samples", double(r.samples));
+    h5::attribute(id, "/fragility", "failed", double(r.failed));
+    h5::attribute(id, "/fragility", "used", double(r.used));
+    h5::attribute(id, "/fragility", "design", r.stripes ? "stripes" : "continuous");
+    h5::attribute(id, "/fragility", "intensity_measure", c.intensity_measure);
+    h5::attribute(id, "/fragility", "im_period_s", c.im_period);
+    std::string names;
+    for (const auto& n : c.building_names) names += (names.empty() ? "" : ", ") + n;
+    h5::attribute(id, "/fragility", "building_names", names);
+    h5::write(id, "/fragility/grid_im", r.grid, r.grid.size(), 0, "m/s^2");
+    for (std::size_t k = 0; k < r.curves.size(); ++k) {
+      const auto& cv = r.curves[k];
+      char g[48];
+      std::snprintf(g, sizeof g, "/fragility/curve%03zu", k);
+      h5::ensure_group(id, g);
+      h5::attribute(id, g, "building", double(cv.building));
+      h5::attribute(id, g, "edp", to_string(cv.edp));
+      h5::attribute(id, g, "limit", cv.limit);
+      h5::attribute(id, g, "limit_units", unit_of(cv.edp));
+      h5::attribute(id, g, "pounding", cv.pounding ? "true" : "false");
+      h5::attribute(id, g, "status", to_string(cv.fit.status));
+      const bool fin = cv.fit.finite();
+      h5::attribute(id, g, "theta", fin ? cv.fit.theta : NAN);
+      h5::attribute(id, g, "beta", fin ? cv.fit.beta : NAN);
+      h5::attribute(id, g, "theta_ci90_lo", fin ? cv.theta_ci.lo : NAN);
+      h5::attribute(id, g, "theta_ci90_hi", fin ? cv.theta_ci.hi : NAN);
+      h5::attribute(id, g, "beta_ci90_lo", fin ? cv.beta_ci.lo : NAN);
+      h5::attribute(id, g, "beta_ci90_hi", fin ? cv.beta_ci.hi : NAN);
+      std::vector<double> im, n, z, p;
+      for (const auto& o : cv.observed) im.push_back(o.im), n.push_back(double(o.n)), z.push_back(double(o.z));
+      for (double x : r.grid) p.push_back(cv.fit.probability(x));
+      const std::string base(g);
+      h5::write(id, base + "/observed_im", im, im.size(), 0, "m/s^2");
+      h5::write(id, base + "/observed_n", n, n.size(), 0, "-");
+      h5::write(id, base + "/observed_z", z, z.size(), 0, "-");
+      h5::write(id, base + "/probability", p, p.size(), 0, "-");
+      h5::write(id, base + "/band_lo", cv.band_lo, cv.band_lo.size(), 0, "-");
+      h5::write(id, base + "/band_hi", cv.band_hi, cv.band_hi.size(), 0, "-");
+    }
+    f.flush();
+  }
+  out.commit();
+}
+
+}  // namespace
+
+std::vector<std::string> write_fragility_files(const std::string& dir, const CampaignData& c,
+                                               const FragilityReport& r,
+                                               const FragilityRunInfo& info) {
+  const std::string d = dir.empty() || dir.back() == '/' ? dir : dir + "/";
+  const std::vector<std::string> paths = {d + "curves.csv", d + "shift.csv", d + "observations.csv",
+                                          d + "sensitivity.csv", d + "fragility.h5"};
+  write_file(paths[0], curves_csv(c, r));
+  write_file(paths[1], shift_csv(c, r));
+  write_file(paths[2], observations_csv(r));
+  write_file(paths[3], sensitivity_csv(c, r));
+  write_h5(paths[4], c, r, info);
+  return paths;
+}
+
+}  // namespace pound
