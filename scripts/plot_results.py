@@ -28,6 +28,7 @@ import matplotlib
 matplotlib.use("Agg")
 import h5py  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
+import matplotlib.ticker as ticker  # noqa: E402
 import numpy as np  # noqa: E402
 
 G = 9.80665  # m/s^2 per g
@@ -100,6 +101,9 @@ def plot_fragility(frag_path, out):
         ax.set_xscale("log")
         seen = np.concatenate([c["im"] for c in cs])
         ax.set_xlim(max(grid[0], seen.min() / 1.6), min(grid[-1], seen.max() * 1.6))
+        ax.xaxis.set_major_formatter(ticker.FormatStrFormatter("%g"))
+        ax.xaxis.set_minor_formatter(ticker.FuncFormatter(
+            lambda x, _: f"{x:g}" if str(f"{x:.0e}")[0] in "2345" else ""))
         ax.set_ylim(-0.02, 1.02)
         ax.set_xlabel(f"{im_name(measure)} [g]")
         ax.set_ylabel("P(EDP > limit) [-]")
