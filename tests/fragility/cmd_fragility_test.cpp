@@ -76,8 +76,8 @@ TEST(CmdFragility, JsonCurvesFilesAndUntouchedCampaign) {
                           "\"shift\":[", "\"curves\":[", "\"sensitivity\":[", "\"samples\":40"})
     EXPECT_NE(j.find(key), std::string::npos) << key;
   EXPECT_LT(j.find("\"shift\""), j.find("\"curves\""));  // the headline comes first
-  // The stiff building never reaches 2.5 % drift at 0.4 g in this study... or it does; either
-  // way a curve without a finite estimate must carry null, never a number, for theta and beta.
+  // Every curve without a finite estimate (status other than "ok") carries null for theta,
+  // never a number, and every "ok" curve a number.
   for (auto p = j.find("\"status\":\""); p != std::string::npos; p = j.find("\"status\":\"", p + 1)) {
     const bool ok = j.compare(p + 10, 3, "ok\"") == 0;
     const auto t = j.find("\"theta\":", p);
