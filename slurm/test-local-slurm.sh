@@ -8,7 +8,7 @@
 # used or changed), submits the real scripts on a small study and checks:
 #   1. campaign.sbatch (srun --mpi=pmix) runs a campaign to completion (the reference);
 #   2. a campaign.sbatch job with a time limit shorter than the campaign (--time=1 with
-#      --signal=B:USR1@50) is stopped by Slurm's signal, keeps its journal and exits 75;
+#      --signal=B:USR1@58) is stopped by Slurm's signal, keeps its journal and exits 75;
 #      campaign-mpirun.sbatch resumes it and is stopped again with
 #      `scancel --signal=USR1 --batch`; a third submission completes it; the final file has
 #      every sample exactly once and equals the reference (/samples, /response);
@@ -18,7 +18,10 @@
 # recorded) and removes the temporary folder, also when a check fails (POUND_SLURM_KEEP=1
 # keeps the folder for inspection).
 #
-# Environment: POUND (binary, default build/bin/pound), POUND_SLURM_TEST_SAMPLES (default 3000).
+# Environment: POUND (binary, default build/bin/pound); POUND_SLURM_TEST_SAMPLES (default: as
+# many samples as 2 ranks of this machine simulate in about 75 s, measured before the jobs,
+# at least 2400, so that the time-limited job surely outlives Slurm's signal, which Slurm's
+# 30 s periodic check delivers at most about 30 s after the job starts).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 repo=$(pwd)
@@ -32,7 +35,6 @@ if [[ ! -x "$POUND" ]]; then
   exit 1
 fi
 export POUND
-samples=${POUND_SLURM_TEST_SAMPLES:-3000}
 study=$repo/studies/campaign-smoke.ini
 PY=/usr/bin/python3
 parts_py=$repo/slurm/pound_parts.py
@@ -107,7 +109,7 @@ trap 'exit 143' TERM
 start_daemon() {  # name, command...
   local name=$1
   shift
-  "$@" &
+  "$@" >"$T/log/$name.console" 2>&1 &
   daemon_pids+=($!)
   daemon_names+=("$name")
   say "started $name (pid $!)"
@@ -205,6 +207,10 @@ wait_job() {
     s=$((s + 1))
   done
 }
+excerpt() {  # the scripts' own lines and the campaign's summary lines of a job output
+  grep -E 'pound-slurm\[|campaign: (done|interrupted|stop requested|.*already complete)|pound_parts:|CANCELLED' "$1" \
+    | sed 's/^/    | /' || true
+}
 show_log() { echo "----- $1"; cat "$1" 2>/dev/null || echo "(missing)"; echo "-----"; }
 expect_job() {  # ID STATE EXIT LOG
   local st ec
@@ -219,6 +225,18 @@ expect_job() {  # ID STATE EXIT LOG
 submit() { sbatch --parsable -D "$J" "$@" | cut -d';' -f1; }
 
 # ---------------------------------------------------------------- 1. a complete run (srun)
+if [[ -n "${POUND_SLURM_TEST_SAMPLES:-}" ]]; then
+  samples=$POUND_SLURM_TEST_SAMPLES
+else
+  # One rank, 150 samples, timed here (not through Slurm): 2 ranks do about twice as many.
+  ts=$(date +%s.%N)
+  "$POUND" campaign --config "$study" --out "$T/calibrate.h5" --samples 150 --quiet 2>/dev/null \
+    || die "calibration run of $POUND failed"
+  te=$(date +%s.%N)
+  rm -f "$T/calibrate.h5"
+  samples=$("$PY" -c "import math; r = 150 / ($te - $ts); print(min(20000, max(2400, math.ceil(2 * r * 75 / 100) * 100)))")
+  say "calibration: $(printf %.1f "$("$PY" -c "print(150 / ($te - $ts))")") samples/s on one rank -> $samples samples"
+fi
 say "study: $study with --samples $samples; binary $POUND"
 ref=$J/ref.h5
 a=$(submit --nodes=1 --ntasks-per-node=2 --time=10 -o "$J/ref.out" \
@@ -226,6 +244,7 @@ a=$(submit --nodes=1 --ntasks-per-node=2 --time=10 -o "$J/ref.out" \
 say "job $a: campaign.sbatch, 2 ranks, full campaign (reference)"
 wait_job "$a" 400
 expect_job "$a" COMPLETED 0:0 "$J/ref.out"
+excerpt "$J/ref.out"
 [[ -f "$ref" && ! -e "$ref.journal" ]] || { show_log "$J/ref.out"; die "reference: no $ref or a journal left"; }
 grep -q "campaign: done: $samples samples, 0 failed" "$J/ref.out" || { show_log "$J/ref.out"; die "reference: no 'done' line"; }
 "$PY" "$parts_py" check "$ref" >/dev/null || die "reference: sample ids"
@@ -233,11 +252,12 @@ ok "campaign.sbatch (srun --mpi=pmix, 2 ranks) completed: JobState=COMPLETED Exi
 
 # ---------------------------------------------------------------- 2. time limit, signal, resume
 cut=$J/cut.h5
-b=$(submit --nodes=1 --ntasks-per-node=2 --time=1 --signal=B:USR1@50 -o "$J/cut-1.out" \
+b=$(submit --nodes=1 --ntasks-per-node=2 --time=1 --signal=B:USR1@58 -o "$J/cut-1.out" \
   slurm/campaign.sbatch "$study" "$cut" --samples "$samples")
-say "job $b: campaign.sbatch with --time=1 --signal=B:USR1@50 (shorter than the campaign)"
+say "job $b: campaign.sbatch with --time=1 --signal=B:USR1@58 (shorter than the campaign)"
 wait_job "$b" 200
 expect_job "$b" FAILED 75:0 "$J/cut-1.out"
+excerpt "$J/cut-1.out"
 grep -q "received SIGUSR1" "$J/cut-1.out" && grep -q "campaign: interrupted after" "$J/cut-1.out" \
   || { show_log "$J/cut-1.out"; die "job $b did not stop on SIGUSR1"; }
 grep -q "DUE TO TIME LIMIT" "$J/cut-1.out" && { show_log "$J/cut-1.out"; die "job $b reached its time limit"; }
@@ -256,6 +276,7 @@ done
 scancel --signal=USR1 --batch "$c"
 wait_job "$c" 200
 expect_job "$c" FAILED 75:0 "$J/cut-2.out"
+excerpt "$J/cut-2.out"
 grep -q "found .* resuming" "$J/cut-2.out" && grep -q "(resuming)" "$J/cut-2.out" \
   && grep -q "received SIGUSR1" "$J/cut-2.out" && grep -q "campaign: interrupted after" "$J/cut-2.out" \
   || { show_log "$J/cut-2.out"; die "job $c did not resume and stop on SIGUSR1"; }
@@ -266,6 +287,7 @@ d=$(submit --nodes=1 --ntasks-per-node=2 --time=10 -o "$J/cut-3.out" \
 say "job $d: campaign-mpirun.sbatch, resubmitted again to complete it"
 wait_job "$d" 400
 expect_job "$d" COMPLETED 0:0 "$J/cut-3.out"
+excerpt "$J/cut-3.out"
 [[ -f "$cut" && ! -e "$cut.journal" ]] || { show_log "$J/cut-3.out"; die "job $d: no complete $cut"; }
 ok "job $d resumed and completed the campaign"
 "$PY" "$parts_py" check "$cut" || die "resumed file: sample ids"
@@ -283,6 +305,7 @@ say "array job $arr (2 chunks, 1 rank each) and merge job $mrg submitted by subm
 wait_job "$arr" 400
 for k in 0 1; do
   expect_job "${arr}_$k" COMPLETED 0:0 "$J/chunk-$k.out"
+  excerpt "$J/chunk-$k.out"
   lohi=$("$PY" "$parts_py" range --chunk "$k" --chunks 2 --samples "$samples")
   grep -q "chunk $k of 2 = samples \[${lohi% *}, ${lohi#* })" "$J/chunk-$k.out" \
     || { show_log "$J/chunk-$k.out"; die "chunk $k: no seeding line"; }
@@ -290,6 +313,7 @@ done
 ok "array tasks ${arr}_0 and ${arr}_1 completed, each on its own half of the samples"
 wait_job "$mrg" 200
 expect_job "$mrg" COMPLETED 0:0 "$J/pound-merge-$mrg.out"
+excerpt "$J/pound-merge-$mrg.out"
 [[ -f "$merged" ]] || die "no merged file"
 ok "merge job $mrg completed"
 "$PY" "$parts_py" check "$merged" || die "merged file: sample ids"

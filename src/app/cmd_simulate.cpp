@@ -14,7 +14,8 @@ namespace pound::app {
 namespace {
 
 void print_json(const RowSimulation& s, const BuildingRow& row,
-                const std::vector<sears::SlabPeaks>& slabs) {
+                const std::vector<sears::SlabPeaks>& slabs,
+                const std::vector<sears::SiteContacts>& phases) {
   JsonWriter w;
   w.begin_object().key("buildings").begin_array();
   for (std::size_t b = 0; b < row.buildings.size(); ++b) {
@@ -37,15 +38,18 @@ void print_json(const RowSimulation& s, const BuildingRow& row,
     w.end_array().end_object();
   }
   w.end_array().key("contacts").begin_array();
-  for (const auto& c : s.sites) {
+  for (std::size_t k = 0; k < s.sites.size(); ++k) {
+    const auto& c = s.sites[k];
     w.begin_object()
         .field("pair", c.pair)
         .field("floor", c.floor)
         .field("impacts", c.impacts)
         .field("peak_force_N", c.peak_force)
         .field("peak_penetration_m", c.peak_penetration)
-        .field("first_contact_s", c.impacts ? c.first_contact : -1.0)
-        .end_object();
+        .field("first_contact_s", c.impacts ? c.first_contact : -1.0);
+    if (k < phases.size())  // damped Sears: contact phases above 1 % of the site's peak force
+      w.field("significant_impacts", phases[k].impacts).field("first_impact_s", phases[k].first_impact_s);
+    w.end_object();
   }
   w.end_array();
   if (!slabs.empty()) {
@@ -65,7 +69,8 @@ void print_json(const RowSimulation& s, const BuildingRow& row,
 }
 
 void print_table(const RowSimulation& s, const BuildingRow& row,
-                 const std::vector<sears::SlabPeaks>& slabs) {
+                 const std::vector<sears::SlabPeaks>& slabs,
+                 const std::vector<sears::SiteContacts>& phases) {
   std::printf("%-12s %5s %12s %12s %8s %12s %12s %8s %12s %12s\n", "building", "floor",
               "disp_pnd[m]", "disp_free[m]", "ratio", "drift_pnd[-]", "drift_free[-]", "ratio",
               "acc_pnd[g]", "acc_free[g]");
@@ -79,6 +84,13 @@ void print_table(const RowSimulation& s, const BuildingRow& row,
   for (const auto& c : s.sites)
     std::printf("%-6d %5d %8d %14.6g %16.6g %14.4f\n", c.pair + 1, c.floor, c.impacts,
                 c.peak_force, c.peak_penetration, c.first_contact);
+  if (!phases.empty()) {
+    std::printf("\n%-6s %5s %20s %16s   (damped Sears: contact phases above 1 %% of the site's peak force)\n",
+                "pair", "floor", "significant_impacts", "first_impact[s]");
+    for (std::size_t k = 0; k < phases.size() && k < s.sites.size(); ++k)
+      std::printf("%-6d %5d %20d %16.4f\n", s.sites[k].pair + 1, s.sites[k].floor,
+                  phases[k].impacts, phases[k].first_impact_s);
+  }
   if (slabs.empty()) return;
   std::printf("\n%-12s %5s %16s %18s\n", "building", "floor", "face_accel[g]", "centre_accel[g]");
   for (const auto& p : slabs)
@@ -122,19 +134,21 @@ int run_simulate(int argc, const char* const* argv) {
                motion.dt, motion.pga() / kGravity);
   RowSimulation sim;
   std::vector<sears::SlabPeaks> slabs;
+  std::vector<sears::SiteContacts> phases;
   if (is_sears) {
     auto ss = sears::simulate_sears_row(row, motion, sears_model, so);
     sim = std::move(ss.base);
     slabs = std::move(ss.slabs);
+    phases = std::move(ss.contacts);
     std::fprintf(stderr, "pound simulate: damped Sears model, step %.3g s\n", ss.dt_s);
   } else {
     sim = simulate_row(row, motion, contact, integ, so);
   }
   if (so.record_history) write_histories(opt.get_string("histories"), row, motion, sim, opt.resolved_text());
   if (opt.flag("json"))
-    print_json(sim, row, slabs);
+    print_json(sim, row, slabs, phases);
   else
-    print_table(sim, row, slabs);
+    print_table(sim, row, slabs, phases);
   return 0;
 }
 
