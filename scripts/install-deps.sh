@@ -5,7 +5,7 @@ set -euo pipefail
 PKGS=(build-essential cmake pkg-config
       libopenmpi-dev openmpi-bin
       libeigen3-dev libhdf5-dev libboost-program-options-dev libfftw3-dev
-      libgtest-dev librandom123-dev
+      libgtest-dev librandom123-dev clang-format
       python3 python3-numpy python3-matplotlib python3-h5py)
 missing=()
 for p in "${PKGS[@]}"; do

@@ -7,6 +7,7 @@ Needs Debian's python3-h5py and python3-numpy (run it with /usr/bin/python3).
   pound_parts.py seed   --probe PROBE.journal --journal PART.h5.journal --chunk K --chunks C
   pound_parts.py merge  OUT.h5 PART0.h5 PART1.h5 ...          (parts in chunk order)
   pound_parts.py check  RUN.h5                                every sample exactly once
+  pound_parts.py journal RUN.h5.journal                       records; fails on a duplicate
   pound_parts.py compare A.h5 B.h5                            /samples and /response equal
 
 How the split works with the current engine (a stopgap until `pound campaign` can run a
@@ -70,14 +71,40 @@ def placeholder_records(ids, values, msg_bytes):
     # values = 0.0 (a valid index for a sampled `model` too).
     msg = PLACEHOLDER[: msg_bytes - 1]
     rec[:, 16 + 8 * values: 16 + 8 * values + len(msg)] = np.frombuffer(msg, dtype=np.uint8)
-    # FNV-1a 64 of the first `body` bytes of each record, all records at once.
-    h = np.full(n, FNV_OFFSET, dtype=np.uint64)
-    with np.errstate(over="ignore"):
-        for j in range(body):
-            h ^= rec[:, j].astype(np.uint64)
-            h *= FNV_PRIME
+    h = fnv_rows(rec[:, :body])
     rec[:, body:] = h.astype("<u8").view(np.uint8).reshape(n, 8)
     return rec.tobytes()
+
+
+def fnv_rows(rec):
+    """FNV-1a 64 of each row of a uint8 matrix."""
+    h = np.full(rec.shape[0], FNV_OFFSET, dtype=np.uint64)
+    with np.errstate(over="ignore"):
+        for j in range(rec.shape[1]):
+            h ^= rec[:, j].astype(np.uint64)
+            h *= FNV_PRIME
+    return h
+
+
+def cmd_journal(a):
+    _h, values, msg_bytes, samples = read_header(a.journal)
+    size = 16 + 8 * values + msg_bytes + 8
+    with open(a.journal, "rb") as f:
+        f.seek(HEADER_BYTES)
+        data = f.read()
+    n = len(data) // size
+    rec = np.frombuffer(data[: n * size], dtype=np.uint8).reshape(n, size)
+    sums = rec[:, size - 8:].copy().view("<u8").reshape(n)
+    valid = fnv_rows(rec[:, : size - 8]) == sums
+    first_bad = int(np.argmin(valid)) if not valid.all() else n
+    ids = rec[:first_bad, 0:8].copy().view("<i8").reshape(first_bad)
+    uniq = np.unique(ids)
+    dup = first_bad - len(uniq)
+    print("pound_parts: %s: %d of %d samples in %d valid records, %d duplicate(s)%s"
+          % (a.journal, len(uniq), samples, first_bad, dup,
+             "" if first_bad * size == len(data) else ", torn tail of %d bytes" % (len(data) - first_bad * size)))
+    if dup or (len(uniq) and (uniq[0] < 0 or uniq[-1] >= samples)):
+        fail(a.journal + ": duplicate or out-of-range sample ids")
 
 
 def cmd_range(a):
@@ -215,12 +242,17 @@ def main():
     m.add_argument("parts", nargs="+")
     c = sub.add_parser("check")
     c.add_argument("file")
+    j = sub.add_parser("journal")
+    j.add_argument("journal")
     d = sub.add_parser("compare")
     d.add_argument("a")
     d.add_argument("b")
     a = p.parse_args()
-    {"range": cmd_range, "seed": cmd_seed, "merge": cmd_merge, "check": cmd_check,
-     "compare": cmd_compare}[a.cmd](a)
+    try:
+        {"range": cmd_range, "seed": cmd_seed, "merge": cmd_merge, "check": cmd_check,
+         "journal": cmd_journal, "compare": cmd_compare}[a.cmd](a)
+    except OSError as e:
+        fail(str(e))
 
 
 if __name__ == "__main__":

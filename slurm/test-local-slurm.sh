@@ -49,9 +49,20 @@ if [[ ${#missing[@]} -gt 0 ]]; then
   SUDO=""
   [[ $(id -u) -ne 0 ]] && SUDO=sudo
   say "installing ${missing[*]}"
-  $SUDO apt-get update -qq
-  # policy-rc.d: the packages must not start the system's own munged/slurmd.
-  DEBIAN_FRONTEND=noninteractive RUNLEVEL=1 $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+  # While installing, a policy-rc.d that forbids starting services keeps the packages from
+  # starting the system's own munged, slurmctld and slurmd (this test starts private ones).
+  policy=/usr/sbin/policy-rc.d
+  made_policy=0
+  if [[ ! -e $policy ]]; then
+    printf '#!/bin/sh\nexit 101\n' | $SUDO tee "$policy" >/dev/null
+    $SUDO chmod 755 "$policy"
+    made_policy=1
+  fi
+  irc=0
+  { $SUDO apt-get update -qq &&
+    DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null; } || irc=$?
+  [[ $made_policy == 1 ]] && $SUDO rm -f "$policy"
+  [[ $irc -eq 0 ]] || { echo "test-local-slurm: apt-get failed (exit status $irc)" >&2; exit 1; }
 fi
 say "packages present: ${pkgs[*]}"
 if [[ $(id -u) -ne 0 ]]; then
@@ -281,6 +292,12 @@ grep -q "found .* resuming" "$J/cut-2.out" && grep -q "(resuming)" "$J/cut-2.out
   && grep -q "received SIGUSR1" "$J/cut-2.out" && grep -q "campaign: interrupted after" "$J/cut-2.out" \
   || { show_log "$J/cut-2.out"; die "job $c did not resume and stop on SIGUSR1"; }
 ok "job $c (mpirun) resumed the journal and stopped on scancel --signal=USR1 --batch: $(grep -o 'interrupted after [0-9]* of [0-9]* samples' "$J/cut-2.out"), exit 75"
+
+done2=$(grep -o 'interrupted after [0-9]*' "$J/cut-2.out" | grep -o '[0-9]*$')
+jinfo=$("$PY" "$parts_py" journal "$cut.journal") || die "journal of the stopped campaign: $jinfo"
+[[ "$jinfo" == *": $done2 of $samples samples in $done2 valid records, 0 duplicate(s)" ]] \
+  || die "journal after two stops: '$jinfo', expected $done2 samples, each once"
+ok "the journal after two stops holds $done2 samples, each exactly once"
 
 d=$(submit --nodes=1 --ntasks-per-node=2 --time=10 -o "$J/cut-3.out" \
   slurm/campaign-mpirun.sbatch "$study" "$cut" --samples "$samples")

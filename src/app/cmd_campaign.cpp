@@ -35,8 +35,9 @@ std::string check_output(const std::string& out, bool resume, bool force, bool* 
   if (!force && exists(out))
     return out + ": exists; use --force to overwrite it or --resume to complete it";
   if (!force && exists(journal))
-    return journal + ": an interrupted run of this output exists; use --resume to complete it "
-                     "or --force to start again";
+    return journal +
+           ": an interrupted run of this output exists; use --resume to complete it "
+           "or --force to start again";
   if (force) {
     std::remove(out.c_str());
     std::remove(journal.c_str());
@@ -90,7 +91,8 @@ int run_campaign(int argc, const char* const* argv) {
   if (any_bad || help) {
     if (rank == 0 && help) std::cout << opt.help_text();
     if (rank == 0 && !help)
-      std::cerr << "pound campaign: error: " << (error.empty() ? "a rank failed to read the study" : error) << "\n";
+      std::cerr << "pound campaign: error: "
+                << (error.empty() ? "a rank failed to read the study" : error) << "\n";
     MPI_Finalize();
     return help ? 0 : 2;
   }
@@ -105,7 +107,8 @@ int run_campaign(int argc, const char* const* argv) {
     return state[0] ? 2 : 0;
   }
   if (rank == 0) {
-    std::fprintf(stderr, "campaign: %ld samples on %d rank%s, seed %llu, %zu sampled parameter%s%s\n",
+    std::fprintf(stderr,
+                 "campaign: %ld samples on %d rank%s, seed %llu, %zu sampled parameter%s%s\n",
                  study.samples, size, size == 1 ? "" : "s",
                  static_cast<unsigned long long>(study.seed), study.parameters.size(),
                  study.parameters.size() == 1 ? "" : "s", opt.flag("resume") ? " (resuming)" : "");
@@ -140,10 +143,11 @@ int run_campaign(int argc, const char* const* argv) {
         if (a == "--force" || a == "--resume") continue;
         cmd += " " + a;
       }
-      std::fprintf(stderr,
-                   "campaign: interrupted after %ld of %ld samples (%ld failed); the journal %s.journal "
-                   "keeps them. Resume with: %s --resume\n",
-                   sum.done, sum.total, sum.failed, out.c_str(), cmd.c_str());
+      std::fprintf(
+          stderr,
+          "campaign: interrupted after %ld of %ld samples (%ld failed); the journal %s.journal "
+          "keeps them. Resume with: %s --resume\n",
+          sum.done, sum.total, sum.failed, out.c_str(), cmd.c_str());
     } else {
       std::fprintf(stderr,
                    "campaign: done: %ld samples, %ld failed, written to %s (peak memory per "

@@ -31,7 +31,8 @@ std::vector<OptionSpec> specs() {
       {"drift-limits", "-", "0.005, 0.01, 0.02, 0.025",
        "damage-state limits of the peak inter-storey drift ratio (0.01 = 1 %)"},
       {"disp-limits", "m", "", "limits of the peak floor displacement (none: no curves)"},
-      {"accel-limits", "m/s^2", "", "limits of the peak absolute floor acceleration (none: no curves)"},
+      {"accel-limits", "m/s^2", "",
+       "limits of the peak absolute floor acceleration (none: no curves)"},
       {"force-limits", "N", "", "limits of the peak pounding force (none: no curves)"},
       {"replicates", "-", "1000", "bootstrap replicates of the 90 % bands"},
       {"seed", "-", "1", "seed of the bootstrap draws"},
@@ -59,27 +60,34 @@ std::string limit_text(Edp e, double x) {
   return e == Edp::drift ? fmt("%.3g %%", 100 * x) : fmt("%.4g ", x) + unit_of(e);
 }
 
-void print_text(const CampaignData& c, const FragilityReport& r, const std::vector<std::string>& files) {
+void print_text(const CampaignData& c, const FragilityReport& r,
+                const std::vector<std::string>& files) {
   const std::string im = c.intensity_measure == "sa" ? "Sa(T1)" : "PGA";
-  std::printf("Shift of the median capacity by pounding: theta_pounding / theta_free (%s, 90 %% bootstrap band)\n",
-              im.c_str());
+  std::printf(
+      "Shift of the median capacity by pounding: theta_pounding / theta_free (%s, 90 %% bootstrap "
+      "band)\n",
+      im.c_str());
   std::printf("  %-12s %-6s %-10s %8s  %-17s %12s %12s\n", "building", "edp", "limit", "ratio",
               "band", "pounding [g]", "free [g]");
   for (std::size_t k = 0, j = 0; k < r.shifts.size(); ++k) {
     const auto& s = r.shifts[k];
-    while (j < r.curves.size() && !(r.curves[j].building == s.building && r.curves[j].edp == s.edp &&
-                                    r.curves[j].limit == s.limit && r.curves[j].pounding))
+    while (j < r.curves.size() &&
+           !(r.curves[j].building == s.building && r.curves[j].edp == s.edp &&
+             r.curves[j].limit == s.limit && r.curves[j].pounding))
       ++j;
     const auto& p = r.curves[j].fit;
     const auto& f = r.curves[j + 1].fit;
-    std::printf("  %-12s %-6s %-10s %8s  [%6s, %6s] %12s %12s\n", c.building_names[s.building].c_str(),
-                to_string(s.edp), limit_text(s.edp, s.limit).c_str(), fmt("%.3f", s.ratio).c_str(),
+    std::printf("  %-12s %-6s %-10s %8s  [%6s, %6s] %12s %12s\n",
+                c.building_names[s.building].c_str(), to_string(s.edp),
+                limit_text(s.edp, s.limit).c_str(), fmt("%.3f", s.ratio).c_str(),
                 fmt("%.3f", s.ci.lo).c_str(), fmt("%.3f", s.ci.hi).c_str(),
                 p.finite() ? fmt("%.4f", p.theta / kGravity).c_str() : to_string(p.status),
                 f.finite() ? fmt("%.4f", f.theta / kGravity).c_str() : to_string(f.status));
   }
-  std::printf("\nCurves: P(EDP > limit | %s = x) = Phi(ln(x / theta) / beta), maximum likelihood "
-              "(Baker 2015)\n", im.c_str());
+  std::printf(
+      "\nCurves: P(EDP > limit | %s = x) = Phi(ln(x / theta) / beta), maximum likelihood "
+      "(Baker 2015)\n",
+      im.c_str());
   std::printf("  %-12s %-6s %-10s %-5s %-16s %10s %19s %7s %17s %9s\n", "building", "edp", "limit",
               "pound", "status", "theta [g]", "90 % band [g]", "beta", "90 % band", "exceed");
   for (const auto& k : r.curves) {
@@ -92,11 +100,13 @@ void print_text(const CampaignData& c, const FragilityReport& r, const std::vect
                 to_string(k.fit.status), f ? fmt("%.4f", k.fit.theta / kGravity).c_str() : "-",
                 f ? fmt("%.4f", k.theta_ci.lo / kGravity).c_str() : "-",
                 f ? fmt("%.4f", k.theta_ci.hi / kGravity).c_str() : "-",
-                f ? fmt("%.3f", k.fit.beta).c_str() : "-", f ? fmt("%.3f", k.beta_ci.lo).c_str() : "-",
+                f ? fmt("%.3f", k.fit.beta).c_str() : "-",
+                f ? fmt("%.3f", k.beta_ci.lo).c_str() : "-",
                 f ? fmt("%.3f", k.beta_ci.hi).c_str() : "-", z, n);
   }
-  std::printf("\nSensitivity of the amplification (pounding / free) to the sampled parameters, "
-              "ranked by |PRCC|\n");
+  std::printf(
+      "\nSensitivity of the amplification (pounding / free) to the sampled parameters, "
+      "ranked by |PRCC|\n");
   std::printf("  %-12s %-20s %-24s %9s %9s %8s\n", "building", "response", "parameter", "Spearman",
               "PRCC", "samples");
   for (const auto& s : r.sensitivity)
@@ -148,7 +158,9 @@ void print_json(const CampaignData& c, const FragilityReport& r, const Fragility
     long n = 0, z = 0;
     for (const auto& o : k.observed) n += o.n, z += o.z;
     w.begin_object().field("building", long(k.building)).field("edp", to_string(k.edp));
-    w.field("limit", k.limit).field("pounding", k.pounding).field("status", to_string(k.fit.status));
+    w.field("limit", k.limit)
+        .field("pounding", k.pounding)
+        .field("status", to_string(k.fit.status));
     w.key("theta");
     f ? w.value(k.fit.theta) : w.null();
     w.key("beta");
@@ -157,7 +169,9 @@ void print_json(const CampaignData& c, const FragilityReport& r, const Fragility
     interval(w, "beta_ci90", k.beta_ci.lo, k.beta_ci.hi, f);
     interval(w, "theta_asymptotic90", k.theta_asym_lo, k.theta_asym_hi, f);
     interval(w, "beta_asymptotic90", k.beta_asym_lo, k.beta_asym_hi, f);
-    w.field("bootstrap_finite", long(k.theta_ci.finite)).field("analyses", n).field("exceedances", z);
+    w.field("bootstrap_finite", long(k.theta_ci.finite))
+        .field("analyses", n)
+        .field("exceedances", z);
     w.end_object();
   }
   w.end_array();
@@ -222,8 +236,8 @@ int run_fragility(int argc, const char* const* argv) {
   fs::create_directories(dir, ec);
   if (ec || !fs::is_directory(dir))
     throw InputError(opt.where("out") + ": cannot create the folder " + dir);
-  for (const char* name : {"curves.csv", "shift.csv", "observations.csv", "sensitivity.csv",
-                           "fragility.h5"})
+  for (const char* name :
+       {"curves.csv", "shift.csv", "observations.csv", "sensitivity.csv", "fragility.h5"})
     if (fs::equivalent(fs::path(dir) / name, input, ec))
       throw InputError(opt.where("out") + ": " + dir + "/" + name +
                        " is the campaign file; choose another output folder");

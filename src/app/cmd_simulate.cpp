@@ -48,7 +48,8 @@ void print_json(const RowSimulation& s, const BuildingRow& row,
         .field("peak_penetration_m", c.peak_penetration)
         .field("first_contact_s", c.impacts ? c.first_contact : -1.0);
     if (k < phases.size())  // damped Sears: contact phases above 1 % of the site's peak force
-      w.field("significant_impacts", phases[k].impacts).field("first_impact_s", phases[k].first_impact_s);
+      w.field("significant_impacts", phases[k].impacts)
+          .field("first_impact_s", phases[k].first_impact_s);
     w.end_object();
   }
   w.end_array();
@@ -82,11 +83,13 @@ void print_table(const RowSimulation& s, const BuildingRow& row,
   std::printf("\n%-6s %5s %8s %14s %16s %14s\n", "pair", "floor", "impacts", "peak_force[N]",
               "peak_penetr[m]", "first_contact[s]");
   for (const auto& c : s.sites)
-    std::printf("%-6d %5d %8d %14.6g %16.6g %14.4f\n", c.pair + 1, c.floor, c.impacts,
-                c.peak_force, c.peak_penetration, c.first_contact);
+    std::printf("%-6d %5d %8d %14.6g %16.6g %14.4f\n", c.pair + 1, c.floor, c.impacts, c.peak_force,
+                c.peak_penetration, c.first_contact);
   if (!phases.empty()) {
-    std::printf("\n%-6s %5s %20s %16s   (damped Sears: contact phases above 1 %% of the site's peak force)\n",
-                "pair", "floor", "significant_impacts", "first_impact[s]");
+    std::printf(
+        "\n%-6s %5s %20s %16s   (damped Sears: contact phases above 1 %% of the site's peak "
+        "force)\n",
+        "pair", "floor", "significant_impacts", "first_impact[s]");
     for (std::size_t k = 0; k < phases.size() && k < s.sites.size(); ++k)
       std::printf("%-6d %5d %20d %16.4f\n", s.sites[k].pair + 1, s.sites[k].floor,
                   phases[k].impacts, phases[k].first_impact_s);
@@ -129,9 +132,11 @@ int run_simulate(int argc, const char* const* argv) {
   RowSimulationOptions so;
   so.extra_time = opt.get_nonnegative("simulation.extra_time");
   so.record_history = opt.given("histories");
-  std::fprintf(stderr, "pound simulate: %zu buildings, contact model %s, motion %s (%zu samples at %g s, PGA %.4g g)\n",
-               row.buildings.size(), contact.model.c_str(), motion.name.c_str(), motion.accel.size(),
-               motion.dt, motion.pga() / kGravity);
+  std::fprintf(stderr,
+               "pound simulate: %zu buildings, contact model %s, motion %s (%zu samples at %g s, "
+               "PGA %.4g g)\n",
+               row.buildings.size(), contact.model.c_str(), motion.name.c_str(),
+               motion.accel.size(), motion.dt, motion.pga() / kGravity);
   RowSimulation sim;
   std::vector<sears::SlabPeaks> slabs;
   std::vector<sears::SiteContacts> phases;
@@ -144,7 +149,8 @@ int run_simulate(int argc, const char* const* argv) {
   } else {
     sim = simulate_row(row, motion, contact, integ, so);
   }
-  if (so.record_history) write_histories(opt.get_string("histories"), row, motion, sim, opt.resolved_text());
+  if (so.record_history)
+    write_histories(opt.get_string("histories"), row, motion, sim, opt.resolved_text());
   if (opt.flag("json"))
     print_json(sim, row, slabs, phases);
   else

@@ -25,7 +25,8 @@ const Command kCommands[] = {
      "ground motions: response spectra, design spectra, spectrum-compatible generation"},
     {"campaign", pound::app::run_campaign,
      "Monte Carlo campaign over MPI ranks, results in one HDF5 file (mpirun -np N ...)"},
-    {"fragility", pound::app::run_fragility, "fragility curves with and without pounding from a campaign file"},
+    {"fragility", pound::app::run_fragility,
+     "fragility curves with and without pounding from a campaign file"},
 };
 
 void usage(std::ostream& out) {
@@ -62,7 +63,8 @@ int main(int argc, char** argv) {
       return 1;
     }
   }
-  std::cerr << "pound: error: unknown command '" << argv[1]
-            << "'; valid commands: impact, simulate, motion, campaign, fragility (see 'pound --help')\n";
+  std::cerr
+      << "pound: error: unknown command '" << argv[1]
+      << "'; valid commands: impact, simulate, motion, campaign, fragility (see 'pound --help')\n";
   return 2;
 }

@@ -91,8 +91,7 @@ std::vector<OptionSpec> campaign_option_specs() {
   return s;
 }
 
-CampaignStudy campaign_from_options(const Options& opt, long samples_override,
-                                    long seed_override) {
+CampaignStudy campaign_from_options(const Options& opt, long samples_override, long seed_override) {
   CampaignStudy st;
   st.row = row_from_options(opt);
   st.integrator = integrator_from_options(opt);
@@ -134,16 +133,18 @@ CampaignStudy campaign_from_options(const Options& opt, long samples_override,
     SampledParameter p{k, Distribution::parse(smp.get_string(k), smp.where(k))};
     if (k == "model") {
       if (p.distribution.kind() != DistributionKind::discrete)
-        throw smp.invalid(k, "valid: discrete(name: weight, ...) with names from " +
-                                 contact_model_names());
+        throw smp.invalid(
+            k, "valid: discrete(name: weight, ...) with names from " + contact_model_names());
       for (const auto& l : p.distribution.labels())
         if (l != "sears") find_contact_model(l, smp.where(k));
     } else {
-      if (p.distribution.kind() == DistributionKind::discrete) p.distribution.lower();  // numeric check
+      if (p.distribution.kind() == DistributionKind::discrete)
+        p.distribution.lower();  // numeric check
       const double lo = p.distribution.lower(), hi = p.distribution.upper();
       const bool positive = k != "gap" && k != "damping";
       if (positive && !(lo > 0))
-        throw smp.invalid(k, "its values must be > 0; truncate the distribution (e.g. normal(m, s, lo, hi))");
+        throw smp.invalid(
+            k, "its values must be > 0; truncate the distribution (e.g. normal(m, s, lo, hi))");
       if (!positive && !(lo >= 0))
         throw smp.invalid(k, "its values must be >= 0; truncate the distribution");
       if (k == "e" && !(hi <= 1)) throw smp.invalid(k, "e must stay in (0, 1]; truncate at 1");
@@ -160,7 +161,8 @@ CampaignStudy campaign_from_options(const Options& opt, long samples_override,
   for (const auto& p : st.parameters)
     if (p.key == "model") {
       uses_sears = uses_lumped = false;
-      for (const auto& l : p.distribution.labels()) (l == "sears" ? uses_sears : uses_lumped) = true;
+      for (const auto& l : p.distribution.labels())
+        (l == "sears" ? uses_sears : uses_lumped) = true;
     }
   if (uses_sears) {
     st.has_sears = true;
@@ -173,14 +175,16 @@ CampaignStudy campaign_from_options(const Options& opt, long samples_override,
     st.contact = contact_from_options(opt, st.row);
   } else {
     // The sampled k (or the Sears model) replaces the stiffness per sample.
-    if (st.contact.model != "sears") find_contact_model(st.contact.model, opt.where("contact.model"));
+    if (st.contact.model != "sears")
+      find_contact_model(st.contact.model, opt.where("contact.model"));
     st.contact.params.e = opt.get_double("contact.e");
     if (!(st.contact.params.e > 0 && st.contact.params.e <= 1))
       throw opt.invalid("contact.e", "valid: e in (0, 1]");
     st.contact.params.v0_min = opt.get_positive("contact.v0_min");
     st.contact.params.xi_relation = opt.get_string("contact.xi_relation");
     if (uses_lumped && !k_sampled)
-      throw InputError(opt.where("contact.k") + ": missing; the lumped models need contact.k, "
+      throw InputError(opt.where("contact.k") +
+                       ": missing; the lumped models need contact.k, "
                        "contact.k_factor or a sampled sample.k / sample.k_factor");
   }
 
@@ -229,7 +233,8 @@ CampaignStudy campaign_from_options(const Options& opt, long samples_override,
                    opt.where("motion.records").rfind("command line", 0) == 0)
                       ? f
                       : dir.substr(0, slash + 1) + f;
-      spec.format = parse_motion_format(opt.get_string("motion.format"), opt.where("motion.format"));
+      spec.format =
+          parse_motion_format(opt.get_string("motion.format"), opt.where("motion.format"));
       if (opt.given("motion.units"))
         spec.units = parse_accel_units(opt.get_string("motion.units"), opt.where("motion.units"));
       if (opt.given("motion.dt")) spec.dt = opt.get_positive("motion.dt");
@@ -270,8 +275,8 @@ CampaignStudy campaign_from_options(const Options& opt, long samples_override,
   }
   // The study as resolved; run-control options (output, resume, ...) are not part of it, the
   // sample count and seed are stored on their own.
-  st.resolved = opt.resolved_text({"out", "resume", "force", "quiet", "samples", "seed",
-                                   "campaign.samples", "campaign.seed"});
+  st.resolved = opt.resolved_text(
+      {"out", "resume", "force", "quiet", "samples", "seed", "campaign.samples", "campaign.seed"});
   return st;
 }
 

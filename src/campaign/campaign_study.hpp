@@ -35,15 +35,15 @@ struct CampaignStudy {
   BuildingRow row;
   ContactSpec contact;
   IntegratorSettings integrator;
-  bool has_sears = false;          ///< slabs given: the damped Sears model can be used
-  sears::SearsRowModel sears;      ///< its fixed options (chi and D may be sampled)
-  double extra_time = 0.0;  ///< free vibration after the record [s]
+  bool has_sears = false;      ///< slabs given: the damped Sears model can be used
+  sears::SearsRowModel sears;  ///< its fixed options (chi and D may be sampled)
+  double extra_time = 0.0;     ///< free vibration after the record [s]
 
   // Sampling.
-  long samples = 100;       ///< number of samples [-]
-  std::uint64_t seed = 1;   ///< study seed
+  long samples = 100;      ///< number of samples [-]
+  std::uint64_t seed = 1;  ///< study seed
   SamplingMethod sampling = SamplingMethod::latin_hypercube;
-  int batch = 1;            ///< samples handed to a worker at a time
+  int batch = 1;  ///< samples handed to a worker at a time
   std::vector<SampledParameter> parameters;
 
   // Ground motion.
@@ -55,11 +55,11 @@ struct CampaignStudy {
 
   // Intensity.
   IntensityMeasure measure = IntensityMeasure::pga;
-  int im_building = 0;          ///< 0-based building whose T1 defines Sa(T1)
-  double im_period = 0.0;       ///< T1 of that building [s]
-  std::vector<double> levels;   ///< stripe levels [m/s^2]; empty: sampled scale factor
+  int im_building = 0;         ///< 0-based building whose T1 defines Sa(T1)
+  double im_period = 0.0;      ///< T1 of that building [s]
+  std::vector<double> levels;  ///< stripe levels [m/s^2]; empty: sampled scale factor
   bool has_scale = false;
-  Distribution scale;           ///< sampled scale factor on the motion (continuous IM)
+  Distribution scale;  ///< sampled scale factor on the motion (continuous IM)
 
   std::string resolved;  ///< the resolved study text, stored in the result file
 

@@ -60,11 +60,13 @@ std::size_t RecordLayout::values() const {
   return 2 + parameters + 6 * buildings * floors + 2 * pairs * levels + 2;
 }
 
-std::size_t RecordLayout::record_bytes() const { return 16 + 8 * values() + kMessageBytes + 8; }
+std::size_t RecordLayout::record_bytes() const {
+  return 16 + 8 * values() + kMessageBytes + 8;
+}
 
 std::uint64_t study_hash(const CampaignStudy& st) {
-  std::string s = st.resolved + "\nsamples=" + std::to_string(st.samples) +
-                  "\nseed=" + std::to_string(st.seed);
+  std::string s =
+      st.resolved + "\nsamples=" + std::to_string(st.samples) + "\nseed=" + std::to_string(st.seed);
   return fnv(s.data(), s.size());
 }
 
@@ -131,8 +133,9 @@ long for_each_record(const std::string& path, const CampaignStudy& st,
   }
   if (h != want) {
     std::fclose(f);
-    throw InputError(path + ": the journal belongs to a different study, sample count or seed; "
-                            "resume with the same study file and options, or start again with --force");
+    throw InputError(path +
+                     ": the journal belongs to a different study, sample count or seed; "
+                     "resume with the same study file and options, or start again with --force");
   }
   std::vector<char> rec(l.record_bytes());
   long end = static_cast<long>(kHeaderBytes);
@@ -159,7 +162,8 @@ JournalWriter::JournalWriter(const std::string& path, const CampaignStudy& st, b
   if (append) {
     const long end = for_each_record(path, st, [](const SampleOutcome&) {});
     if (::truncate(path.c_str(), end) != 0)
-      throw InputError(path + ": cannot cut the torn tail of the journal (" + std::strerror(errno) + ")");
+      throw InputError(path + ": cannot cut the torn tail of the journal (" + std::strerror(errno) +
+                       ")");
     f_ = std::fopen(path.c_str(), "ab");
   } else {
     f_ = std::fopen(path.c_str(), "wb");
@@ -169,7 +173,8 @@ JournalWriter::JournalWriter(const std::string& path, const CampaignStudy& st, b
       std::fflush(f_);
     }
   }
-  if (!f_) throw InputError(path + ": cannot write the campaign journal (" + std::strerror(errno) + ")");
+  if (!f_)
+    throw InputError(path + ": cannot write the campaign journal (" + std::strerror(errno) + ")");
 }
 
 JournalWriter::~JournalWriter() {

@@ -26,7 +26,7 @@ struct RecordLayout {
   int parameters = 0, buildings = 0, floors = 0, pairs = 0, levels = 0;
   explicit RecordLayout(const CampaignStudy& st);
   RecordLayout() = default;
-  std::size_t values() const;      ///< doubles per record
+  std::size_t values() const;  ///< doubles per record
   std::size_t record_bytes() const;
   static constexpr std::size_t kMessageBytes = 232;
 };

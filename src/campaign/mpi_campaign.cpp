@@ -20,14 +20,16 @@ namespace pound {
 namespace {
 
 volatile std::sig_atomic_t g_stop = 0;
-extern "C" void on_stop_signal(int) { g_stop = 1; }
+extern "C" void on_stop_signal(int) {
+  g_stop = 1;
+}
 
 enum Tag : int {
-  kRequest = 1,   // worker -> master: finished records (0..n), asks for one more batch
-  kWork = 2,      // master -> worker: ids of a batch
-  kStopEnd = 3,   // master -> worker: no more work; finish the queue
-  kStopNow = 4,   // master -> worker: interrupted; drop the queue
-  kDone = 5,      // worker -> master: finished, nothing outstanding
+  kRequest = 1,  // worker -> master: finished records (0..n), asks for one more batch
+  kWork = 2,     // master -> worker: ids of a batch
+  kStopEnd = 3,  // master -> worker: no more work; finish the queue
+  kStopNow = 4,  // master -> worker: interrupted; drop the queue
+  kDone = 5,     // worker -> master: finished, nothing outstanding
 };
 
 std::string now_text() {
@@ -118,8 +120,8 @@ void drain_workers(MPI_Comm comm, int active) {
   }
 }
 
-CampaignSummary master_loop(const CampaignStudy& st, const CampaignRunOptions& opt,
-                            MPI_Comm comm, int size, int& active);
+CampaignSummary master_loop(const CampaignStudy& st, const CampaignRunOptions& opt, MPI_Comm comm,
+                            int size, int& active);
 
 CampaignSummary master(const CampaignStudy& st, const CampaignRunOptions& opt, MPI_Comm comm,
                        int size) {
@@ -132,8 +134,8 @@ CampaignSummary master(const CampaignStudy& st, const CampaignRunOptions& opt, M
   }
 }
 
-CampaignSummary master_loop(const CampaignStudy& st, const CampaignRunOptions& opt,
-                            MPI_Comm comm, int size, int& active) {
+CampaignSummary master_loop(const CampaignStudy& st, const CampaignRunOptions& opt, MPI_Comm comm,
+                            int size, int& active) {
   (void)size;
   const RecordLayout layout(st);
   const std::string journal_path = opt.out + ".journal";
@@ -162,7 +164,8 @@ CampaignSummary master_loop(const CampaignStudy& st, const CampaignRunOptions& o
     journal.append(bytes, n);
     for (std::size_t off = 0; off + layout.record_bytes() <= n; off += layout.record_bytes()) {
       SampleOutcome o;
-      if (!decode_record(bytes + off, layout, o)) throw std::runtime_error("corrupt record from a worker");
+      if (!decode_record(bytes + off, layout, o))
+        throw std::runtime_error("corrupt record from a worker");
       if (o.id >= 0 && o.id < st.samples && !done[o.id]) {
         done[o.id] = 1;
         ++sum.done;
@@ -180,7 +183,8 @@ CampaignSummary master_loop(const CampaignStudy& st, const CampaignRunOptions& o
     const double el = std::chrono::duration<double>(t - prog.start).count();
     const double rate = el > 0 ? (sum.done - prog.at_start) / el : 0.0;
     const double left = rate > 0 ? (sum.total - sum.done) / rate : 0.0;
-    std::fprintf(stderr, "campaign: %ld/%ld samples done, %ld failed, %.2f samples/s, ~%.0f s left\n",
+    std::fprintf(stderr,
+                 "campaign: %ld/%ld samples done, %ld failed, %.2f samples/s, ~%.0f s left\n",
                  sum.done, sum.total, sum.failed, rate, left);
   };
 
@@ -245,9 +249,12 @@ void install_stop_handlers() {
   for (int sig : {SIGTERM, SIGUSR1, SIGINT}) sigaction(sig, &sa, nullptr);
 }
 
-bool stop_requested() { return g_stop != 0; }
+bool stop_requested() {
+  return g_stop != 0;
+}
 
-CampaignSummary run_campaign(const CampaignStudy& st, const CampaignRunOptions& opt, MPI_Comm comm) {
+CampaignSummary run_campaign(const CampaignStudy& st, const CampaignRunOptions& opt,
+                             MPI_Comm comm) {
   int rank = 0, size = 1;
   MPI_Comm_rank(comm, &rank);
   MPI_Comm_size(comm, &size);

@@ -11,10 +11,10 @@
 namespace pound {
 
 struct CampaignRunOptions {
-  std::string out;          ///< result file RUN.h5 (journal: RUN.h5.journal)
-  bool resume = false;      ///< continue from the journal
-  bool progress = true;     ///< progress lines on stderr (master)
-  std::string command_line; ///< how to resume, for the interruption message
+  std::string out;           ///< result file RUN.h5 (journal: RUN.h5.journal)
+  bool resume = false;       ///< continue from the journal
+  bool progress = true;      ///< progress lines on stderr (master)
+  std::string command_line;  ///< how to resume, for the interruption message
 };
 
 struct CampaignSummary {

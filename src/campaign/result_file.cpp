@@ -73,10 +73,10 @@ void write_result_file(const std::string& path, const CampaignStudy& st,
     RowDataset scale(fid, "/samples/scale", n, 0, 0, H5T_NATIVE_DOUBLE, "-");
     std::vector<std::unique_ptr<RowDataset>> params;
     for (const auto& p : st.parameters)
-      params.push_back(std::make_unique<RowDataset>(
-          fid, "/samples/" + p.key, n, 0, 0, p.key == "model" ? str : H5T_NATIVE_DOUBLE));
-    const char* names[] = {"peak_disp_pounding", "peak_disp_free", "peak_drift_pounding",
-                           "peak_drift_free", "peak_accel_pounding", "peak_accel_free"};
+      params.push_back(std::make_unique<RowDataset>(fid, "/samples/" + p.key, n, 0, 0,
+                                                    p.key == "model" ? str : H5T_NATIVE_DOUBLE));
+    const char* names[] = {"peak_disp_pounding", "peak_disp_free",      "peak_drift_pounding",
+                           "peak_drift_free",    "peak_accel_pounding", "peak_accel_free"};
     const char* units[] = {"m", "m", "-", "-", "m/s^2", "m/s^2"};
     std::vector<std::unique_ptr<RowDataset>> floors;
     for (int i = 0; i < 6; ++i)
@@ -89,7 +89,8 @@ void write_result_file(const std::string& path, const CampaignStudy& st,
 
     std::vector<char> seen(n, 0);
     for_each_record(journal_path, st, [&](const SampleOutcome& o) {
-      if (o.id < 0 || static_cast<hsize_t>(o.id) >= n || seen[o.id]) return;  // duplicates: first wins
+      if (o.id < 0 || static_cast<hsize_t>(o.id) >= n || seen[o.id])
+        return;  // duplicates: first wins
       seen[o.id] = 1;
       const hsize_t r = static_cast<hsize_t>(o.id);
       const long idv = o.id;
@@ -109,8 +110,8 @@ void write_result_file(const std::string& path, const CampaignStudy& st,
           params[i]->write(r, &o.values[i]);
         }
       }
-      const std::vector<double>* arrays[] = {&o.disp_pounding, &o.disp_free, &o.drift_pounding,
-                                             &o.drift_free, &o.accel_pounding, &o.accel_free};
+      const std::vector<double>* arrays[] = {&o.disp_pounding, &o.disp_free,      &o.drift_pounding,
+                                             &o.drift_free,    &o.accel_pounding, &o.accel_free};
       for (int i = 0; i < 6; ++i) floors[i]->write(r, arrays[i]->data());
       force.write(r, o.peak_force.data());
       impacts.write(r, o.impacts.data());

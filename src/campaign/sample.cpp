@@ -18,7 +18,8 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 SampleRunner::SampleRunner(const CampaignStudy& study)
     : st_(study), lhs_(study.seed, static_cast<std::uint64_t>(study.samples)) {
   if (st_.source == MotionSource::generated)
-    generator_ = std::make_unique<SimqkeGenerator>(*st_.spectrum, st_.motion_duration, st_.generator);
+    generator_ =
+        std::make_unique<SimqkeGenerator>(*st_.spectrum, st_.motion_duration, st_.generator);
 }
 
 SampleRunner::~SampleRunner() = default;
@@ -77,8 +78,10 @@ SampleOutcome SampleRunner::run(long id) {
     for (std::size_t i = 0; i < st_.parameters.size(); ++i) {
       const std::string& k = st_.parameters[i].key;
       const double v = d.values[i];
-      if (k == "e") contact.params.e = v;
-      else if (k == "k") contact.params.k = v;
+      if (k == "e")
+        contact.params.e = v;
+      else if (k == "k")
+        contact.params.k = v;
       else if (k == "gap")
         for (auto& g : row.gaps) g.assign(g.size(), v);
       else if (k == "damping")
@@ -158,8 +161,7 @@ SampleOutcome SampleRunner::run(long id) {
                     &out.accel_pounding, &out.accel_free, &out.peak_force, &out.impacts})
       v->assign(v->size(), kNaN);
   }
-  out.wall_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  out.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
 }
 

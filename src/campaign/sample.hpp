@@ -27,7 +27,7 @@ struct SampleDraw {
   double level = 0.0;          ///< stripe level [m/s^2] (NaN with a sampled scale)
   double scale_draw = 0.0;     ///< sampled scale factor (NaN with stripes)
   std::uint64_t motion_seed = 0;
-  int record = -1;             ///< record index (records source)
+  int record = -1;  ///< record index (records source)
 };
 
 /// The outcome; arrays are row-major [building][floor] (NaN where a building has fewer
@@ -36,16 +36,16 @@ struct SampleOutcome {
   long id = 0;
   SampleStatus status = SampleStatus::ok;
   std::string message;
-  double im = 0.0;            ///< intensity measure of the scaled motion [m/s^2]
-  double scale = 0.0;         ///< factor applied to the motion [-]
-  std::vector<double> values;  ///< sampled parameter values (as in SampleDraw)
-  std::vector<double> disp_pounding, disp_free;    ///< [m]
+  double im = 0.0;                               ///< intensity measure of the scaled motion [m/s^2]
+  double scale = 0.0;                            ///< factor applied to the motion [-]
+  std::vector<double> values;                    ///< sampled parameter values (as in SampleDraw)
+  std::vector<double> disp_pounding, disp_free;  ///< [m]
   std::vector<double> drift_pounding, drift_free;  ///< peak drift ratios [-]
   std::vector<double> accel_pounding, accel_free;  ///< peak absolute accelerations [m/s^2]
   std::vector<double> peak_force;                  ///< [N]
   std::vector<double> impacts;                     ///< counts, as doubles [-]
-  double wall_seconds = 0.0;  ///< run bookkeeping
-  int rank = 0;               ///< run bookkeeping
+  double wall_seconds = 0.0;                       ///< run bookkeeping
+  int rank = 0;                                    ///< run bookkeeping
 };
 
 /// Runs samples of one study; keeps per-worker caches (the motion generator's FFT plans,

@@ -10,7 +10,7 @@ namespace pound {
 
 /// Parameters shared by the lumped contact models. Each model documents which it uses.
 struct ContactParameters {
-  double k = 0.0;  ///< contact stiffness: [N/m] for linear laws, [N/m^1.5] for Hertz laws
+  double k = 0.0;   ///< contact stiffness: [N/m] for linear laws, [N/m^1.5] for Hertz laws
   double e = 0.65;  ///< nominal coefficient of restitution [-], in (0, 1]
   double m1 = 0.0;  ///< mass of the left colliding body (floor) [kg]
   double m2 = 0.0;  ///< mass of the right colliding body (floor) [kg]
@@ -36,6 +36,8 @@ class ContactLaw {
 };
 
 /// Reduced mass m1 m2 / (m1 + m2) [kg].
-inline double reduced_mass(double m1, double m2) { return m1 * m2 / (m1 + m2); }
+inline double reduced_mass(double m1, double m2) {
+  return m1 * m2 / (m1 + m2);
+}
 
 }  // namespace pound

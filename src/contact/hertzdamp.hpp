@@ -12,6 +12,7 @@ class Hertzdamp : public ContactLaw {
  public:
   explicit Hertzdamp(const ContactParameters& p);
   double force(double delta, double ddelta, double v0) const override;
+
  private:
   double k_;       // [N/m^1.5]
   double factor_;  // zeta v0 = 3 (1 - e^2) / 4 [-]

@@ -5,7 +5,8 @@
 
 namespace pound {
 
-HertzdampYe::HertzdampYe(const ContactParameters& p) : k_(p.k), factor_(1.6 * (1.0 - p.e) / p.e), v0_min_(p.v0_min) {}
+HertzdampYe::HertzdampYe(const ContactParameters& p)
+    : k_(p.k), factor_(1.6 * (1.0 - p.e) / p.e), v0_min_(p.v0_min) {}
 
 // F = k delta^1.5 (1 + zeta ddelta), Ye et al. 2009: zeta = 8 (1 - e) / (5 e v0); clamped at >= 0.
 double HertzdampYe::force(double delta, double ddelta, double v0) const {

@@ -11,6 +11,7 @@ class HertzdampYe : public ContactLaw {
  public:
   explicit HertzdampYe(const ContactParameters& p);
   double force(double delta, double ddelta, double v0) const override;
+
  private:
   double k_;       // [N/m^1.5]
   double factor_;  // zeta v0 = 8 (1 - e) / (5 e) [-]

@@ -15,11 +15,12 @@ class HuntCrossley : public ContactLaw {
  public:
   HuntCrossley(const ContactParameters& p, double exponent);
   double force(double delta, double ddelta, double v0) const override;
+
  private:
-  double k_;         // [N/m^n]
-  double n_;         // force exponent [-]
-  double a_;         // exact damping factor a(e) [-]
-  double v0_min_;    // [m/s]
+  double k_;       // [N/m^n]
+  double n_;       // force exponent [-]
+  double a_;       // exact damping factor a(e) [-]
+  double v0_min_;  // [m/s]
 };
 
 }  // namespace pound

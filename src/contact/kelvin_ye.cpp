@@ -5,7 +5,8 @@
 
 namespace pound {
 
-KelvinYe::KelvinYe(const ContactParameters& p) : k_(p.k), factor_(1.5 * (1.0 - p.e) / p.e), v0_min_(p.v0_min) {}
+KelvinYe::KelvinYe(const ContactParameters& p)
+    : k_(p.k), factor_(1.5 * (1.0 - p.e) / p.e), v0_min_(p.v0_min) {}
 
 // F = k delta^1.0 (1 + zeta ddelta), Ye et al. 2009: zeta = 3 (1 - e) / (2 e v0); clamped at >= 0.
 double KelvinYe::force(double delta, double ddelta, double v0) const {

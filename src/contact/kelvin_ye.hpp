@@ -11,6 +11,7 @@ class KelvinYe : public ContactLaw {
  public:
   explicit KelvinYe(const ContactParameters& p);
   double force(double delta, double ddelta, double v0) const override;
+
  private:
   double k_;       // [N/m]
   double factor_;  // zeta v0 = 3 (1 - e) / (2 e) [-]

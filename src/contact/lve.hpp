@@ -14,6 +14,7 @@ class LinearViscoelastic : public ContactLaw {
  public:
   explicit LinearViscoelastic(const ContactParameters& p);
   double force(double delta, double ddelta, double v0) const override;
+
  private:
   double k_;  // contact stiffness [N/m]
   double c_;  // dashpot coefficient [N s/m]

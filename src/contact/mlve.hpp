@@ -15,6 +15,7 @@ class ModifiedLinearViscoelastic : public ContactLaw {
  public:
   explicit ModifiedLinearViscoelastic(const ContactParameters& p);
   double force(double delta, double ddelta, double v0) const override;
+
  private:
   double k_;  // contact stiffness [N/m]
   double c_;  // approach dashpot coefficient [N s/m]

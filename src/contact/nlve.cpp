@@ -8,8 +8,7 @@
 namespace pound {
 
 NonlinearViscoelastic::NonlinearViscoelastic(const ContactParameters& p)
-    : beta_(p.k),
-      c0_(2.0 * nlve_damping_ratio(p.e) * std::sqrt(p.k * reduced_mass(p.m1, p.m2))) {}
+    : beta_(p.k), c0_(2.0 * nlve_damping_ratio(p.e) * std::sqrt(p.k * reduced_mass(p.m1, p.m2))) {}
 
 // Th. 3.3: F = beta delta^1.5 + c ddelta (approach only), c = c0 delta^(1/4).
 double NonlinearViscoelastic::force(double delta, double ddelta, double) const {

@@ -14,6 +14,7 @@ class NonlinearViscoelastic : public ContactLaw {
  public:
   explicit NonlinearViscoelastic(const ContactParameters& p);
   double force(double delta, double ddelta, double v0) const override;
+
  private:
   double beta_;  // Hertz-type stiffness [N/m^1.5]
   double c0_;    // 2 xi sqrt(beta m1 m2/(m1+m2)); c = c0 delta^(1/4) [N s/m^(5/4)]

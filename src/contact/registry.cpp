@@ -26,8 +26,7 @@ const std::vector<ContactModelInfo>& contact_models() {
   static const std::vector<ContactModelInfo> models = {
       {"stereomechanical", "Goldsmith 1960", "", true, make<Stereomechanical>},
       {"lve", "Anagnostopoulos 1988 (Th. 3.1)", "N/m", true, make<LinearViscoelastic>},
-      {"mlve", "Mahmoud & Jankowski 2011 (Th. 3.2)", "N/m", true,
-       make<ModifiedLinearViscoelastic>},
+      {"mlve", "Mahmoud & Jankowski 2011 (Th. 3.2)", "N/m", true, make<ModifiedLinearViscoelastic>},
       {"nlve", "Jankowski 2005 (Th. 3.3)", "N/m^1.5", true, make<NonlinearViscoelastic>},
       {"hertzdamp", "Muthukumar & DesRoches 2006", "N/m^1.5", true, make<Hertzdamp>},
       {"hertzdamp-ye", "Ye, Li & Zhu 2009", "N/m^1.5", true, make<HertzdampYe>},
@@ -49,8 +48,8 @@ std::string contact_model_names() {
 const ContactModelInfo& find_contact_model(const std::string& name, const std::string& where) {
   for (const auto& m : contact_models())
     if (m.name == name) return m;
-  throw InputError(where + ": unknown contact model '" + name + "'; valid: " +
-                   contact_model_names() + ", sears");
+  throw InputError(where + ": unknown contact model '" + name +
+                   "'; valid: " + contact_model_names() + ", sears");
 }
 
 }  // namespace pound

@@ -14,6 +14,7 @@ class Stereomechanical : public ContactLaw {
   double force(double, double, double) const override { return 0.0; }
   bool impulsive() const override { return true; }
   double restitution() const override { return e_; }
+
  private:
   double e_;  // coefficient of restitution [-]
 };

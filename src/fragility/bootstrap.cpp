@@ -61,9 +61,9 @@ std::vector<std::vector<LognormalFit>> bootstrap_fits(
 
 Interval percentile_interval(std::vector<double> values, double confidence) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  values.erase(std::remove_if(values.begin(), values.end(),
-                              [](double v) { return !std::isfinite(v); }),
-               values.end());
+  values.erase(
+      std::remove_if(values.begin(), values.end(), [](double v) { return !std::isfinite(v); }),
+      values.end());
   Interval iv{nan, nan, int(values.size())};
   if (values.empty()) return iv;
   std::sort(values.begin(), values.end());

@@ -28,8 +28,8 @@ std::vector<Observation> observations(const ExceedanceDesign& d, const std::vect
                                       const std::vector<std::size_t>& rows = {});
 
 struct BootstrapSettings {
-  int replicates = 1000;    ///< bootstrap replicates [-]
-  std::uint64_t seed = 1;   ///< generator seed
+  int replicates = 1000;   ///< bootstrap replicates [-]
+  std::uint64_t seed = 1;  ///< generator seed
 };
 
 /// fits[c][r]: curve c (outcomes[c], per analysis) fitted to replicate r.
@@ -38,8 +38,8 @@ std::vector<std::vector<LognormalFit>> bootstrap_fits(
     const BootstrapSettings& s);
 
 struct Interval {
-  double lo, hi;  ///< NaN when no value was finite
-  int finite = 0; ///< values that entered
+  double lo, hi;   ///< NaN when no value was finite
+  int finite = 0;  ///< values that entered
 };
 /// Central percentile interval holding `confidence` (e.g. 0.90) of the finite values
 /// (linear interpolation between order statistics); non-finite values are dropped.

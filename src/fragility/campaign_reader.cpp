@@ -25,17 +25,16 @@ class Reader {
   explicit Reader(const std::string& path) : path_(path) {
     H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
     if (H5Fis_hdf5(path.c_str()) <= 0)
-      throw InputError(path + ": cannot open as an HDF5 file; give a campaign result file "
-                              "written by 'pound campaign --out'");
+      throw InputError(path +
+                       ": cannot open as an HDF5 file; give a campaign result file "
+                       "written by 'pound campaign --out'");
     file_ = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
     if (file_ < 0) throw InputError(path + ": cannot open for reading");
   }
   ~Reader() { H5Fclose(file_); }
   hid_t id() const { return file_; }
 
-  bool exists(const std::string& p) const {
-    return H5Lexists(file_, p.c_str(), H5P_DEFAULT) > 0;
-  }
+  bool exists(const std::string& p) const { return H5Lexists(file_, p.c_str(), H5P_DEFAULT) > 0; }
 
   // A dataset of doubles (any numeric type converts) with its dimensions.
   std::vector<double> doubles(const std::string& p, std::vector<hsize_t>* dims = nullptr) const {
@@ -90,8 +89,8 @@ class Reader {
     H5G_info_t info;
     if (g.id < 0 || H5Gget_info(g.id, &info) < 0) throw missing(group);
     for (hsize_t i = 0; i < info.nlinks; ++i) {
-      const ssize_t len = H5Lget_name_by_idx(g.id, ".", H5_INDEX_NAME, H5_ITER_INC, i, nullptr,
-                                             0, H5P_DEFAULT);
+      const ssize_t len =
+          H5Lget_name_by_idx(g.id, ".", H5_INDEX_NAME, H5_ITER_INC, i, nullptr, 0, H5P_DEFAULT);
       std::string name(std::size_t(len), '\0');
       H5Lget_name_by_idx(g.id, ".", H5_INDEX_NAME, H5_ITER_INC, i, name.data(),
                          std::size_t(len) + 1, H5P_DEFAULT);
@@ -101,8 +100,9 @@ class Reader {
   }
 
   InputError missing(const std::string& what) const {
-    return InputError(path_ + ": no " + what + "; not a campaign result file of 'pound campaign' "
-                              "(schema in src/campaign/result_file.hpp)");
+    return InputError(path_ + ": no " + what +
+                      "; not a campaign result file of 'pound campaign' "
+                      "(schema in src/campaign/result_file.hpp)");
   }
 
  private:

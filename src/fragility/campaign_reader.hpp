@@ -27,21 +27,21 @@ struct SampledColumn {
 
 struct CampaignData {
   std::string path;
-  std::string study;                 ///< resolved study text (root attribute "study")
-  std::string intensity_measure;     ///< "pga" or "sa"
-  double im_period = 0.0;            ///< T1 of Sa(T1) [s] (0 for PGA)
-  std::string seed;                  ///< study seed (root attribute)
+  std::string study;              ///< resolved study text (root attribute "study")
+  std::string intensity_measure;  ///< "pga" or "sa"
+  double im_period = 0.0;         ///< T1 of Sa(T1) [s] (0 for PGA)
+  std::string seed;               ///< study seed (root attribute)
   std::vector<std::string> building_names;
-  std::vector<double> levels;        ///< stripe intensities [m/s^2]; empty: continuous IM
+  std::vector<double> levels;  ///< stripe intensities [m/s^2]; empty: continuous IM
   std::size_t samples = 0;
-  std::vector<int> status;           ///< 0 ok, else failed
-  std::vector<double> im;            ///< intensity of the scaled motion [m/s^2]
-  std::vector<double> scale;         ///< scale factor on the motion [-]
-  std::vector<SampledColumn> parameters;      ///< numeric sampled parameters
-  std::vector<std::string> text_parameters;   ///< sampled labels (e.g. model), not ranked
-  FloorArray disp_pounding, disp_free;    ///< peak floor displacement [m]
-  FloorArray drift_pounding, drift_free;  ///< peak inter-storey drift ratio [-]
-  FloorArray accel_pounding, accel_free;  ///< peak absolute floor acceleration [m/s^2]
+  std::vector<int> status;                   ///< 0 ok, else failed
+  std::vector<double> im;                    ///< intensity of the scaled motion [m/s^2]
+  std::vector<double> scale;                 ///< scale factor on the motion [-]
+  std::vector<SampledColumn> parameters;     ///< numeric sampled parameters
+  std::vector<std::string> text_parameters;  ///< sampled labels (e.g. model), not ranked
+  FloorArray disp_pounding, disp_free;       ///< peak floor displacement [m]
+  FloorArray drift_pounding, drift_free;     ///< peak inter-storey drift ratio [-]
+  FloorArray accel_pounding, accel_free;     ///< peak absolute floor acceleration [m/s^2]
   /// Peak pounding force [samples][pairs][levels] [N]; pair p lies between buildings p, p+1.
   FloorArray peak_force;
 };

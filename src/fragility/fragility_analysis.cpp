@@ -43,7 +43,8 @@ std::vector<Observation> observed(const ExceedanceDesign& d, const std::vector<c
   if (d.stripes()) return observations(d, exceed);
   std::vector<std::size_t> order(d.im.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return d.im[a] < d.im[b]; });
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return d.im[a] < d.im[b]; });
   const std::size_t bins = std::max<std::size_t>(1, std::min<std::size_t>(10, order.size() / 20));
   std::vector<Observation> out;
   for (std::size_t k = 0; k < bins; ++k) {
@@ -96,7 +97,8 @@ void rank_sensitivity(const CampaignData& c, const std::vector<std::size_t>& use
         std::vector<double> v;
         bool ok = true;
         for (std::size_t k : rows) ok &= std::isfinite(all[j][k]), v.push_back(all[j][k]);
-        if (!ok || v.empty() || *std::min_element(v.begin(), v.end()) == *std::max_element(v.begin(), v.end()))
+        if (!ok || v.empty() ||
+            *std::min_element(v.begin(), v.end()) == *std::max_element(v.begin(), v.end()))
           continue;
         cols.push_back(v);
         keep.push_back(names[j]);
@@ -119,29 +121,40 @@ void rank_sensitivity(const CampaignData& c, const std::vector<std::size_t>& use
 
 const char* to_string(Edp e) {
   switch (e) {
-    case Edp::drift: return "drift";
-    case Edp::disp: return "disp";
-    case Edp::accel: return "accel";
-    case Edp::force: return "force";
+    case Edp::drift:
+      return "drift";
+    case Edp::disp:
+      return "disp";
+    case Edp::accel:
+      return "accel";
+    case Edp::force:
+      return "force";
   }
   return "unknown";
 }
 
 const char* unit_of(Edp e) {
   switch (e) {
-    case Edp::drift: return "-";
-    case Edp::disp: return "m";
-    case Edp::accel: return "m/s^2";
-    case Edp::force: return "N";
+    case Edp::drift:
+      return "-";
+    case Edp::disp:
+      return "m";
+    case Edp::accel:
+      return "m/s^2";
+    case Edp::force:
+      return "N";
   }
   return "";
 }
 
 double edp_value(const CampaignData& c, Edp e, bool pounding, std::size_t s, std::size_t b) {
   switch (e) {
-    case Edp::drift: return (pounding ? c.drift_pounding : c.drift_free).max_over_floors(s, b);
-    case Edp::disp: return (pounding ? c.disp_pounding : c.disp_free).max_over_floors(s, b);
-    case Edp::accel: return (pounding ? c.accel_pounding : c.accel_free).max_over_floors(s, b);
+    case Edp::drift:
+      return (pounding ? c.drift_pounding : c.drift_free).max_over_floors(s, b);
+    case Edp::disp:
+      return (pounding ? c.disp_pounding : c.disp_free).max_over_floors(s, b);
+    case Edp::accel:
+      return (pounding ? c.accel_pounding : c.accel_free).max_over_floors(s, b);
     case Edp::force: {
       if (!pounding) return 0.0;
       double m = kNan;
@@ -169,14 +182,16 @@ FragilityReport analyse_fragility(const CampaignData& c, const FragilitySettings
 
   // Every curve's outcomes, per used analysis.
   std::vector<std::vector<char>> outcomes;
-  const std::pair<Edp, const std::vector<double>*> lists[] = {
-      {Edp::drift, &s.drift_limits}, {Edp::disp, &s.disp_limits},
-      {Edp::accel, &s.accel_limits}, {Edp::force, &s.force_limits}};
+  const std::pair<Edp, const std::vector<double>*> lists[] = {{Edp::drift, &s.drift_limits},
+                                                              {Edp::disp, &s.disp_limits},
+                                                              {Edp::accel, &s.accel_limits},
+                                                              {Edp::force, &s.force_limits}};
   for (std::size_t b = 0; b < c.drift_pounding.buildings; ++b)
     for (const auto& [edp, limits] : lists)
       for (double limit : *limits) {
-        if (!(limit > 0)) throw InputError(std::string(to_string(edp)) + " limit " +
-                                           std::to_string(limit) + ": limits must be > 0");
+        if (!(limit > 0))
+          throw InputError(std::string(to_string(edp)) + " limit " + std::to_string(limit) +
+                           ": limits must be > 0");
         for (const bool pounding : {true, false}) {
           if (edp == Edp::force && !pounding) continue;  // no force without pounding
           FragilityCurve fc;
@@ -198,7 +213,8 @@ FragilityReport analyse_fragility(const CampaignData& c, const FragilitySettings
   const double lo = *std::min_element(d.im.begin(), d.im.end()) / 2;
   const double hi = *std::max_element(d.im.begin(), d.im.end()) * 2;
   for (std::size_t i = 0; i < s.grid_points; ++i)
-    r.grid.push_back(lo * std::pow(hi / lo, double(i) / double(std::max<std::size_t>(1, s.grid_points - 1))));
+    r.grid.push_back(
+        lo * std::pow(hi / lo, double(i) / double(std::max<std::size_t>(1, s.grid_points - 1))));
 
   const auto reps = bootstrap_fits(d, outcomes, s.bootstrap);
   const double zq = normal_quantile(0.5 * (1.0 + s.confidence));
@@ -232,14 +248,16 @@ FragilityReport analyse_fragility(const CampaignData& c, const FragilitySettings
   // The shift: curves come in (pounding, free) pairs except force.
   for (std::size_t k = 0; k + 1 < r.curves.size(); ++k) {
     const FragilityCurve &p = r.curves[k], &f = r.curves[k + 1];
-    if (!p.pounding || f.pounding || p.edp != f.edp || p.limit != f.limit || p.building != f.building)
+    if (!p.pounding || f.pounding || p.edp != f.edp || p.limit != f.limit ||
+        p.building != f.building)
       continue;
     FragilityShift sh{p.building, p.edp, p.limit, kNan, {}};
     if (p.fit.finite() && f.fit.finite()) sh.ratio = p.fit.theta / f.fit.theta;
     std::vector<double> ratio;
     for (std::size_t i = 0; i < reps[k].size(); ++i)
       ratio.push_back(reps[k][i].finite() && reps[k + 1][i].finite()
-                          ? reps[k][i].theta / reps[k + 1][i].theta : kNan);
+                          ? reps[k][i].theta / reps[k + 1][i].theta
+                          : kNan);
     sh.ci = percentile_interval(ratio, s.confidence);
     r.shifts.push_back(sh);
   }

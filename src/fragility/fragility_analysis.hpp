@@ -26,25 +26,25 @@ const char* unit_of(Edp e);
 
 struct FragilitySettings {
   std::vector<double> drift_limits{0.005, 0.01, 0.02, 0.025};  ///< [-] (ratio, not %)
-  std::vector<double> disp_limits;    ///< [m]; empty: no disp curves
-  std::vector<double> accel_limits;   ///< [m/s^2]; empty: no accel curves
-  std::vector<double> force_limits;   ///< [N]; empty: no force curves
-  BootstrapSettings bootstrap;        ///< replicates and seed
-  double confidence = 0.90;           ///< of the bands [-]
-  std::size_t grid_points = 120;      ///< IM points of the curve bands [-]
+  std::vector<double> disp_limits;                             ///< [m]; empty: no disp curves
+  std::vector<double> accel_limits;                            ///< [m/s^2]; empty: no accel curves
+  std::vector<double> force_limits;                            ///< [N]; empty: no force curves
+  BootstrapSettings bootstrap;                                 ///< replicates and seed
+  double confidence = 0.90;                                    ///< of the bands [-]
+  std::size_t grid_points = 120;                               ///< IM points of the curve bands [-]
 };
 
 struct FragilityCurve {
   std::size_t building = 0;  ///< 0-based
   Edp edp = Edp::drift;
-  double limit = 0.0;        ///< damage-state limit [unit_of(edp)]
+  double limit = 0.0;  ///< damage-state limit [unit_of(edp)]
   bool pounding = true;
   LognormalFit fit;
-  Interval theta_ci, beta_ci;            ///< bootstrap percentile bands
+  Interval theta_ci, beta_ci;                   ///< bootstrap percentile bands
   double theta_asym_lo = 0, theta_asym_hi = 0;  ///< asymptotic: exp(ln theta -+ z sd)
   double beta_asym_lo = 0, beta_asym_hi = 0;    ///< asymptotic: beta -+ z sd
-  std::vector<Observation> observed;     ///< per stripe (or per IM bin when continuous)
-  std::vector<double> band_lo, band_hi;  ///< bootstrap band of P on the report's grid
+  std::vector<Observation> observed;            ///< per stripe (or per IM bin when continuous)
+  std::vector<double> band_lo, band_hi;         ///< bootstrap band of P on the report's grid
 };
 
 /// The headline: median ratio theta_pounding / theta_free for one building, EDP and limit.
@@ -66,12 +66,12 @@ struct SensitivityRow {
 
 struct FragilityReport {
   std::size_t samples = 0, failed = 0, used = 0;  ///< analyses in the file, failed, fitted
-  bool stripes = true;                    ///< multiple stripes (else continuous IM)
-  std::vector<double> grid;               ///< IM grid of the bands [m/s^2]
+  bool stripes = true;                            ///< multiple stripes (else continuous IM)
+  std::vector<double> grid;                       ///< IM grid of the bands [m/s^2]
   std::vector<FragilityCurve> curves;
   std::vector<FragilityShift> shifts;
   std::vector<SensitivityRow> sensitivity;  ///< ranked by |PRCC| within building and response
-  std::vector<std::string> unranked;         ///< sampled labels left out (e.g. model)
+  std::vector<std::string> unranked;        ///< sampled labels left out (e.g. model)
 };
 
 /// Throws InputError when no sample succeeded or the limits are not positive.

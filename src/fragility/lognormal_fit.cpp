@@ -36,8 +36,8 @@ Terms evaluate(const std::vector<Observation>& obs, const std::vector<double>& t
     if (m > 0) s.l += m * log_normal_cdf(-eta);
     if (!derivatives) continue;
     const double lp = normal_mills(eta), lm = normal_mills(-eta);
-    const double g = z * lp - m * lm;                                  // dl/deta
-    const double w = z * lp * (eta + lp) + m * lm * (lm - eta);        // -d2l/deta2 >= 0
+    const double g = z * lp - m * lm;                            // dl/deta
+    const double w = z * lp * (eta + lp) + m * lm * (lm - eta);  // -d2l/deta2 >= 0
     s.ga += g;
     s.gb += g * t[j];
     s.haa += w;
@@ -51,14 +51,22 @@ Terms evaluate(const std::vector<Observation>& obs, const std::vector<double>& t
 
 const char* to_string(FitStatus s) {
   switch (s) {
-    case FitStatus::ok: return "ok";
-    case FitStatus::no_data: return "no_data";
-    case FitStatus::none_exceed: return "none_exceed";
-    case FitStatus::all_exceed: return "all_exceed";
-    case FitStatus::separated: return "separated";
-    case FitStatus::single_intensity: return "single_intensity";
-    case FitStatus::not_increasing: return "not_increasing";
-    case FitStatus::no_convergence: return "no_convergence";
+    case FitStatus::ok:
+      return "ok";
+    case FitStatus::no_data:
+      return "no_data";
+    case FitStatus::none_exceed:
+      return "none_exceed";
+    case FitStatus::all_exceed:
+      return "all_exceed";
+    case FitStatus::separated:
+      return "separated";
+    case FitStatus::single_intensity:
+      return "single_intensity";
+    case FitStatus::not_increasing:
+      return "not_increasing";
+    case FitStatus::no_convergence:
+      return "no_convergence";
   }
   return "unknown";
 }
@@ -155,9 +163,9 @@ LognormalFit fit_lognormal(const std::vector<Observation>& all) {
     b += step * db;
     const double change = std::abs(step * da) + std::abs(step * db);
     s = evaluate(obs, t, a, b, true);
-    converged = change < 1e-11 * (1.0 + std::abs(a) + std::abs(b)) ||
-                std::abs(s.ga) + std::abs(s.gb * std::sqrt(double(n) / (sxx + 1e-300))) <
-                    1e-10 * double(n);
+    converged =
+        change < 1e-11 * (1.0 + std::abs(a) + std::abs(b)) ||
+        std::abs(s.ga) + std::abs(s.gb * std::sqrt(double(n) / (sxx + 1e-300))) < 1e-10 * double(n);
   }
   fit.loglik = s.l;
   if (!converged || !std::isfinite(a) || !std::isfinite(b))

@@ -47,10 +47,10 @@ const char* to_string(FitStatus s);
 
 struct LognormalFit {
   FitStatus status = FitStatus::no_data;
-  double theta = 0.0;      ///< median capacity [unit of im]
-  double beta = 0.0;       ///< logarithmic standard deviation [-]
-  double loglik = 0.0;     ///< maximised log-likelihood (binomial constant dropped)
-  int iterations = 0;      ///< Newton iterations
+  double theta = 0.0;   ///< median capacity [unit of im]
+  double beta = 0.0;    ///< logarithmic standard deviation [-]
+  double loglik = 0.0;  ///< maximised log-likelihood (binomial constant dropped)
+  int iterations = 0;   ///< Newton iterations
   /// Asymptotic covariance of (ln theta, beta) from the inverse observed information
   /// (delta method from (a, b)): var_ln_theta, cov, var_beta.
   double var_ln_theta = 0.0, cov_ln_theta_beta = 0.0, var_beta = 0.0;

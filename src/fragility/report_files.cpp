@@ -62,9 +62,9 @@ std::string curves_csv(const CampaignData& c, const FragilityReport& r) {
 std::string shift_csv(const CampaignData& c, const FragilityReport& r) {
   std::string s = "building,building_name,edp,unit,limit,ratio,ratio_ci90_lo,ratio_ci90_hi\n";
   for (const auto& k : r.shifts)
-    s += std::to_string(k.building) + "," + name_of(c, k.building) + "," + to_string(k.edp) +
-         "," + unit_of(k.edp) + "," + num(k.limit) + "," + num(k.ratio) + "," + num(k.ci.lo) +
-         "," + num(k.ci.hi) + "\n";
+    s += std::to_string(k.building) + "," + name_of(c, k.building) + "," + to_string(k.edp) + "," +
+         unit_of(k.edp) + "," + num(k.limit) + "," + num(k.ratio) + "," + num(k.ci.lo) + "," +
+         num(k.ci.hi) + "\n";
   return s;
 }
 
@@ -77,8 +77,8 @@ std::string observations_csv(const FragilityReport& r) {
     const bool paired = k + 1 < r.curves.size() && !r.curves[k + 1].pounding;
     for (std::size_t j = 0; j < p.observed.size(); ++j)
       s += std::to_string(p.building) + "," + to_string(p.edp) + "," + num(p.limit) + "," +
-           std::to_string(j) + "," + num(p.observed[j].im) + "," +
-           std::to_string(p.observed[j].n) + "," + std::to_string(p.observed[j].z) + "," +
+           std::to_string(j) + "," + num(p.observed[j].im) + "," + std::to_string(p.observed[j].n) +
+           "," + std::to_string(p.observed[j].z) + "," +
            (paired ? std::to_string(r.curves[k + 1].observed[j].z) : "") + "\n";
   }
   return s;
@@ -141,7 +141,8 @@ void write_h5(const std::string& path, const CampaignData& c, const FragilityRep
       h5::attribute(id, g, "beta_ci90_lo", fin ? cv.beta_ci.lo : NAN);
       h5::attribute(id, g, "beta_ci90_hi", fin ? cv.beta_ci.hi : NAN);
       std::vector<double> im, n, z, p;
-      for (const auto& o : cv.observed) im.push_back(o.im), n.push_back(double(o.n)), z.push_back(double(o.z));
+      for (const auto& o : cv.observed)
+        im.push_back(o.im), n.push_back(double(o.n)), z.push_back(double(o.z));
       for (double x : r.grid) p.push_back(cv.fit.probability(x));
       const std::string base(g);
       h5::write(id, base + "/observed_im", im, im.size(), 0, "m/s^2");

@@ -22,10 +22,10 @@
 namespace pound {
 
 struct FragilityRunInfo {
-  std::string input;    ///< campaign file path
-  int replicates = 0;   ///< bootstrap replicates
-  std::string seed;     ///< bootstrap seed
-  std::string config;   ///< resolved options of the fragility run
+  std::string input;   ///< campaign file path
+  int replicates = 0;  ///< bootstrap replicates
+  std::string seed;    ///< bootstrap seed
+  std::string config;  ///< resolved options of the fragility run
 };
 
 /// Writes the files into `dir` (which must exist); returns their paths.

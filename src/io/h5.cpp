@@ -26,7 +26,9 @@ File::~File() {
   if (id_ >= 0) H5Fclose(id_);
 }
 
-void File::flush() { check(H5Fflush(id_, H5F_SCOPE_GLOBAL), "flush of " + path_); }
+void File::flush() {
+  check(H5Fflush(id_, H5F_SCOPE_GLOBAL), "flush of " + path_);
+}
 
 void ensure_group(hid_t file, const std::string& path) {
   if (path.empty() || path == "/") return;
@@ -37,15 +39,17 @@ void ensure_group(hid_t file, const std::string& path) {
   H5Gclose(g);
 }
 
-void write(hid_t file, const std::string& path, const std::vector<double>& data,
-           std::size_t rows, std::size_t cols, const std::string& units) {
+void write(hid_t file, const std::string& path, const std::vector<double>& data, std::size_t rows,
+           std::size_t cols, const std::string& units) {
   ensure_group(file, parent_of(path));
   hsize_t dims[2] = {rows, cols};
   const hid_t space = H5Screate_simple(cols ? 2 : 1, dims, nullptr);
   const hid_t ds = H5Dcreate2(file, path.c_str(), H5T_NATIVE_DOUBLE, space, H5P_DEFAULT,
                               H5P_DEFAULT, H5P_DEFAULT);
   if (ds < 0) throw InputError("HDF5: cannot create dataset " + path);
-  if (!data.empty()) check(H5Dwrite(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()), "write of " + path);
+  if (!data.empty())
+    check(H5Dwrite(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()),
+          "write of " + path);
   H5Dclose(ds);
   H5Sclose(space);
   if (!units.empty()) attribute(file, path, "units", units);
@@ -55,10 +59,12 @@ void write(hid_t file, const std::string& path, const std::vector<int>& data) {
   ensure_group(file, parent_of(path));
   hsize_t dims[1] = {data.size()};
   const hid_t space = H5Screate_simple(1, dims, nullptr);
-  const hid_t ds = H5Dcreate2(file, path.c_str(), H5T_NATIVE_INT, space, H5P_DEFAULT,
-                              H5P_DEFAULT, H5P_DEFAULT);
+  const hid_t ds =
+      H5Dcreate2(file, path.c_str(), H5T_NATIVE_INT, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
   if (ds < 0) throw InputError("HDF5: cannot create dataset " + path);
-  if (!data.empty()) check(H5Dwrite(ds, H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()), "write of " + path);
+  if (!data.empty())
+    check(H5Dwrite(ds, H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()),
+          "write of " + path);
   H5Dclose(ds);
   H5Sclose(space);
 }
@@ -69,8 +75,8 @@ void attribute(hid_t file, const std::string& object, const std::string& name,
   H5Tset_size(type, H5T_VARIABLE);
   H5Tset_cset(type, H5T_CSET_UTF8);
   const hid_t space = H5Screate(H5S_SCALAR);
-  const hid_t attr = H5Acreate_by_name(file, object.c_str(), name.c_str(), type, space,
-                                       H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  const hid_t attr = H5Acreate_by_name(file, object.c_str(), name.c_str(), type, space, H5P_DEFAULT,
+                                       H5P_DEFAULT, H5P_DEFAULT);
   if (attr < 0) throw InputError("HDF5: cannot create attribute " + object + ":" + name);
   const char* p = value.c_str();
   check(H5Awrite(attr, type, &p), "attribute " + name);
@@ -81,8 +87,8 @@ void attribute(hid_t file, const std::string& object, const std::string& name,
 
 void attribute(hid_t file, const std::string& object, const std::string& name, double value) {
   const hid_t space = H5Screate(H5S_SCALAR);
-  const hid_t attr = H5Acreate_by_name(file, object.c_str(), name.c_str(), H5T_NATIVE_DOUBLE,
-                                       space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  const hid_t attr = H5Acreate_by_name(file, object.c_str(), name.c_str(), H5T_NATIVE_DOUBLE, space,
+                                       H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
   if (attr < 0) throw InputError("HDF5: cannot create attribute " + object + ":" + name);
   check(H5Awrite(attr, H5T_NATIVE_DOUBLE, &value), "attribute " + name);
   H5Aclose(attr);

@@ -28,8 +28,8 @@ class File {
 void ensure_group(hid_t file, const std::string& path);
 /// Writes a dataset of shape {rows, cols} (cols = 0: 1-D of length rows) with an optional
 /// "units" attribute.
-void write(hid_t file, const std::string& path, const std::vector<double>& data,
-           std::size_t rows, std::size_t cols = 0, const std::string& units = "");
+void write(hid_t file, const std::string& path, const std::vector<double>& data, std::size_t rows,
+           std::size_t cols = 0, const std::string& units = "");
 void write(hid_t file, const std::string& path, const std::vector<int>& data);
 /// A variable-length string attribute on an object ("/" for the file).
 void attribute(hid_t file, const std::string& object, const std::string& name,

@@ -68,8 +68,7 @@ std::vector<IniEntry> parse_ini(const std::string& text, const std::string& name
     e.value = trim(line.substr(eq + 1));
     e.file = name;
     e.line = lineno;
-    if (!seen.insert(e.key).second)
-      throw InputError(where + "key '" + e.key + "' is given twice");
+    if (!seen.insert(e.key).second) throw InputError(where + "key '" + e.key + "' is given twice");
     out.push_back(std::move(e));
   }
   return out;

@@ -115,12 +115,12 @@ void Options::parse(int argc, const char* const* argv) {
   }
   po::variables_map vm;
   try {
-    po::store(po::command_line_parser(argc, argv)
-                  .options(desc)
-                  .style(po::command_line_style::unix_style ^
-                         po::command_line_style::allow_guessing)
-                  .run(),
-              vm);
+    po::store(
+        po::command_line_parser(argc, argv)
+            .options(desc)
+            .style(po::command_line_style::unix_style ^ po::command_line_style::allow_guessing)
+            .run(),
+        vm);
   } catch (const po::error& e) {
     throw InputError(command_ + ": command line: " + e.what() + " (see 'pound " + command_ +
                      " --help')");
@@ -153,7 +153,9 @@ const Options::Value* Options::lookup(const std::string& key) const {
   return it == values_.end() ? nullptr : &it->second;
 }
 
-bool Options::given(const std::string& key) const { return lookup(key) != nullptr; }
+bool Options::given(const std::string& key) const {
+  return lookup(key) != nullptr;
+}
 
 bool Options::has(const std::string& key) const {
   if (given(key)) return true;
@@ -169,7 +171,8 @@ bool Options::flag(const std::string& key) const {
 std::string Options::where(const std::string& key) const {
   const auto* v = lookup(key);
   const std::string full = prefix_ + key;
-  if (v && !v->file.empty()) return v->file + ":" + std::to_string(v->line) + ": key '" + full + "'";
+  if (v && !v->file.empty())
+    return v->file + ":" + std::to_string(v->line) + ": key '" + full + "'";
   if (v) return "command line: --" + full;
   return (config_path_.empty() ? std::string("command line") : config_path_) + ": key '" + full +
          "'";

@@ -55,8 +55,8 @@ Distribution Distribution::parse(const std::string& raw, const std::string& wher
   auto num = [&](std::size_t i) { return parse_number(args[i], where + " in '" + t + "'"); };
   auto need = [&](std::size_t a, std::size_t b) {
     if (args.size() != a && args.size() != b)
-      throw InputError(where + ": '" + t + "' has " + std::to_string(args.size()) +
-                       " arguments; " + kForms);
+      throw InputError(where + ": '" + t + "' has " + std::to_string(args.size()) + " arguments; " +
+                       kForms);
   };
   if (name == "fixed") {
     need(1, 1);
@@ -72,7 +72,8 @@ Distribution Distribution::parse(const std::string& raw, const std::string& wher
     need(2, 4);
     d.kind_ = name == "normal" ? DistributionKind::normal : DistributionKind::lognormal;
     const double a = num(0), s = num(1);
-    if (!(s > 0)) throw InputError(where + ": the standard deviation (beta) must be > 0 in '" + t + "'");
+    if (!(s > 0))
+      throw InputError(where + ": the standard deviation (beta) must be > 0 in '" + t + "'");
     if (d.kind_ == DistributionKind::lognormal && !(a > 0))
       throw InputError(where + ": the median of a lognormal must be > 0 in '" + t + "'");
     d.p1_ = d.kind_ == DistributionKind::lognormal ? std::log(a) : a;
@@ -104,7 +105,8 @@ Distribution Distribution::parse(const std::string& raw, const std::string& wher
       }
       const double weight = parse_number(w, where + " weight of '" + label + "'");
       if (label.empty() || !(weight > 0))
-        throw InputError(where + ": discrete outcomes need a value and a weight > 0 in '" + t + "'");
+        throw InputError(where + ": discrete outcomes need a value and a weight > 0 in '" + t +
+                         "'");
       d.labels_.push_back(label);
       total += weight;
       d.cumulative_.push_back(total);
@@ -121,7 +123,9 @@ std::size_t Distribution::index(double u) const {
   return std::min<std::size_t>(it - cumulative_.begin(), cumulative_.size() - 1);
 }
 
-const std::string& Distribution::label(double u) const { return labels_.at(index(u)); }
+const std::string& Distribution::label(double u) const {
+  return labels_.at(index(u));
+}
 
 double Distribution::value(double u) const {
   switch (kind_) {
@@ -145,10 +149,14 @@ double Distribution::value(double u) const {
 
 double Distribution::lower() const {
   switch (kind_) {
-    case DistributionKind::fixed: return p1_;
-    case DistributionKind::uniform: return p1_;
-    case DistributionKind::normal: return truncated_ ? lo_ : -INFINITY;
-    case DistributionKind::lognormal: return truncated_ ? lo_ : 0.0;
+    case DistributionKind::fixed:
+      return p1_;
+    case DistributionKind::uniform:
+      return p1_;
+    case DistributionKind::normal:
+      return truncated_ ? lo_ : -INFINITY;
+    case DistributionKind::lognormal:
+      return truncated_ ? lo_ : 0.0;
     case DistributionKind::discrete: {
       double m = INFINITY;
       for (const auto& l : labels_) m = std::min(m, parse_number(l, "discrete value"));
@@ -160,10 +168,13 @@ double Distribution::lower() const {
 
 double Distribution::upper() const {
   switch (kind_) {
-    case DistributionKind::fixed: return p1_;
-    case DistributionKind::uniform: return p2_;
+    case DistributionKind::fixed:
+      return p1_;
+    case DistributionKind::uniform:
+      return p2_;
     case DistributionKind::normal:
-    case DistributionKind::lognormal: return truncated_ ? hi_ : INFINITY;
+    case DistributionKind::lognormal:
+      return truncated_ ? hi_ : INFINITY;
     case DistributionKind::discrete: {
       double m = -INFINITY;
       for (const auto& l : labels_) m = std::max(m, parse_number(l, "discrete value"));

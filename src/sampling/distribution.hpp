@@ -37,7 +37,8 @@ class Distribution {
 
  private:
   DistributionKind kind_ = DistributionKind::fixed;
-  double p1_ = 0, p2_ = 0;  // fixed: value; uniform: a, b; normal: mean, sd; lognormal: ln median, beta
+  double p1_ = 0,
+         p2_ = 0;  // fixed: value; uniform: a, b; normal: mean, sd; lognormal: ln median, beta
   double plo_ = 0, phi_ = 1;  // CDF of the truncation bounds (1-plo..phi used for truncation)
   bool truncated_ = false;
   double lo_ = 0, hi_ = 0;

@@ -142,6 +142,32 @@ double ModalBank::free_face_bound() const {
   return b;
 }
 
+void ModalBank::set_free_step(double h) {
+  if (!(h > 0.0 && std::isfinite(h))) throw InputError("damped Sears model: free step must be > 0");
+  h_free_ = h;
+  coef_free_.resize(omega_.size());
+  for (std::size_t i = 0; i < omega_.size(); ++i)
+    coef_free_[i] = recurrence_coefficients(omega_[i], xi_, h);
+}
+
+void ModalBank::step_free() {
+  for (int i = 0; i < modes(); ++i) {
+    const auto& c = coef_free_[i];
+    const double q = q_[i], v = v_[i];
+    q_[i] = c.A * q + c.B * v;
+    v_[i] = c.Av * q + c.Bv * v;
+  }
+}
+
+double ModalBank::face_motion_bound(double h) const {
+  double b = 0.0;
+  for (int i = 0; i < modes(); ++i) {
+    const double r = v_[i] / omega_[i];
+    b += std::sqrt(q_[i] * q_[i] + r * r) * std::min(2.0, omega_[i] * h);
+  }
+  return b;
+}
+
 void ModalBank::reset() {
   std::fill(q_.begin(), q_.end(), 0.0);
   std::fill(v_.begin(), v_.end(), 0.0);

@@ -86,6 +86,20 @@ class ModalBank {
   /// Sets every mode to rest.
   void reset();
 
+  /// Prepares free_step(): the free-vibration recurrence for a second (coarse) step h [s]
+  /// (event-driven stepping, docs/speed.md). Exact for unloaded modes at any h.
+  void set_free_step(double h);
+  /// The free step set by set_free_step() [s]; 0 when none.
+  double free_step() const { return h_free_; }
+  /// Advances one free step (no end loads) of length free_step(). No allocation.
+  void step_free();
+  /// Bound on how far either face can move, by internal vibration, within the next `h` seconds
+  /// of free (unloaded) motion [m]:
+  ///     |w(t + tau) - w(t)| <= sum_n R_n min(2, w_n h),  R_n = sqrt(q_n^2 + (q_n'/w_n)^2),
+  /// since a free damped mode keeps |q_n| <= R_n and |q_n'| <= w_n R_n (its energy
+  /// (q_n'^2 + w_n^2 q_n^2)/2 = w_n^2 R_n^2 / 2 cannot grow).
+  double face_motion_bound(double h) const;
+
  private:
   Slab slab_;
   double dt_ = 0.0;
@@ -94,6 +108,8 @@ class ModalBank {
   std::vector<double> omega_, q_, v_;
   std::vector<RecurrenceCoefficients> coef_;
   Flexibility flex_;
+  double h_free_ = 0.0;
+  std::vector<RecurrenceCoefficients> coef_free_;  // A, B, Av, Bv only
 };
 
 }  // namespace pound::sears

@@ -6,6 +6,7 @@
 #include "core/error.hpp"
 #include "sears/sears_row_layout.hpp"
 #include "sears/step_rule.hpp"
+#include "sears/translation_bound.hpp"
 
 namespace pound::sears {
 namespace {
@@ -76,12 +77,38 @@ double sears_row_step(const BuildingRow& row, const GroundMotion* motion,
   return choose_step(lim, model.dt_s);
 }
 
+SearsSteps sears_row_steps(const BuildingRow& row, const GroundMotion* motion,
+                           const SearsRowModel& model) {
+  SearsSteps st;
+  st.fine_s = st.coarse_s = sears_row_step(row, motion, model);
+  if (model.stepping == SearsStepping::fixed) return st;
+  // The coarse step: Newmark accuracy for the buildings, and no step over a record sample.
+  double hc = shortest_building_period(assemble(row)) * kCoarseStepPerBuildingPeriod;
+  if (motion && motion->dt > 0.0) hc = std::min(hc, motion->dt);
+  constexpr double kMaxRatio = 1e5;  // no building period and no record: free floors
+  if (!std::isfinite(hc)) hc = kMaxRatio * st.fine_s;
+  if (motion && motion->dt > 0.0) hc = motion->dt / std::ceil(motion->dt / hc - 1e-9);
+  if (model.dt_s > 0.0) {  // a given fine step is kept
+    st.ratio = static_cast<long>(std::floor(std::min(hc / st.fine_s, kMaxRatio) + 1e-9));
+    st.ratio = std::max(1L, st.ratio);
+  } else {  // the fine step divides the coarse one
+    st.ratio = std::max(1L, static_cast<long>(std::ceil(std::min(hc / st.fine_s, kMaxRatio) - 1e-9)));
+    st.fine_s = hc / st.ratio;
+  }
+  st.coarse_s = st.ratio * st.fine_s;
+  return st;
+}
+
 SearsRowResult solve_sears_row(const SearsRowProblem& p, const SearsRowModel& model) {
   const BuildingRow& row = *p.row;
   const AssembledRow a = assemble(row);
   RowContactLayout L = make_layout(row, a, model);
-  const double dt = sears_row_step(row, p.motion, model);
+  const SearsSteps st = sears_row_steps(row, p.motion, model);
+  const double dt = st.fine_s, hc = st.coarse_s;
+  const bool event = st.ratio > 1;
   build_banks(L, row, model, dt);
+  if (event)
+    for (auto& b : L.banks) b.set_free_step(hc);
   const int n = a.dofs(), ns = static_cast<int>(a.sites.size()),
             nf = static_cast<int>(L.floors.size());
 
@@ -93,6 +120,8 @@ SearsRowResult solve_sears_row(const SearsRowProblem& p, const SearsRowModel& mo
   // H = Mt^-1 [e_L - e_R], and u_{i+1} = u_hat - dt^2/4 H F.
   const Eigen::MatrixXd Mt = a.M + (0.5 * dt) * a.C + (0.25 * dt * dt) * a.K;
   const Eigen::LLT<Eigen::MatrixXd> mt(Mt);
+  // Coarse steps carry no contact force (event stepping only).
+  const Eigen::LLT<Eigen::MatrixXd> mt_coarse(a.M + (0.5 * hc) * a.C + (0.25 * hc * hc) * a.K);
   Eigen::MatrixXd Dsites = Eigen::MatrixXd::Zero(n, ns);  // columns e_L - e_R
   for (int s = 0; s < ns; ++s) {
     Dsites(a.sites[s].dof_left, s) = 1.0;
@@ -101,25 +130,69 @@ SearsRowResult solve_sears_row(const SearsRowProblem& p, const SearsRowModel& mo
   const Eigen::MatrixXd H = mt.solve(Dsites);
   const Eigen::MatrixXd S = (0.25 * dt * dt) * Dsites.transpose() * H + L.S_modal;
   const Eigen::VectorXd m_ones = a.M * Eigen::VectorXd::Ones(n);
+  TranslationBound bound(a, p.motion ? p.motion->pga() : 0.0);
 
   auto ag_at = [&](double t) { return p.motion ? p.motion->at(t) : 0.0; };
   Eigen::VectorXd u = p.u0.size() ? p.u0 : Eigen::VectorXd::Zero(n);
   Eigen::VectorXd v = p.v0.size() ? p.v0 : Eigen::VectorXd::Zero(n);
   Eigen::VectorXd acc = a.M.ldlt().solve(-m_ones * ag_at(0.0) - a.C * v - a.K * u);
   Eigen::VectorXd F = Eigen::VectorXd::Zero(ns), F_next = F, delta_pred(ns), delta(ns);
-  Eigen::VectorXd u_hat(n), a_next(n), rhs(n);
+  Eigen::VectorXd u_hat(n), a_next(n), rhs(n), work(n);
   for (int s = 0; s < ns; ++s)
     delta(s) = u(a.sites[s].dof_left) - u(a.sites[s].dof_right) - a.sites[s].gap;
   std::vector<EndLoads> begin(nf), end(nf);
+  std::vector<SectionValues> pred(nf), disp(nf);
+  std::vector<double> modal_bound(nf);
   auto loads = [&](const Eigen::VectorXd& f, std::vector<EndLoads>& out) {
     for (int i = 0; i < nf; ++i) {
       out[i].left_N = L.floors[i].site_left >= 0 ? f(L.floors[i].site_left) : 0.0;
       out[i].right_N = L.floors[i].site_right >= 0 ? -f(L.floors[i].site_right) : 0.0;
     }
   };
+  // a_next = Mt^-1 (p_{i+1} - C (v + h/2 a) - K (u + h v + h^2/4 a)), without contact forces.
+  auto newmark_predict = [&](double h, const Eigen::LLT<Eigen::MatrixXd>& f, double t_next) {
+    work = v + (0.5 * h) * acc;
+    rhs.noalias() = a.C * work;
+    work = u + h * v + (0.25 * h * h) * acc;
+    rhs.noalias() += a.K * work;
+    rhs = -m_ones * ag_at(t_next) - rhs;
+    a_next = f.solve(rhs);
+  };
+  auto newmark_update = [&](double h) {
+    u += h * v + (0.25 * h * h) * (acc + a_next);
+    v += (0.5 * h) * (acc + a_next);
+    acc = a_next;
+  };
+  auto fine_step = [&](double t_next) {
+    newmark_predict(dt, mt, t_next);
+    u_hat = u + dt * v + (0.25 * dt * dt) * (acc + a_next);
+    loads(F, begin);
+    F_next.setZero();
+    if (p.contacts && ns > 0) {
+      for (int k = 0; k < nf; ++k) pred[k] = L.banks[k].predict(begin[k]);
+      for (int s = 0; s < ns; ++s)
+        delta_pred(s) = u_hat(a.sites[s].dof_left) - u_hat(a.sites[s].dof_right) +
+                        pred[L.site_left_floor[s]].right - pred[L.site_right_floor[s]].left -
+                        a.sites[s].gap;
+      F_next = F;  // warm start
+      solve_forces(L.laws, S, delta_pred, F_next);
+    }
+    if (ns > 0) a_next.noalias() -= H * F_next;
+    newmark_update(dt);
+    loads(F_next, end);
+    for (int k = 0; k < nf; ++k) L.banks[k].step(begin[k], end[k]);
+  };
+  auto coarse_step = [&](double t_next) {  // F = 0 at both ends
+    newmark_predict(hc, mt_coarse, t_next);
+    newmark_update(hc);
+    F_next.setZero();
+    loads(F_next, end);
+    for (int k = 0; k < nf; ++k) L.banks[k].step_free();
+  };
 
   SearsRowResult out;
   out.dt_s = dt;
+  out.coarse_dt_s = hc;
   RowResult& r = out.row;
   r.peak_disp = r.peak_drift = r.peak_abs_accel = Eigen::VectorXd::Zero(n);
   r.sites.assign(ns, SiteResult{});
@@ -130,50 +203,59 @@ SearsRowResult solve_sears_row(const SearsRowProblem& p, const SearsRowModel& mo
     in_contact[s] = delta(s) > 0.0;
     if (in_contact[s]) out.contacts[s].phases.push_back(ContactPhase{});  // open at t = 0
   }
+  // True when no contact can start within the next coarse step (docs/speed.md): no force acts
+  // now, and at every site the bound on the faces' approach (building translation plus the
+  // internal vibration of both slabs), times kCoarseBoundSafety, stays below the gap.
+  auto contact_free = [&]() {
+    if (!p.contacts || ns == 0) return true;
+    for (int s = 0; s < ns; ++s)
+      if (in_contact[s] || F(s) != 0.0 || !(delta(s) < 0.0)) return false;
+    bound.set_state(u, v);
+    for (int s = 0; s < ns; ++s)
+      if (!(kCoarseBoundSafety * bound.approach(a.sites[s].dof_left, a.sites[s].dof_right, v, hc) <
+            -delta(s)))
+        return false;
+    for (int k = 0; k < nf; ++k) modal_bound[k] = L.banks[k].face_motion_bound(hc);
+    for (int s = 0; s < ns; ++s) {
+      const double b = bound.approach(a.sites[s].dof_left, a.sites[s].dof_right, v, hc) +
+                       modal_bound[L.site_left_floor[s]] + modal_bound[L.site_right_floor[s]];
+      if (!(kCoarseBoundSafety * b < -delta(s))) return false;
+    }
+    return true;
+  };
   const long steps = static_cast<long>(std::ceil(p.t_end / dt - 1e-9));
 
-  for (long i = 0; i < steps; ++i) {
-    const double t_next = (i + 1) * dt;
-    rhs = -m_ones * ag_at(t_next) - a.C * (v + (0.5 * dt) * acc) -
-          a.K * (u + dt * v + (0.25 * dt * dt) * acc);
-    a_next = mt.solve(rhs);  // without contact forces
-    u_hat = u + dt * v + (0.25 * dt * dt) * (acc + a_next);
-    loads(F, begin);
-    F_next.setZero();
-    if (p.contacts && ns > 0) {
-      std::vector<SectionValues> pred(nf);
-      for (int k = 0; k < nf; ++k) pred[k] = L.banks[k].predict(begin[k]);
-      for (int s = 0; s < ns; ++s)
-        delta_pred(s) = u_hat(a.sites[s].dof_left) - u_hat(a.sites[s].dof_right) +
-                        pred[L.site_left_floor[s]].right - pred[L.site_right_floor[s]].left -
-                        a.sites[s].gap;
-      F_next = F;  // warm start
-      solve_forces(L.laws, S, delta_pred, F_next);
+  long i = 0;
+  while (i < steps) {
+    const bool coarse = event && i % st.ratio == 0 && i + st.ratio <= steps && contact_free();
+    const double h = coarse ? hc : dt;
+    i += coarse ? st.ratio : 1;
+    const double t_next = i * dt;
+    if (coarse) {
+      coarse_step(t_next);
+      ++out.counts.coarse;
+    } else {
+      fine_step(t_next);
+      ++out.counts.fine;
     }
-    if (ns > 0) a_next -= H * F_next;
-    u += dt * v + (0.25 * dt * dt) * (acc + a_next);
-    v += (0.5 * dt) * (acc + a_next);
-    acc = a_next;
-    loads(F_next, end);
-    for (int k = 0; k < nf; ++k) L.banks[k].step(begin[k], end[k]);
     if (!u.allFinite())
       throw NumericalError("damped Sears model: non-finite state at t = " + std::to_string(t_next) +
                            " s");
     const double ag = ag_at(t_next);
 
     // Contact sites: events, peaks, impulse (force linear over the step).
-    std::vector<SectionValues> disp(nf);
     for (int k = 0; k < nf; ++k) disp[k] = L.banks[k].displacement();
     for (int s = 0; s < ns; ++s) {
       const double d = u(a.sites[s].dof_left) - u(a.sites[s].dof_right) +
                        disp[L.site_left_floor[s]].right - disp[L.site_right_floor[s]].left -
                        a.sites[s].gap;
+      if (coarse && p.contacts && d > 0.0) ++out.counts.bound_violations;
       SiteResult& sr = r.sites[s];
-      const double step_impulse = 0.5 * (F(s) + F_next(s)) * dt;
+      const double step_impulse = 0.5 * (F(s) + F_next(s)) * h;
       sr.impulse += step_impulse;
       sr.peak_force = std::max(sr.peak_force, F_next(s));
       sr.peak_penetration = std::max(sr.peak_penetration, d);
-      const double t_cross = delta(s) != d ? t_next - dt + dt * delta(s) / (delta(s) - d) : t_next;
+      const double t_cross = delta(s) != d ? t_next - h + h * delta(s) / (delta(s) - d) : t_next;
       std::vector<ContactPhase>& phases = out.contacts[s].phases;
       if (!in_contact[s] && d > 0.0) {
         in_contact[s] = true;
@@ -225,7 +307,7 @@ SearsRowResult solve_sears_row(const SearsRowProblem& p, const SearsRowModel& mo
   r.u_end = u;
   r.v_end = v;
   r.t_end = steps * dt;
-  r.steps = steps;
+  r.steps = out.counts.fine + out.counts.coarse;
   return out;
 }
 
@@ -237,10 +319,14 @@ SearsRowSimulation simulate_sears_row(const BuildingRow& row, const GroundMotion
   p.t_end = motion.duration() + opt.extra_time;
   p.record_history = opt.record_history;
   p.contacts = false;
-  RowResult free = solve_sears_row(p, model).row;
+  SearsRowResult free_run = solve_sears_row(p, model);
+  RowResult free = std::move(free_run.row);
   p.contacts = true;
   SearsRowResult pounding = solve_sears_row(p, model);
   SearsRowSimulation out;
+  out.coarse_dt_s = pounding.coarse_dt_s;
+  out.counts_free = free_run.counts;
+  out.counts_pounding = pounding.counts;
   out.slabs = std::move(pounding.slabs);
   out.contacts = std::move(pounding.contacts);
   out.dt_s = pounding.dt_s;

@@ -16,6 +16,10 @@
 //      then every state is advanced with the forces linear over the step.
 // Both integrators are second order; the step follows sears/step_rule.hpp with the building
 // periods and the record spacing as further bounds.
+// Event stepping (default; docs/speed.md): while no contact acts and a rigorous bound on the
+// faces' approach (TranslationBound for the floors, ModalBank::face_motion_bound for the
+// internal vibration) shows that none can start within the next coarse step, one coarse step
+// replaces `ratio` fine ones: Newmark for the floors, the exact free recurrence for the modes.
 #include <Eigen/Dense>
 #include <limits>
 #include <vector>
@@ -36,6 +40,20 @@ struct FloorSlabProperties {
   double poisson = 0.0;    ///< Poisson's ratio [-]
 };
 
+/// Time stepping of solve_sears_row (docs/speed.md).
+enum class SearsStepping {
+  fixed,  ///< the step rule's step throughout (the reference path)
+  event,  ///< coarse steps while a rigorous bound excludes contact, the fine step otherwise
+};
+
+/// A coarse step is at most this fraction of the shortest building period (Newmark average
+/// acceleration: period error (w h)^2 / 12 = 0.13 % at h = T / 50) [-].
+inline constexpr double kCoarseStepPerBuildingPeriod = 1.0 / 50.0;
+/// A coarse step is taken only if the bound on the faces' approach, times this factor, is below
+/// the current gap: it covers the difference between the Newmark step and the exact motion the
+/// bound holds for, and round-off [-].
+inline constexpr double kCoarseBoundSafety = 2.0;
+
 struct SearsRowModel {
   std::vector<FloorSlabProperties> slabs;  ///< one per building of the row
   int modes = 100;                         ///< N internal modes per colliding floor [-]
@@ -45,7 +63,8 @@ struct SearsRowModel {
   double D = 1.0;        ///< flat: fraction factor (Th. 8.2) [-]
   double hertz_k = 0.0;  ///< hertz: stiffness [N/m^1.5]
   double force_cap_N = std::numeric_limits<double>::infinity();  ///< PF_max (Th. 9.1) [N]
-  double dt_s = 0.0;                                             ///< 0 = automatic
+  double dt_s = 0.0;  ///< (fine) step; 0 = automatic
+  SearsStepping stepping = SearsStepping::event;
   /// Approach velocity used for the Hertz contact time scale of the step rule [m/s].
   double hertz_reference_velocity = 1.0;
   /// A contact phase counts as an impact when its peak force is at least this fraction of the
@@ -96,16 +115,39 @@ struct SearsRowProblem {
   Eigen::VectorXd u0, v0;                ///< initial floor state (empty: at rest) [m], [m/s]
 };
 
+/// How a run was stepped.
+struct SearsStepCounts {
+  long fine = 0;              ///< steps of the fine (step rule) size
+  long coarse = 0;            ///< coarse steps (event stepping)
+  long bound_violations = 0;  ///< coarse steps that ended with an overlap (must stay 0)
+};
+
 struct SearsRowResult {
   RowResult row;                 ///< the fields the lumped solver reports
   std::vector<SlabPeaks> slabs;  ///< colliding floors only
   std::vector<SiteContacts> contacts;  ///< per site (row.sites[s].impacts is the raw count)
-  double dt_s = 0.0;             ///< step used [s]
+  double dt_s = 0.0;             ///< (fine) step used [s]
+  double coarse_dt_s = 0.0;      ///< coarse step [s] (= dt_s for fixed stepping)
+  SearsStepCounts counts;
 };
 
 /// The step the model uses for this row and motion (automatic or the model's dt, checked).
+/// This is the fixed path's step; event stepping uses sears_row_steps().
 double sears_row_step(const BuildingRow& row, const GroundMotion* motion,
                       const SearsRowModel& model);
+
+/// Fine and coarse steps: coarse = ratio x fine. Fixed stepping: sears_row_step(), ratio 1.
+/// Event stepping: the coarse step is the largest step <= min(record spacing,
+/// kCoarseStepPerBuildingPeriod x the shortest building period) that divides the record spacing;
+/// the automatic fine step is the largest step <= sears_row_step() that divides the coarse one
+/// (a given dt is kept, and the ratio rounded down).
+struct SearsSteps {
+  double fine_s = 0.0;
+  double coarse_s = 0.0;
+  long ratio = 1;
+};
+SearsSteps sears_row_steps(const BuildingRow& row, const GroundMotion* motion,
+                           const SearsRowModel& model);
 
 /// One run. Throws InputError (bad model, too large dt) or NumericalError (non-finite state).
 SearsRowResult solve_sears_row(const SearsRowProblem& p, const SearsRowModel& model);
@@ -114,7 +156,9 @@ struct SearsRowSimulation {
   RowSimulation base;            ///< as simulate_row() returns for the lumped models
   std::vector<SlabPeaks> slabs;  ///< peak face and slab-centre accelerations (pounding run)
   std::vector<SiteContacts> contacts;  ///< per site: phases and thresholded impact count
-  double dt_s = 0.0;             ///< [s]
+  double dt_s = 0.0;             ///< (fine) step [s]
+  double coarse_dt_s = 0.0;      ///< coarse step [s]
+  SearsStepCounts counts_free, counts_pounding;
 };
 
 /// With and without pounding (same step), and the response measures of physics.md section 4.

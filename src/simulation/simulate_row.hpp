@@ -13,8 +13,8 @@
 namespace pound {
 
 struct FloorResponse {
-  int building = 0;  ///< 0-based building index
-  int floor = 0;     ///< 1-based floor number
+  int building = 0;                             ///< 0-based building index
+  int floor = 0;                                ///< 1-based floor number
   double disp_pounding = 0.0, disp_free = 0.0;  ///< peak |u| [m]
   double disp_amplification = 0.0;              ///< disp_pounding / disp_free [-] (mu_max/u_max)
   double drift_ratio_pounding = 0.0, drift_ratio_free = 0.0;  ///< peak storey drift / height [-]
@@ -38,8 +38,8 @@ struct RowSimulation {
 };
 
 struct RowSimulationOptions {
-  double extra_time = 0.0;       ///< free vibration after the record ends [s]
-  bool record_history = false;   ///< keep time histories of both runs
+  double extra_time = 0.0;      ///< free vibration after the record ends [s]
+  bool record_history = false;  ///< keep time histories of both runs
 };
 
 /// The response measures of physics.md section 4 from a free and a pounding run of the same

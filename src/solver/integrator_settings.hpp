@@ -9,10 +9,11 @@ enum class StepControl {
 
 struct IntegratorSettings {
   StepControl control = StepControl::adaptive;
-  double rtol = 1e-8;   ///< relative local-error tolerance [-]
-  double atol = 1e-10;  ///< absolute local-error tolerance on displacements [m] and velocities [m/s]
-  double dt = 0.0;      ///< fixed step [s] (StepControl::fixed)
-  double h_max = 0.0;   ///< largest step [s]; 0 = automatic: min(record step, T_min / 20)
+  double rtol = 1e-8;  ///< relative local-error tolerance [-]
+  double atol =
+      1e-10;           ///< absolute local-error tolerance on displacements [m] and velocities [m/s]
+  double dt = 0.0;     ///< fixed step [s] (StepControl::fixed)
+  double h_max = 0.0;  ///< largest step [s]; 0 = automatic: min(record step, T_min / 20)
   long max_steps = 200000000;  ///< guard against runaway step counts
 };
 

@@ -121,7 +121,8 @@ class Solver {
     const auto& s = row_.sites[i];
     return y(n_ + s.dof_left) - y(n_ + s.dof_right);
   }
-  Hermite site_hermite(int i, const Eigen::VectorXd& y0, const Eigen::VectorXd& y1, double h) const {
+  Hermite site_hermite(int i, const Eigen::VectorXd& y0, const Eigen::VectorXd& y1,
+                       double h) const {
     return {gap_function(y0, i), gap_function(y1, i), h * gap_rate(y0, i), h * gap_rate(y1, i)};
   }
 
@@ -204,9 +205,9 @@ class Solver {
   const AssembledRow& row_;
   const int n_, ns_;
   bool pounding_ = false;
-  std::vector<char> active_;   // contact active per site
-  std::vector<double> v0_;     // approach velocity at the start of the current contact [m/s]
-  std::vector<int> below_;     // DOF of the floor below, -1 for a first floor
+  std::vector<char> active_;  // contact active per site
+  std::vector<double> v0_;    // approach velocity at the start of the current contact [m/s]
+  std::vector<int> below_;    // DOF of the floor below, -1 for a first floor
   std::vector<double> last_event_t_;
   std::vector<int> chatter_;
   Eigen::VectorXd force_, P_;
@@ -270,8 +271,9 @@ void Solver::apply_event(int i, double t, Eigen::VectorXd& y) {
       if (++chatter_[i] > 1000)
         throw NumericalError("contact site " + std::to_string(i) + " (pair " +
                              std::to_string(row_.sites[i].pair + 1) + ", floor " +
-                             std::to_string(row_.sites[i].level + 1) + "): impacts accumulate at t = " +
-                             std::to_string(t) + " s (chatter); use a force-based contact model");
+                             std::to_string(row_.sites[i].level + 1) +
+                             "): impacts accumulate at t = " + std::to_string(t) +
+                             " s (chatter); use a force-based contact model");
     } else {
       chatter_[i] = 0;
     }
@@ -342,8 +344,8 @@ RowResult Solver::run() {
   bool any_contact = false;
   while (t < t_end * (1 - 1e-14)) {
     if (r_.steps + r_.rejected > s_.max_steps)
-      throw NumericalError("more than " + std::to_string(s_.max_steps) + " steps by t = " +
-                           std::to_string(t) + " s");
+      throw NumericalError("more than " + std::to_string(s_.max_steps) +
+                           " steps by t = " + std::to_string(t) + " s");
     // The step ends at the next record sample, grid point or the end.
     double t_stop = t_end;
     if (rec_dt > 0) {
@@ -424,7 +426,8 @@ RowResult Solver::run() {
             found = true;
           }
         }
-        if (!found) throw NumericalError("contact event location failed at t = " + std::to_string(t));
+        if (!found)
+          throw NumericalError("contact event location failed at t = " + std::to_string(t));
         if (hc > 0.0) {
           update_peaks(y, ytry, hc, ktry);
           y = ytry;
@@ -437,8 +440,7 @@ RowResult Solver::run() {
         record(t, y, k1);
         if (p_.stop_after_separation && any_contact) {
           bool all_open = true;
-          for (int i = 0; i < ns_; ++i)
-            all_open = all_open && !active_[i] && gap_rate(y, i) < 0.0;
+          for (int i = 0; i < ns_; ++i) all_open = all_open && !active_[i] && gap_rate(y, i) < 0.0;
           if (all_open) break;
         }
         continue;

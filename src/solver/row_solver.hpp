@@ -6,9 +6,8 @@
 // so no step straddles the start or end of a contact, where the force (and for the
 // stereomechanical model the velocity) is discontinuous. Steps also end on every sample of the
 // ground-motion record, where ag(t) has kinks. Kernel only: no files, no printing.
-#include <vector>
-
 #include <Eigen/Dense>
+#include <vector>
 
 #include "contact/contact_law.hpp"
 #include "motion/ground_motion.hpp"
@@ -28,10 +27,10 @@ struct SiteResult {
 
 /// Time histories, one entry per accepted step and per event.
 struct History {
-  std::vector<double> t;                 ///< [s]
-  std::vector<Eigen::VectorXd> u;        ///< floor displacements relative to the ground [m]
-  std::vector<Eigen::VectorXd> a_abs;    ///< absolute floor accelerations [m/s^2]
-  std::vector<Eigen::VectorXd> force;    ///< contact force per site [N]
+  std::vector<double> t;               ///< [s]
+  std::vector<Eigen::VectorXd> u;      ///< floor displacements relative to the ground [m]
+  std::vector<Eigen::VectorXd> a_abs;  ///< absolute floor accelerations [m/s^2]
+  std::vector<Eigen::VectorXd> force;  ///< contact force per site [N]
 };
 
 struct RowResult {
@@ -39,8 +38,8 @@ struct RowResult {
   Eigen::VectorXd peak_drift;      ///< max |u_j - u_{j-1}| per floor DOF (its storey) [m]
   Eigen::VectorXd peak_abs_accel;  ///< max |u'' + ag| per floor DOF [m/s^2]
   std::vector<SiteResult> sites;
-  Eigen::VectorXd u_end, v_end;    ///< state at the end [m], [m/s]
-  double t_end = 0.0;              ///< time reached [s]
+  Eigen::VectorXd u_end, v_end;  ///< state at the end [m], [m/s]
+  double t_end = 0.0;            ///< time reached [s]
   long steps = 0, rejected = 0, events = 0;
   History history;
 };

@@ -1,10 +1,9 @@
 #pragma once
 // A lumped-mass shear building (physics.md section 1; Th. 3.6, 8.5): floors j = 1..n with
 // masses m_j and storey stiffnesses k_j between floor j-1 and j (floor 0 is the ground).
+#include <Eigen/Dense>
 #include <string>
 #include <vector>
-
-#include <Eigen/Dense>
 
 namespace pound {
 

@@ -3,9 +3,8 @@
 // buildings, a building between two others, a building at the end of a row). Floor j of
 // building b and floor j of building b+1 can collide when both exist, so buildings of
 // unequal height collide up to the lower roof.
-#include <vector>
-
 #include <Eigen/Dense>
+#include <vector>
 
 #include "structure/building.hpp"
 
@@ -20,8 +19,8 @@ struct BuildingRow {
 
 /// One floor level of one adjacent pair where contact can happen.
 struct ContactSite {
-  int pair = 0;     ///< building pair index p (buildings p and p+1)
-  int level = 0;    ///< floor level, 0-based (floor level+1)
+  int pair = 0;       ///< building pair index p (buildings p and p+1)
+  int level = 0;      ///< floor level, 0-based (floor level+1)
   int dof_left = 0;   ///< global DOF of the left building's floor
   int dof_right = 0;  ///< global DOF of the right building's floor
   double gap = 0.0;   ///< at-rest gap [m]
@@ -30,8 +29,8 @@ struct ContactSite {
 /// The assembled row: block-diagonal matrices over all floors, building after building.
 struct AssembledRow {
   Eigen::MatrixXd M, C, K;
-  Eigen::VectorXd inv_mass;           ///< 1 / M_ii [1/kg]
-  std::vector<int> offset;            ///< first global DOF of each building
+  Eigen::VectorXd inv_mass;              ///< 1 / M_ii [1/kg]
+  std::vector<int> offset;               ///< first global DOF of each building
   std::vector<Eigen::VectorXd> periods;  ///< per building [s]
   std::vector<ContactSite> sites;
   int dofs() const { return static_cast<int>(inv_mass.size()); }

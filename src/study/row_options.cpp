@@ -22,8 +22,7 @@ std::vector<OptionSpec> row_option_specs() {
        "rayleigh (ratio on modes 1 and 2) or modal (ratio on every mode)"},
       {"pair#.gap", "m", "0",
        "at-rest gap between building # and #+1 (one value, or one per colliding floor)"},
-      {"contact.model", "", "lve",
-       "contact model: " + contact_model_names()},
+      {"contact.model", "", "lve", "contact model: " + contact_model_names()},
       {"contact.e", "-", "0.65", "coefficient of restitution, in (0, 1]"},
       {"contact.k", "N/m or N/m^1.5", "",
        "contact stiffness (N/m for linear laws, N/m^1.5 for Hertz laws)"},
@@ -35,14 +34,18 @@ std::vector<OptionSpec> row_option_specs() {
        "MLVe damping-restitution relation: exact or published (Mahmoud & Jankowski 2011)"},
       {"motion.file", "", "", "ground-motion record (.AT2, one/two columns, or fixed width)"},
       {"motion.format", "", "automatic", "automatic, at2, columns or fixed-width"},
-      {"motion.units", "", "", "units of the record values when the file does not state "
-                               "them: g, m/s2 or cm/s2"},
+      {"motion.units", "", "",
+       "units of the record values when the file does not state "
+       "them: g, m/s2 or cm/s2"},
       {"motion.dt", "s", "", "sample spacing of a one-column record without a header"},
       {"motion.scale", "-", "1", "factor applied to the record"},
       {"motion.duration", "s", "", "use only the first seconds of the record"},
       {"motion.baseline", "", "false", "baseline-correct the record (true/false)"},
+      {"integrator", "", "",
+       "shorthand: event (adaptive steps, fine only through contacts) or fixed (with --dt)"},
+      {"dt", "s", "", "shorthand for the fixed step (integrator.dt, sears.dt)"},
       {"integrator.control", "", "adaptive",
-       "adaptive (error-controlled Dormand-Prince 5(4)) or fixed"},
+       "adaptive (error-controlled Dormand-Prince 5(4); also 'event') or fixed"},
       {"integrator.rtol", "-", "1e-8", "relative local-error tolerance"},
       {"integrator.atol", "m", "1e-10", "absolute local-error tolerance (m and m/s)"},
       {"integrator.dt", "s", "", "step of the fixed-step integrator"},
@@ -83,13 +86,16 @@ BuildingRow row_from_options(const Options& opt) {
   for (int b = 1; b <= nb; ++b) {
     const std::string pre = "building" + std::to_string(b) + ".";
     Building bd;
-    bd.name = opt.given(pre + "name") ? opt.get_string(pre + "name") : "building" + std::to_string(b);
+    bd.name =
+        opt.given(pre + "name") ? opt.get_string(pre + "name") : "building" + std::to_string(b);
     const auto masses = opt.get_doubles(pre + "masses");
     for (double m : masses)
       if (!(m > 0)) throw opt.invalid(pre + "masses", "every floor mass must be > 0 kg");
     bd.masses = masses;
-    bd.stiffnesses = positive_list(opt, pre + "stiffnesses", masses.size(), "every storey stiffness");
-    bd.storey_heights = positive_list(opt, pre + "storey_heights", masses.size(), "every storey height");
+    bd.stiffnesses =
+        positive_list(opt, pre + "stiffnesses", masses.size(), "every storey stiffness");
+    bd.storey_heights =
+        positive_list(opt, pre + "storey_heights", masses.size(), "every storey height");
     bd.damping_ratio = opt.get_double(pre + "damping");
     if (!(bd.damping_ratio >= 0 && bd.damping_ratio < 1))
       throw opt.invalid(pre + "damping", "valid: a damping ratio in [0, 1)");
@@ -138,9 +144,10 @@ ContactSpec contact_from_options(const Options& opt, const BuildingRow& row) {
         for (double k : b.stiffnesses) kmax = std::max(kmax, k);
       c.params.k = opt.get_positive("contact.k_factor") * kmax;
     } else {
-      throw InputError(opt.where("contact.k") + ": missing; model '" + c.model +
-                       "' needs a contact stiffness k [" + info.stiffness_unit +
-                       "] or k_factor (a multiple of the larger storey stiffness, commonly 20-100)");
+      throw InputError(
+          opt.where("contact.k") + ": missing; model '" + c.model +
+          "' needs a contact stiffness k [" + info.stiffness_unit +
+          "] or k_factor (a multiple of the larger storey stiffness, commonly 20-100)");
     }
   }
   c.params.v0_min = opt.get_positive("contact.v0_min");
@@ -152,18 +159,20 @@ ContactSpec contact_from_options(const Options& opt, const BuildingRow& row) {
 
 IntegratorSettings integrator_from_options(const Options& opt) {
   IntegratorSettings s;
-  const std::string c = opt.get_string("integrator.control");
-  if (c == "adaptive")
+  const std::string key = opt.given("integrator") ? "integrator" : "integrator.control";
+  const std::string c = opt.get_string(key);
+  if (c == "adaptive" || c == "event")
     s.control = StepControl::adaptive;
   else if (c == "fixed")
     s.control = StepControl::fixed;
   else
-    throw opt.invalid("integrator.control", "valid: adaptive or fixed");
+    throw opt.invalid(key, "valid: event (adaptive) or fixed");
   s.rtol = opt.get_positive("integrator.rtol");
   s.atol = opt.get_positive("integrator.atol");
-  if (opt.given("integrator.dt")) s.dt = opt.get_positive("integrator.dt");
+  const std::string dt_key = opt.given("dt") ? "dt" : "integrator.dt";
+  if (opt.given(dt_key)) s.dt = opt.get_positive(dt_key);
   if (s.control == StepControl::fixed && !(s.dt > 0))
-    throw opt.invalid("integrator.dt", "fixed-step integration needs dt > 0 s");
+    throw opt.invalid(dt_key, "fixed-step integration needs a step dt > 0 s (--dt)");
   if (opt.given("integrator.h_max")) s.h_max = opt.get_positive("integrator.h_max");
   return s;
 }

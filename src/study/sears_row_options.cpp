@@ -17,7 +17,9 @@ std::vector<OptionSpec> sears_row_option_specs() {
       {"sears.D", "-", "1", "sears: fraction factor of the flat contact stiffness, >= 1"},
       {"sears.k", "N/m^1.5", "", "sears: Hertz contact stiffness (contact = hertz)"},
       {"sears.force_cap", "N", "", "sears: cap PF_max on the contact force (Th. 9.1)"},
-      {"sears.dt", "s", "", "sears: time step (default: automatic, docs/sears.md)"},
+      {"sears.dt", "s", "", "sears: (fine) time step (default: automatic, docs/sears.md)"},
+      {"sears.integrator", "", "event",
+       "sears: event (coarse steps while a bound excludes contact, docs/speed.md) or fixed"},
   };
 }
 
@@ -53,6 +55,14 @@ sears::SearsRowModel sears_row_from_options(const Options& opt, const BuildingRo
   }
   if (opt.given("sears.force_cap")) m.force_cap_N = opt.get_positive("sears.force_cap");
   if (opt.given("sears.dt")) m.dt_s = opt.get_positive("sears.dt");
+  const std::string integ = opt.get_string("sears.integrator");
+  if (integ == "event") {
+    m.stepping = sears::SearsStepping::event;
+  } else if (integ == "fixed") {
+    m.stepping = sears::SearsStepping::fixed;
+  } else {
+    throw opt.invalid("sears.integrator", "valid: event or fixed");
+  }
   return m;
 }
 

@@ -50,7 +50,8 @@ class Cli : public ::testing::Test {
         "[building2]\nmasses = 1000\nstiffnesses = 5e5\n"
         "[pair1]\ngap = 0.01\n"
         "[contact]\nmodel = hc-linear\ne = 0.5\nk = 5e7\n"
-        "[motion]\nfile = " + motion_ + "\nduration = 2\n";
+        "[motion]\nfile = " +
+        motion_ + "\nduration = 2\n";
     if (!replace_from.empty()) {
       const auto p = text.find(replace_from);
       EXPECT_NE(p, std::string::npos) << replace_from;
@@ -67,7 +68,8 @@ class Cli : public ::testing::Test {
     const CmdResult r = run_pound("simulate --config " + study_path + " --histories " + h5());
     EXPECT_EQ(r.code, 2) << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
-    for (const auto& f : fragments) EXPECT_NE(r.err.find(f), std::string::npos) << f << " in: " << r.err;
+    for (const auto& f : fragments)
+      EXPECT_NE(r.err.find(f), std::string::npos) << f << " in: " << r.err;
     EXPECT_FALSE(fs::exists(h5()));
     for (const auto& entry : fs::directory_iterator(dir_))
       EXPECT_EQ(entry.path().filename().string().find("hist.h5"), std::string::npos);
@@ -86,7 +88,8 @@ TEST_F(Cli, ValidStudyWritesHistoriesAndJson) {
 }
 
 TEST_F(Cli, UnknownKey) {
-  expect_error(study("gap = 0.01", "gap = 0.01\ngpa = 3"), {"study.ini:9", "pair1.gpa", "pair#.gap"});
+  expect_error(study("gap = 0.01", "gap = 0.01\ngpa = 3"),
+               {"study.ini:9", "pair1.gpa", "pair#.gap"});
 }
 
 TEST_F(Cli, MissingMotionFile) {
@@ -94,7 +97,8 @@ TEST_F(Cli, MissingMotionFile) {
 }
 
 TEST_F(Cli, NegativeMass) {
-  expect_error(study("masses = 1000, 1000", "masses = 1000, -1000"), {"study.ini:2", "building1.masses", "> 0"});
+  expect_error(study("masses = 1000, 1000", "masses = 1000, -1000"),
+               {"study.ini:2", "building1.masses", "> 0"});
 }
 
 TEST_F(Cli, NanMass) {

@@ -55,17 +55,19 @@ std::vector<char> read_raw(const std::string& file, const std::string& path) {
 }
 
 void expect_same_numbers(const std::string& a, const std::string& b) {
-  for (const char* p : {"/samples/id", "/samples/status", "/samples/im", "/samples/scale",
-                        "/samples/e", "/samples/gap", "/samples/k_factor",
-                        "/response/peak_disp_pounding", "/response/peak_disp_free",
-                        "/response/peak_drift_pounding", "/response/peak_drift_free",
-                        "/response/peak_accel_pounding", "/response/peak_accel_free",
-                        "/response/peak_force", "/response/impacts"}) {
+  for (const char* p :
+       {"/samples/id", "/samples/status", "/samples/im", "/samples/scale", "/samples/e",
+        "/samples/gap", "/samples/k_factor", "/response/peak_disp_pounding",
+        "/response/peak_disp_free", "/response/peak_drift_pounding", "/response/peak_drift_free",
+        "/response/peak_accel_pounding", "/response/peak_accel_free", "/response/peak_force",
+        "/response/impacts"}) {
     EXPECT_EQ(read_raw(a, p), read_raw(b, p)) << p << " differs between " << a << " and " << b;
   }
 }
 
-std::string pound(const std::string& args) { return std::string(POUND_BINARY) + " campaign --config " + kStudy + " --quiet " + args; }
+std::string pound(const std::string& args) {
+  return std::string(POUND_BINARY) + " campaign --config " + kStudy + " --quiet " + args;
+}
 
 TEST(CampaignRun, SameNumbersOnOneAndTwoRanks) {
   const std::string one = dir() + "/one.h5", two = dir() + "/two.h5";

@@ -15,12 +15,24 @@ namespace {
 
 CampaignStudy tiny_study(long samples = 5) {
   const char* argv[] = {"campaign",
-                        "--building1.masses", "100", "--building1.stiffnesses", "1e4",
-                        "--building2.masses", "100,100", "--building2.stiffnesses", "1e4,1e4",
-                        "--contact.k", "1e6", "--sample.e", "uniform(0.3, 0.9)",
-                        "--motion.source", "records", "--motion.file",
+                        "--building1.masses",
+                        "100",
+                        "--building1.stiffnesses",
+                        "1e4",
+                        "--building2.masses",
+                        "100,100",
+                        "--building2.stiffnesses",
+                        "1e4,1e4",
+                        "--contact.k",
+                        "1e6",
+                        "--sample.e",
+                        "uniform(0.3, 0.9)",
+                        "--motion.source",
+                        "records",
+                        "--motion.file",
                         POUND_SOURCE_DIR "/motions/elcentro-1940-ns.dat",
-                        "--intensity.levels", "0.1"};
+                        "--intensity.levels",
+                        "0.1"};
   Options opt("campaign", "", campaign_option_specs());
   opt.parse(sizeof argv / sizeof *argv, argv);
   return campaign_from_options(opt, samples, 3);

@@ -16,7 +16,8 @@ TEST(Restitution, LveDampingRatioReproducesLogDecrementOfHalfCycle) {
     const double xi = lve_damping_ratio(e);
     EXPECT_NEAR(std::exp(-xi * M_PI / std::sqrt(1 - xi * xi)), e, 1e-14);
   }
-  EXPECT_NEAR(lve_damping_ratio(0.4), 0.27999, 1e-4);  // hand value: -ln 0.4 / sqrt(pi^2 + ln^2 0.4)
+  EXPECT_NEAR(lve_damping_ratio(0.4), 0.27999,
+              1e-4);  // hand value: -ln 0.4 / sqrt(pi^2 + ln^2 0.4)
 }
 
 TEST(Restitution, HuntCrossleyFactorSolvesItsDefiningEquation) {

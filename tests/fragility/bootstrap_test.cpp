@@ -1,11 +1,12 @@
 // Bootstrap bands (resampling within stripes) against the asymptotic band from the inverse
 // Fisher information on a large synthetic data set, and determinism of the draws.
+#include "fragility/bootstrap.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <vector>
 
-#include "fragility/bootstrap.hpp"
 #include "sampling/counter_rng.hpp"
 #include "sampling/normal.hpp"
 

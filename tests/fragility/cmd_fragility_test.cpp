@@ -16,7 +16,8 @@ namespace fs = std::filesystem;
 
 std::string dir() {
   static const std::string d = [] {
-    const fs::path p = fs::temp_directory_path() / ("pound_fragility_" + std::to_string(::getpid()));
+    const fs::path p =
+        fs::temp_directory_path() / ("pound_fragility_" + std::to_string(::getpid()));
     fs::create_directories(p);
     return p.string();
   }();
@@ -40,8 +41,8 @@ const std::string& campaign() {
   static const std::string out = [] {
     const std::string o = dir() + "/run.h5";
     const std::string cmd = std::string(POUND_BINARY) + " campaign --config " + POUND_SOURCE_DIR +
-                            "/studies/campaign-smoke.ini --samples 40 --quiet --out " + o +
-                            " 2>" + dir() + "/campaign.log";
+                            "/studies/campaign-smoke.ini --samples 40 --quiet --out " + o + " 2>" +
+                            dir() + "/campaign.log";
     EXPECT_EQ(sh(cmd), 0) << slurp(dir() + "/campaign.log");
     return o;
   }();
@@ -59,10 +60,10 @@ TEST(CmdFragility, JsonCurvesFilesAndUntouchedCampaign) {
   ASSERT_FALSE(before.empty());
   const std::string out = dir() + "/frag";
   const std::string json = dir() + "/out.json";
-  ASSERT_EQ(sh(std::string(POUND_BINARY) + " fragility --input " + campaign() + " --out " + out +
-               " --json --replicates 100 --force-limits 3000 > " + json + " 2>" + dir() +
-               "/frag.log"),
-            0)
+  ASSERT_EQ(
+      sh(std::string(POUND_BINARY) + " fragility --input " + campaign() + " --out " + out +
+         " --json --replicates 100 --force-limits 3000 > " + json + " 2>" + dir() + "/frag.log"),
+      0)
       << slurp(dir() + "/frag.log");
   EXPECT_EQ(slurp(campaign()), before);  // the campaign file is byte for byte the same
   const std::string j = slurp(json);
@@ -78,12 +79,14 @@ TEST(CmdFragility, JsonCurvesFilesAndUntouchedCampaign) {
   EXPECT_LT(j.find("\"shift\""), j.find("\"curves\""));  // the headline comes first
   // Every curve without a finite estimate (status other than "ok") carries null for theta,
   // never a number, and every "ok" curve a number.
-  for (auto p = j.find("\"status\":\""); p != std::string::npos; p = j.find("\"status\":\"", p + 1)) {
+  for (auto p = j.find("\"status\":\""); p != std::string::npos;
+       p = j.find("\"status\":\"", p + 1)) {
     const bool ok = j.compare(p + 10, 3, "ok\"") == 0;
     const auto t = j.find("\"theta\":", p);
     EXPECT_EQ(j.compare(t + 8, 4, "null") == 0, !ok) << j.substr(p, 80);
   }
-  for (const char* f : {"curves.csv", "shift.csv", "observations.csv", "sensitivity.csv", "fragility.h5"})
+  for (const char* f :
+       {"curves.csv", "shift.csv", "observations.csv", "sensitivity.csv", "fragility.h5"})
     EXPECT_TRUE(fs::exists(out + "/" + f)) << f;
   for (const auto& e : fs::directory_iterator(out))
     EXPECT_EQ(e.path().string().find(".tmp."), std::string::npos) << e.path();
@@ -92,7 +95,8 @@ TEST(CmdFragility, JsonCurvesFilesAndUntouchedCampaign) {
 
 TEST(CmdFragility, BadInputIsOneLineAndExitTwo) {
   const std::string log = dir() + "/bad.log";
-  EXPECT_EQ(sh(std::string(POUND_BINARY) + " fragility --input " + dir() + "/missing.h5 2>" + log), 2);
+  EXPECT_EQ(sh(std::string(POUND_BINARY) + " fragility --input " + dir() + "/missing.h5 2>" + log),
+            2);
   EXPECT_NE(slurp(log).find("missing.h5"), std::string::npos);
   EXPECT_EQ(sh(std::string(POUND_BINARY) + " fragility --input " + campaign() +
                " --drift-limits 0.01,-1 --out " + dir() + "/x 2>" + log),

@@ -1,12 +1,13 @@
 // The maximum-likelihood lognormal fit (Baker 2015): known theta and beta recovered from
 // binomial data drawn from a lognormal CDF, the per-sample (Bernoulli) fit, the cases without a
 // finite estimate, and the tails of ln Phi.
+#include "fragility/lognormal_fit.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <vector>
 
-#include "fragility/lognormal_fit.hpp"
 #include "sampling/counter_rng.hpp"
 #include "sampling/normal.hpp"
 
@@ -16,7 +17,9 @@ namespace {
 constexpr double kTheta = 2.5;  // m/s^2
 constexpr double kBeta = 0.4;
 
-double p_true(double x) { return normal_cdf(std::log(x / kTheta) / kBeta); }
+double p_true(double x) {
+  return normal_cdf(std::log(x / kTheta) / kBeta);
+}
 
 // n analyses at each of 10 levels 0.5..5 m/s^2, z ~ Binomial(n, p(x)) with a fixed seed.
 std::vector<Observation> synthetic_stripes(long n, std::uint64_t seed) {
@@ -24,7 +27,8 @@ std::vector<Observation> synthetic_stripes(long n, std::uint64_t seed) {
   std::vector<Observation> obs;
   for (int j = 0; j < 10; ++j) {
     Observation o{0.5 * (j + 1), n, 0};
-    for (long i = 0; i < n; ++i) o.z += rng.uniform(std::uint64_t(j), std::uint64_t(i)) < p_true(o.im);
+    for (long i = 0; i < n; ++i)
+      o.z += rng.uniform(std::uint64_t(j), std::uint64_t(i)) < p_true(o.im);
     obs.push_back(o);
   }
   return obs;

@@ -1,11 +1,12 @@
 // Spearman and partial rank correlations: exact values for monotone relations, near zero for
 // independent data, and the partial one removing a confounder.
+#include "fragility/rank_correlation.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <vector>
 
-#include "fragility/rank_correlation.hpp"
 #include "sampling/counter_rng.hpp"
 
 namespace pound {

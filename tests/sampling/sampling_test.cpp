@@ -44,7 +44,8 @@ TEST(CounterRng, SameKeyAndCounterGiveSameNumberAndStreamsDiffer) {
 TEST(Distribution, QuantilesOfEachForm) {
   EXPECT_DOUBLE_EQ(Distribution::parse("0.05", "k").value(0.3), 0.05);
   EXPECT_DOUBLE_EQ(Distribution::parse("uniform(1, 3)", "k").value(0.25), 1.5);
-  EXPECT_NEAR(Distribution::parse("normal(10, 2)", "k").value(0.975), 10 + 2 * 1.959963984540054, 1e-12);
+  EXPECT_NEAR(Distribution::parse("normal(10, 2)", "k").value(0.975), 10 + 2 * 1.959963984540054,
+              1e-12);
   EXPECT_NEAR(Distribution::parse("lognormal(50, 0.4)", "k").value(0.5), 50.0, 1e-12);
   EXPECT_NEAR(Distribution::parse("lognormal(50, 0.4)", "k").value(0.975),
               50.0 * std::exp(0.4 * 1.959963984540054), 1e-10);

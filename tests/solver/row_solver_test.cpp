@@ -25,7 +25,8 @@ BuildingRow sdof(double xi) {
 // Free vibration from u0 (Chopra eq. 2.2.4).
 double free_vibration(double t, double u0, double w, double xi) {
   const double wd = w * std::sqrt(1 - xi * xi);
-  return u0 * std::exp(-xi * w * t) * (std::cos(wd * t) + xi / std::sqrt(1 - xi * xi) * std::sin(wd * t));
+  return u0 * std::exp(-xi * w * t) *
+         (std::cos(wd * t) + xi / std::sqrt(1 - xi * xi) * std::sin(wd * t));
 }
 
 TEST(RowSolver, SdofFreeVibrationMatchesClosedForm) {
@@ -77,7 +78,8 @@ TEST(RowSolver, SdofStepGroundAccelerationMatchesClosedForm) {
   const double t = 3.0;
   const double ust = -a0 / (w * w);
   const double exact =
-      ust * (1 - std::exp(-xi * w * t) * (std::cos(wd * t) + xi / std::sqrt(1 - xi * xi) * std::sin(wd * t)));
+      ust * (1 - std::exp(-xi * w * t) *
+                     (std::cos(wd * t) + xi / std::sqrt(1 - xi * xi) * std::sin(wd * t)));
   EXPECT_NEAR(r.u_end(0), exact, 1e-10);
   // The first peak is the overshoot ust (1 + exp(-xi pi / sqrt(1 - xi^2))).
   EXPECT_NEAR(r.peak_disp(0), -ust * (1 + std::exp(-xi * M_PI / std::sqrt(1 - xi * xi))), 1e-9);
@@ -118,7 +120,8 @@ BuildingRow pair(double gap, double k2 = 2500.0) {
 GroundMotion pulse() {
   GroundMotion g;
   g.dt = 0.01;
-  for (int i = 0; i <= 300; ++i) g.accel.push_back(3.0 * std::sin(2 * M_PI * i * g.dt / 0.4) * (i < 100));
+  for (int i = 0; i <= 300; ++i)
+    g.accel.push_back(3.0 * std::sin(2 * M_PI * i * g.dt / 0.4) * (i < 100));
   return g;
 }
 

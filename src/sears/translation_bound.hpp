@@ -1,0 +1,44 @@
+#pragma once
+// Rigorous bound on how far two floors of neighbouring buildings can approach each other within
+// the next h seconds while no contact acts (event-driven stepping of the damped Sears model,
+// docs/speed.md). Buildings are linear (physics.md section 1): M u'' + C u' + K u = -M 1 ag.
+//
+// Per building b, E_b = (v^T M v + u^T K u) / 2 obeys dE_b/dt = -v^T C v - ag v^T M 1
+// <= |ag| sqrt(2 m_b E_b) (C positive semi-definite, Cauchy-Schwarz), so
+//     sqrt(2 E_b(t + tau)) <= sqrt(2 E_b(t)) + sqrt(m_b) |ag|_max tau.
+// Floor k's acceleration relative to the ground plus ag is -(M^-1 (C v + K u))_k, and
+//     |(M^-1 K u)_k| <= alpha_k sqrt(u^T K u),  alpha_k = |K^1/2 M^-1 e_k|
+//     |(M^-1 C v)_k| <= beta_k sqrt(v^T M v),   beta_k = |M^-1/2 C M^-1 e_k|
+// hence |u_k'' + ag| <= G_k sqrt(2 E_b), G_k = sqrt(alpha_k^2 + beta_k^2). For floors L, R of
+// two buildings the ground term cancels in u_L'' - u_R'', and Taylor's theorem gives
+//     (u_L - u_R)(t + tau) - (u_L - u_R)(t) <= max(0, v_L - v_R) h + h^2/2 (A_L + A_R)
+// for 0 <= tau <= h, A_k the acceleration bound above at the largest energy in the step.
+#include <Eigen/Dense>
+#include <vector>
+
+#include "structure/building_row.hpp"
+
+namespace pound::sears {
+
+class TranslationBound {
+ public:
+  /// For the assembled row `a`; ag_max bounds |ag| over the run [m/s^2].
+  TranslationBound(const AssembledRow& a, double ag_max);
+
+  /// Updates the energies of every building from the state (u, v) [m], [m/s]. No allocation.
+  void set_state(const Eigen::VectorXd& u, const Eigen::VectorXd& v);
+  /// Upper bound on the increase of u(dof_left) - u(dof_right) within h [s] of contact-free
+  /// motion from the state given to set_state() [m]. The two DOFs must be in different buildings.
+  double approach(int dof_left, int dof_right, const Eigen::VectorXd& v, double h) const;
+
+ private:
+  std::vector<int> building_of_;      // per DOF
+  std::vector<int> begin_, size_;     // per building
+  std::vector<double> sqrt_mass_;     // sqrt(m_b) per building [sqrt(kg)]
+  std::vector<double> sqrt2E_;        // sqrt(2 E_b) per building, current [sqrt(J)]
+  Eigen::VectorXd G_;                 // per DOF [1/(s sqrt(kg))]
+  Eigen::MatrixXd K_, M_;
+  double ag_max_ = 0.0;
+};
+
+}  // namespace pound::sears
