@@ -77,7 +77,8 @@ std::vector<OptionSpec> campaign_option_specs() {
        "generated (spectrum-compatible, one per sample) or records (motion.records)"},
       {"motion.records", "", "", "record files drawn uniformly per sample (comma separated)"},
       {"intensity.measure", "", "pga", "pga or sa (Sa(T1) of intensity.building, 5 %)"},
-      {"intensity.building", "-", "1", "building whose first period defines Sa(T1)"},
+      {"intensity.building", "", "1",
+       "building (number from the left, or name) whose first period defines Sa(T1)"},
       {"intensity.levels", "g", "",
        "stripe levels (multiple-stripe analysis); samples cycle through them"},
       {"intensity.scale", "-", "",
@@ -254,10 +255,17 @@ CampaignStudy campaign_from_options(const Options& opt, long samples_override, l
     st.measure = IntensityMeasure::sa;
   else
     throw opt.invalid("intensity.measure", "valid: pga or sa");
-  const long ib = opt.get_int("intensity.building");
-  if (ib < 1 || ib > st.buildings())
-    throw opt.invalid("intensity.building", "valid: 1.." + std::to_string(st.buildings()));
-  st.im_building = static_cast<int>(ib - 1);
+  // The building whose T1 defines Sa(T1): its number (1 = leftmost) or its name.
+  const std::string ibs = opt.get_string("intensity.building");
+  st.im_building = -1;
+  for (int b = 0; b < st.buildings(); ++b)
+    if (st.row.buildings[b].name == ibs || std::to_string(b + 1) == ibs) st.im_building = b;
+  if (st.im_building < 0) {
+    std::string names;
+    for (const auto& b : st.row.buildings) names += ", " + b.name;
+    throw opt.invalid("intensity.building",
+                      "valid: 1.." + std::to_string(st.buildings()) + " or a name" + names);
+  }
   st.im_period = assemble(st.row.buildings[st.im_building]).periods(0);
   if (opt.given("intensity.levels") == opt.given("intensity.scale"))
     throw InputError(opt.where("intensity.levels") +

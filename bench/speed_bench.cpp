@@ -1,0 +1,246 @@
+// Speed benchmark of issue 8 (docs/speed.md): on one core, the default integrators (event-driven
+// stepping of the damped Sears model, adaptive Dormand-Prince with event location of the
+// lumped models) against the fixed-step reference at dt = 10 us, for
+//   1. the thesis' chapter 8 example, `sears` N = 100, the full El Centro record (31.16 s);
+//   2. the same 5 + 3 storey pair with the lumped hc-linear model (k = 50 x storey stiffness);
+//   3. a 20-sample campaign of studies/fragility-default.ini (SampleRunner, no MPI).
+// Prints the time per sample (with and without pounding: both runs), the speed-up of the
+// default path over the reference, and the largest relative differences between the two in
+// peak floor displacement, peak drift and peak pounding force, and the impact counts.
+// Times are process CPU times (one thread), robust on a shared machine; wall times beside.
+// Usage: bench_speed [source dir] (default: the source tree it was built from)
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "campaign/campaign_study.hpp"
+#include "campaign/sample.hpp"
+#include "io/options.hpp"
+#include "sears/sears_simulation.hpp"
+#include "simulation/simulate_row.hpp"
+#include "study/row_options.hpp"
+#include "study/sears_row_options.hpp"
+
+namespace {
+
+using namespace pound;
+
+constexpr double kReferenceDt = 1e-5;  // the thesis' fixed step [s]
+
+struct Timing {
+  double cpu_s = 0.0, wall_s = 0.0;
+};
+
+// Runs f `repeat` times; the smallest CPU time (and its wall time).
+Timing time_it(const std::function<void()>& f, int repeat) {
+  Timing best{1e300, 0.0};
+  for (int i = 0; i < repeat; ++i) {
+    const std::clock_t c0 = std::clock();
+    const auto w0 = std::chrono::steady_clock::now();
+    f();
+    const double cpu = double(std::clock() - c0) / CLOCKS_PER_SEC;
+    const double wall =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - w0).count();
+    if (cpu < best.cpu_s) best = Timing{cpu, wall};
+  }
+  return best;
+}
+
+double rel(double a, double ref) {
+  return ref != 0.0 ? std::fabs(a - ref) / std::fabs(ref) : std::fabs(a - ref);
+}
+
+struct Differences {
+  double disp = 0.0, drift = 0.0, force = 0.0;  // largest relative difference [-]
+  std::string impacts_default, impacts_reference;
+  bool same_impacts = true;
+};
+
+// Pounding-run peaks of every floor and site.
+Differences compare(const RowSimulation& d, const RowSimulation& r,
+                    const std::vector<int>& imp_d, const std::vector<int>& imp_r) {
+  Differences x;
+  for (std::size_t i = 0; i < d.floors.size(); ++i) {
+    x.disp = std::max(x.disp, rel(d.floors[i].disp_pounding, r.floors[i].disp_pounding));
+    x.drift = std::max(x.drift,
+                       rel(d.floors[i].drift_ratio_pounding, r.floors[i].drift_ratio_pounding));
+  }
+  for (std::size_t s = 0; s < d.sites.size(); ++s)
+    x.force = std::max(x.force, rel(d.sites[s].peak_force, r.sites[s].peak_force));
+  for (std::size_t s = 0; s < imp_d.size(); ++s) {
+    x.impacts_default += (s ? "/" : "") + std::to_string(imp_d[s]);
+    x.impacts_reference += (s ? "/" : "") + std::to_string(imp_r[s]);
+    x.same_impacts = x.same_impacts && imp_d[s] == imp_r[s];
+  }
+  return x;
+}
+
+void header() {
+  std::printf("%-28s %10s %10s %10s %10s %8s %8s %8s %8s  %s\n", "case", "cpu/smp[s]",
+              "wall/smp[s]", "ref cpu[s]", "speed-up", "d disp", "d drift", "d force", "same imp",
+              "impacts default | reference");
+}
+
+void line(const char* name, Timing t, Timing ref, int samples, const Differences& x) {
+  std::printf("%-28s %10.4f %10.4f %10.3f %10.1f %7.3f%% %7.3f%% %7.3f%% %8s  %s | %s\n", name,
+              t.cpu_s / samples, t.wall_s / samples, ref.cpu_s / samples, ref.cpu_s / t.cpu_s,
+              100.0 * x.disp, 100.0 * x.drift, 100.0 * x.force, x.same_impacts ? "yes" : "NO",
+              x.impacts_default.c_str(), x.impacts_reference.c_str());
+}
+
+Options row_study(const std::string& file, std::vector<std::string> extra) {
+  auto specs = row_option_specs();
+  const auto ss = sears_row_option_specs();
+  specs.insert(specs.end(), ss.begin(), ss.end());
+  Options opt("simulate", "speed benchmark", specs);
+  std::vector<std::string> args = {"simulate", "--config", file};
+  args.insert(args.end(), extra.begin(), extra.end());
+  std::vector<const char*> argv;
+  for (const auto& a : args) argv.push_back(a.c_str());
+  opt.parse(static_cast<int>(argv.size()), argv.data());
+  return opt;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::string src = argc > 1 ? argv[1] : POUND_SOURCE_DIR;
+  const std::string ch8 = src + "/studies/ch8-five-three.ini";
+  std::printf("speed benchmark (issue 8): default integrators vs fixed dt = %g s, one core\n",
+              kReferenceDt);
+
+  // 1. Chapter 8, sears, N = 100, the full record.
+  const Options o1 = row_study(ch8, {"--motion.duration", "1e9"});
+  const BuildingRow row = row_from_options(o1);
+  const GroundMotion motion = motion_from_options(o1);
+  sears::SearsRowModel ev = sears_row_from_options(o1, row), fx = ev;
+  ev.stepping = sears::SearsStepping::event;
+  fx.stepping = sears::SearsStepping::fixed;
+  fx.dt_s = kReferenceDt;
+  sears::SearsRowSimulation se, sf;
+  const Timing t_se = time_it([&] { se = sears::simulate_sears_row(row, motion, ev); }, 3);
+  const Timing t_sf = time_it([&] { sf = sears::simulate_sears_row(row, motion, fx); }, 1);
+  std::vector<int> ie, ifx;
+  for (const auto& c : se.contacts) ie.push_back(c.impacts);
+  for (const auto& c : sf.contacts) ifx.push_back(c.impacts);
+  std::printf("\n1. chapter 8 example, sears N = 100, %s, %.2f s; event: fine %.3g s, coarse "
+              "%.3g s; pounding run %ld fine + %ld coarse steps (bound violations %ld), free "
+              "run %ld fine + %ld coarse\n",
+              motion.name.c_str(), motion.duration(), se.dt_s, se.coarse_dt_s,
+              se.counts_pounding.fine, se.counts_pounding.coarse,
+              se.counts_pounding.bound_violations, se.counts_free.fine, se.counts_free.coarse);
+  header();
+  line("sears ch8 (event)", t_se, t_sf, 1, compare(se.base, sf.base, ie, ifx));
+  std::printf("  impacts: phases above %g of the site's peak force per floor; raw phases "
+              "%d/%d/%d (event) vs %d/%d/%d (fixed)\n",
+              ev.impact_force_fraction, se.base.sites[0].impacts, se.base.sites[1].impacts,
+              se.base.sites[2].impacts, sf.base.sites[0].impacts, sf.base.sites[1].impacts,
+              sf.base.sites[2].impacts);
+  std::printf("  peak force per floor [kN]: event %.2f/%.2f/%.2f, fixed %.2f/%.2f/%.2f\n",
+              se.base.sites[0].peak_force / 1e3, se.base.sites[1].peak_force / 1e3,
+              se.base.sites[2].peak_force / 1e3, sf.base.sites[0].peak_force / 1e3,
+              sf.base.sites[1].peak_force / 1e3, sf.base.sites[2].peak_force / 1e3);
+
+  // 2. The same pair, lumped hc-linear (adaptive DP 5(4) with event location vs fixed).
+  const Options o2 = row_study(ch8, {"--motion.duration", "1e9", "--contact.model", "hc-linear",
+                                     "--contact.k_factor", "50"});
+  const ContactSpec contact = contact_from_options(o2, row);
+  IntegratorSettings ad = integrator_from_options(o2), fi = ad;
+  ad.control = StepControl::adaptive;
+  fi.control = StepControl::fixed;
+  fi.dt = kReferenceDt;
+  RowSimulation le, lf;
+  const Timing t_le = time_it([&] { le = simulate_row(row, motion, contact, ad); }, 5);
+  const Timing t_lf = time_it([&] { lf = simulate_row(row, motion, contact, fi); }, 1);
+  std::vector<int> je, jf;
+  for (const auto& s : le.sites) je.push_back(s.impacts);
+  for (const auto& s : lf.sites) jf.push_back(s.impacts);
+  std::printf("\n2. the same pair, lumped hc-linear (k = 50 x 8.4e7 N/m, e = %g), full record; "
+              "adaptive: %ld steps (%ld rejected), fixed: %ld steps\n",
+              contact.params.e, le.pounding.steps, le.pounding.rejected, lf.pounding.steps);
+  header();
+  line("hc-linear 5+3 (adaptive)", t_le, t_lf, 1, compare(le, lf, je, jf));
+
+  // 3. A 20-sample campaign of the default fragility study (half sears N = 40, half hc-linear).
+  auto specs = campaign_option_specs();
+  Options oc("campaign", "speed benchmark", specs);
+  const std::string frag = src + "/studies/fragility-default.ini";
+  const char* cargv[] = {"campaign", "--config", frag.c_str()};
+  oc.parse(3, cargv);
+  constexpr long kSamples = 20;
+  const CampaignStudy study = campaign_from_options(oc, kSamples, -1);
+  CampaignStudy ref = study;
+  ref.integrator.control = StepControl::fixed;
+  ref.integrator.dt = kReferenceDt;
+  ref.sears.stepping = sears::SearsStepping::fixed;
+  ref.sears.dt_s = kReferenceDt;
+  std::vector<SampleOutcome> ce(kSamples), cf(kSamples);
+  std::vector<double> cpu_e(kSamples), cpu_f(kSamples);
+  SampleRunner run_e(study), run_f(ref);
+  std::printf("\n3. campaign: studies/fragility-default.ini, %ld samples (SampleRunner, one "
+              "core)\n", kSamples);
+  std::printf("%4s %-10s %8s %10s %10s %8s %8s %8s %8s  %s\n", "id", "model", "PGA[g]",
+              "cpu[s]", "ref cpu[s]", "d disp", "d drift", "d force", "same imp",
+              "impacts default | reference");
+  Timing t_ce, t_cf;
+  Differences worst;
+  int models_sears = 0;
+  double cpu_sears = 0.0, cpu_lumped = 0.0, max_sears = 0.0, max_lumped = 0.0;
+  for (long id = 0; id < kSamples; ++id) {
+    const Timing a = time_it([&] { ce[id] = run_e.run(id); }, 1);
+    const Timing b = time_it([&] { cf[id] = run_f.run(id); }, 1);
+    t_ce.cpu_s += a.cpu_s;
+    t_ce.wall_s += a.wall_s;
+    t_cf.cpu_s += b.cpu_s;
+    t_cf.wall_s += b.wall_s;
+    const std::string model = run_e.draw(id).model;
+    if (model == "sears") {
+      ++models_sears;
+      cpu_sears += a.cpu_s;
+      max_sears = std::max(max_sears, a.cpu_s);
+    } else {
+      cpu_lumped += a.cpu_s;
+      max_lumped = std::max(max_lumped, a.cpu_s);
+    }
+    Differences x;
+    const SampleOutcome &e = ce[id], &f = cf[id];
+    auto cmp = [&](const std::vector<double>& p, const std::vector<double>& q, double& out) {
+      for (std::size_t i = 0; i < p.size(); ++i)
+        if (std::isfinite(p[i]) && std::isfinite(q[i])) out = std::max(out, rel(p[i], q[i]));
+    };
+    cmp(e.disp_pounding, f.disp_pounding, x.disp);
+    cmp(e.drift_pounding, f.drift_pounding, x.drift);
+    cmp(e.peak_force, f.peak_force, x.force);
+    for (std::size_t s = 0; s < e.impacts.size(); ++s) {
+      if (!std::isfinite(e.impacts[s])) continue;
+      x.impacts_default += (s ? "/" : "") + std::to_string(long(e.impacts[s]));
+      x.impacts_reference += (s ? "/" : "") + std::to_string(long(f.impacts[s]));
+      x.same_impacts = x.same_impacts && e.impacts[s] == f.impacts[s];
+    }
+    std::printf("%4ld %-10s %8.3f %10.4f %10.3f %7.3f%% %7.3f%% %7.3f%% %8s  %s | %s%s\n", id,
+                model.c_str(), e.im / 9.80665, a.cpu_s, b.cpu_s, 100 * x.disp, 100 * x.drift,
+                100 * x.force, x.same_impacts ? "yes" : "NO", x.impacts_default.c_str(),
+                x.impacts_reference.c_str(),
+                e.status == SampleStatus::ok && f.status == SampleStatus::ok ? ""
+                                                                              : "  (failed)");
+    worst.disp = std::max(worst.disp, x.disp);
+    worst.drift = std::max(worst.drift, x.drift);
+    worst.force = std::max(worst.force, x.force);
+    worst.same_impacts = worst.same_impacts && x.same_impacts;
+  }
+  worst.impacts_default = worst.impacts_reference = "(per sample above)";
+  header();
+  line("campaign, 20 samples", t_ce, t_cf, kSamples, worst);
+  std::printf("  per sample: sears (%d) mean %.4f s, max %.4f s; hc-linear (%ld) mean %.4f s, "
+              "max %.4f s (cpu)\n",
+              models_sears, models_sears ? cpu_sears / models_sears : 0.0, max_sears,
+              kSamples - models_sears,
+              kSamples > models_sears ? cpu_lumped / (kSamples - models_sears) : 0.0,
+              max_lumped);
+  return 0;
+}

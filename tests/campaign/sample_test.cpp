@@ -1,0 +1,115 @@
+#include "campaign/sample.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "io/options.hpp"
+#include "motion/response_spectrum.hpp"
+
+namespace pound {
+namespace {
+
+// A small study on the El Centro record: two buildings (2 and 1 floors), hc-linear with a
+// sampled e and gap, PGA stripes, or Sa(T1) stripes, or a sampled scale.
+CampaignStudy study(std::vector<const char*> extra, long samples = 12) {
+  std::vector<const char*> argv = {"campaign",
+                                   "--building1.name",
+                                   "left",
+                                   "--building1.masses",
+                                   "1000,1000",
+                                   "--building1.stiffnesses",
+                                   "2e6,2e6",
+                                   "--building2.name",
+                                   "right",
+                                   "--building2.masses",
+                                   "1500",
+                                   "--building2.stiffnesses",
+                                   "1e6",
+                                   "--contact.model",
+                                   "hc-linear",
+                                   "--contact.k",
+                                   "1e8",
+                                   "--sample.e",
+                                   "uniform(0.4, 0.8)",
+                                   "--sample.gap",
+                                   "uniform(0, 0.01)",
+                                   "--motion.source",
+                                   "records",
+                                   "--motion.file",
+                                   POUND_SOURCE_DIR "/motions/elcentro-1940-ns.dat",
+                                   "--motion.duration",
+                                   "6"};
+  argv.insert(argv.end(), extra.begin(), extra.end());
+  Options opt("campaign", "", campaign_option_specs());
+  opt.parse(static_cast<int>(argv.size()), argv.data());
+  return campaign_from_options(opt, samples, 5);
+}
+
+TEST(Sample, StripesScaleTheMotionToTheLevel) {
+  const CampaignStudy st = study({"--intensity.levels", "0.1, 0.3"});
+  SampleRunner r(st);
+  for (long id : {0L, 1L, 2L, 3L}) {
+    const SampleOutcome o = r.run(id);
+    ASSERT_EQ(o.status, SampleStatus::ok) << o.message;
+    const double level = (id % 2 == 0 ? 0.1 : 0.3) * kGravity;
+    EXPECT_NEAR(o.im, level, 1e-12 * level);
+    // The record's own PGA times the scale is the level.
+    EXPECT_NEAR(o.scale * st.records[0].pga(), level, 1e-12 * level);
+    EXPECT_TRUE(std::isnan(o.disp_pounding[1 * 2 + 1]));  // building 2 has one floor
+    EXPECT_GT(o.disp_free[0], 0.0);
+  }
+}
+
+TEST(Sample, SameIdGivesTheSameOutcomeOnAnotherRunner) {
+  const CampaignStudy st = study({"--intensity.levels", "0.2"});
+  SampleRunner a(st), b(st);
+  const SampleOutcome x = b.run(7);  // a different order of use
+  a.run(3);
+  const SampleOutcome y = a.run(7);
+  EXPECT_EQ(x.values, y.values);
+  EXPECT_EQ(x.disp_pounding[0], y.disp_pounding[0]);
+  EXPECT_EQ(x.peak_force[0], y.peak_force[0]);
+  // The draws respect the distributions' ranges.
+  EXPECT_GE(x.values[0], 0.4);  // e (parameters are sorted by key: e, gap)
+  EXPECT_LE(x.values[0], 0.8);
+  EXPECT_GE(x.values[1], 0.0);
+  EXPECT_LE(x.values[1], 0.01);
+}
+
+TEST(Sample, SaStripeIsTheSpectralAccelerationAtTheNamedBuildingsPeriod) {
+  const CampaignStudy st = study(
+      {"--intensity.measure", "sa", "--intensity.building", "right", "--intensity.levels", "0.25"});
+  EXPECT_EQ(st.im_building, 1);
+  EXPECT_NEAR(st.im_period, 2 * M_PI * std::sqrt(1500.0 / 1e6), 1e-12);
+  SampleRunner r(st);
+  const SampleOutcome o = r.run(0);
+  ASSERT_EQ(o.status, SampleStatus::ok);
+  const double sa = response_spectrum(st.records[0], {st.im_period}, 0.05).psa[0];
+  EXPECT_NEAR(o.scale * sa, 0.25 * kGravity, 1e-9);
+}
+
+TEST(Sample, LatinHypercubeStratifiesEachParameter) {
+  const long n = 10;
+  const CampaignStudy st = study({"--intensity.levels", "0.1"}, n);
+  SampleRunner r(st);
+  std::vector<int> strata(n, 0);
+  for (long id = 0; id < n; ++id) {
+    const double e = r.draw(id).values[0];
+    ++strata[static_cast<int>((e - 0.4) / 0.4 * n)];
+  }
+  for (int c : strata) EXPECT_EQ(c, 1);
+}
+
+TEST(Sample, NumericalFailureIsRecordedWithoutResponseNumbers) {
+  CampaignStudy st = study({"--intensity.levels", "0.3"});
+  st.integrator.max_steps = 10;  // forces a step-count failure
+  SampleRunner r(st);
+  const SampleOutcome o = r.run(4);
+  EXPECT_EQ(o.status, SampleStatus::numerical_failure);
+  EXPECT_NE(o.message.find("sample 4"), std::string::npos) << o.message;
+  for (double v : o.disp_pounding) EXPECT_TRUE(std::isnan(v));
+}
+
+}  // namespace
+}  // namespace pound
