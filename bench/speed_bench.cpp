@@ -8,7 +8,8 @@
 // default path over the reference, and the largest relative differences between the two in
 // peak floor displacement, peak drift and peak pounding force, and the impact counts.
 // Times are process CPU times (one thread), robust on a shared machine; wall times beside.
-// Usage: bench_speed [source dir] (default: the source tree it was built from)
+// Usage: bench_speed [source dir [quick]] (default: the source tree it was built from; "quick":
+// only the event-driven chapter 8 run, for profiling)
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -124,15 +125,21 @@ int main(int argc, char** argv) {
   fx.dt_s = kReferenceDt;
   sears::SearsRowSimulation se, sf;
   const Timing t_se = time_it([&] { se = sears::simulate_sears_row(row, motion, ev); }, 3);
+  if (argc > 2 && std::string(argv[2]) == "quick") {
+    std::printf("chapter 8, event: %.4f s cpu; pounding run %ld fine (%ld with a contact force) "
+                "+ %ld coarse\n", t_se.cpu_s, se.counts_pounding.fine,
+                se.counts_pounding.fine_in_contact, se.counts_pounding.coarse);
+    return 0;
+  }
   const Timing t_sf = time_it([&] { sf = sears::simulate_sears_row(row, motion, fx); }, 1);
   std::vector<int> ie, ifx;
   for (const auto& c : se.contacts) ie.push_back(c.impacts);
   for (const auto& c : sf.contacts) ifx.push_back(c.impacts);
   std::printf("\n1. chapter 8 example, sears N = 100, %s, %.2f s; event: fine %.3g s, coarse "
-              "%.3g s; pounding run %ld fine + %ld coarse steps (bound violations %ld), free "
-              "run %ld fine + %ld coarse\n",
+              "%.3g s; pounding run %ld fine (%ld with a contact force) + %ld coarse steps (bound "
+              "violations %ld), free run %ld fine + %ld coarse\n",
               motion.name.c_str(), motion.duration(), se.dt_s, se.coarse_dt_s,
-              se.counts_pounding.fine, se.counts_pounding.coarse,
+              se.counts_pounding.fine, se.counts_pounding.fine_in_contact, se.counts_pounding.coarse,
               se.counts_pounding.bound_violations, se.counts_free.fine, se.counts_free.coarse);
   header();
   line("sears ch8 (event)", t_se, t_sf, 1, compare(se.base, sf.base, ie, ifx));
@@ -179,6 +186,28 @@ int main(int argc, char** argv) {
   ref.integrator.dt = kReferenceDt;
   ref.sears.stepping = sears::SearsStepping::fixed;
   ref.sears.dt_s = kReferenceDt;
+  if (argc > 3 && std::string(argv[2]) == "sample") {  // diagnostics of one campaign sample
+    const long id = std::stol(argv[3]);
+    CampaignStudy auto_fixed = study;
+    auto_fixed.sears.stepping = sears::SearsStepping::fixed;
+    auto_fixed.integrator = ref.integrator;
+    const CampaignStudy* studies[] = {&study, &auto_fixed, &ref};
+    const char* names[] = {"default", "fixed, automatic step", "fixed 1e-5"};
+    for (int k = 0; k < 3; ++k) {
+      SampleRunner runner(*studies[k]);
+      const SampleOutcome o = runner.run(id);
+      std::printf("%-22s force [N]:", names[k]);
+      for (double f : o.peak_force) std::printf(" %.6g", f);
+      std::printf("  impacts:");
+      for (double f : o.impacts) std::printf(" %g", f);
+      std::printf("\n");
+    }
+    const SampleDraw d = SampleRunner(study).draw(id);
+    std::printf("model %s, values:", d.model.c_str());
+    for (double v : d.values) std::printf(" %g", v);
+    std::printf("\n");
+    return 0;
+  }
   std::vector<SampleOutcome> ce(kSamples), cf(kSamples);
   std::vector<double> cpu_e(kSamples), cpu_f(kSamples);
   SampleRunner run_e(study), run_f(ref);

@@ -19,7 +19,7 @@
 # keeps the folder for inspection).
 #
 # Environment: POUND (binary, default build/bin/pound); POUND_SLURM_TEST_SAMPLES (default: as
-# many samples as 2 ranks of this machine simulate in about 75 s, measured before the jobs,
+# many samples as 2 ranks of this machine simulate in about 60 s, measured before the jobs,
 # at least 2400, so that the time-limited job surely outlives Slurm's signal, which Slurm's
 # 30 s periodic check delivers at most about 30 s after the job starts).
 set -euo pipefail
@@ -245,7 +245,7 @@ else
     || die "calibration run of $POUND failed"
   te=$(date +%s.%N)
   rm -f "$T/calibrate.h5"
-  samples=$("$PY" -c "import math; r = 150 / ($te - $ts); print(min(20000, max(2400, math.ceil(2 * r * 75 / 100) * 100)))")
+  samples=$("$PY" -c "import math; r = 150 / ($te - $ts); print(min(20000, max(2400, math.ceil(2 * r * 60 / 100) * 100)))")
   say "calibration: $(printf %.1f "$("$PY" -c "print(150 / ($te - $ts))")") samples/s on one rank -> $samples samples"
 fi
 say "study: $study with --samples $samples; binary $POUND"
@@ -267,6 +267,8 @@ b=$(submit --nodes=1 --ntasks-per-node=2 --time=1 --signal=B:USR1@58 -o "$J/cut-
   slurm/campaign.sbatch "$study" "$cut" --samples "$samples")
 say "job $b: campaign.sbatch with --time=1 --signal=B:USR1@58 (shorter than the campaign)"
 wait_job "$b" 200
+[[ "$(job_field "$b" JobState)" == COMPLETED ]] && { show_log "$J/cut-1.out";
+  die "job $b finished its campaign before Slurm's signal came; set POUND_SLURM_TEST_SAMPLES higher than $samples"; }
 expect_job "$b" FAILED 75:0 "$J/cut-1.out"
 excerpt "$J/cut-1.out"
 grep -q "received SIGUSR1" "$J/cut-1.out" && grep -q "campaign: interrupted after" "$J/cut-1.out" \

@@ -3,6 +3,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <unsupported/Eigen/MatrixFunctions>
 
 #include "core/error.hpp"
@@ -15,6 +16,57 @@ inline double sign_at_right(int n) {
 }
 inline double shape_at_centre(int n) {
   return (n % 2) ? 0.0 : ((n / 2) % 2 ? -1.0 : 1.0);
+}
+// The arrays of a ModalBank's fused step (padded to a multiple of 4 modes).
+struct FusedArrays {
+  double *q, *v;
+  const double *A, *B, *C, *D, *Av, *Bv, *Cv, *Dv, *c1, *k1;
+  int padded;
+};
+// Four doubles as one vector (GCC/Clang vector extension): one block of four modes. The helpers
+// are inlined into the kernel below, so GCC's note on the AVX argument ABI does not apply.
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wpsabi"
+#endif
+typedef double V4 __attribute__((vector_size(32)));
+inline V4 load(const double* p) {
+  V4 r;
+  std::memcpy(&r, p, sizeof r);
+  return r;
+}
+inline void store(double* p, V4 x) { std::memcpy(p, &x, sizeof x); }
+
+// One step of every mode with loads linear from f0 to f1 (per lane), and the lane sums of the
+// new q (s[0..3]), of -(2 xi w q' + w^2 q) (s[4..7]) and of the next prediction A q + B q' + C f1
+// (s[8..11]). Each lane sums its modes in order, as a scalar loop would; no FMA is enabled, so
+// the AVX2 clone and the default (SSE2) clone give the same bits.
+__attribute__((target_clones("avx2", "default"))) void fused_step_kernel(const FusedArrays& a,
+                                                                           const double* f0,
+                                                                           const double* f1,
+                                                                           double* s) {
+  const V4 F0 = load(f0), F1 = load(f1);
+  V4 sq = {0, 0, 0, 0}, sa = {0, 0, 0, 0}, sp = {0, 0, 0, 0};
+  for (int i = 0; i < a.padded; i += 4) {
+    const V4 q = load(a.q + i), v = load(a.v + i);
+    const V4 A = load(a.A + i), B = load(a.B + i), C = load(a.C + i);
+    const V4 qn = A * q + B * v + C * F0 + load(a.D + i) * F1;
+    const V4 vn = load(a.Av + i) * q + load(a.Bv + i) * v + load(a.Cv + i) * F0 + load(a.Dv + i) * F1;
+    store(a.q + i, qn);
+    store(a.v + i, vn);
+    sq += qn;
+    sa -= load(a.c1 + i) * vn + load(a.k1 + i) * qn;
+    sp += A * qn + B * vn + C * F1;
+  }
+  store(s, sq);
+  store(s + 4, sa);
+  store(s + 8, sp);
+}
+
+// Face and centre sums from the lane sums s[k], n % 4 = k + 1 (mod 4).
+inline void lane_faces(const double* s, SectionValues& o) {
+  o.left = (s[0] + s[1]) + (s[2] + s[3]);
+  o.right = (s[1] + s[3]) - (s[0] + s[2]);
+  o.centre = s[3] - s[1];
 }
 }  // namespace
 
@@ -43,21 +95,25 @@ RecurrenceCoefficients recurrence_coefficients(double omega, double xi, double d
 }
 
 ModalBank::ModalBank(const Slab& slab, int modes, double xi_s, double dt)
-    : slab_(slab), dt_(dt), gain_(2.0 / slab.mass_kg), xi_(xi_s) {
+    : slab_(slab), modes_(modes), dt_(dt), gain_(2.0 / slab.mass_kg), xi_(xi_s) {
   if (modes < 1) throw InputError("damped Sears model: number of modes must be >= 1");
   if (!(xi_s >= 0.0 && xi_s < 1.0))
     throw InputError("damped Sears model: slab damping xi_s must be in [0, 1)");
   if (!(dt > 0.0 && std::isfinite(dt))) throw InputError("damped Sears model: dt must be > 0");
-  omega_.resize(modes);
-  coef_.resize(modes);
-  q_.assign(modes, 0.0);
-  v_.assign(modes, 0.0);
+  const int padded = (modes + 3) / 4 * 4;
+  for (auto* a : {&q_, &v_, &A_, &B_, &C_, &D_, &Av_, &Bv_, &Cv_, &Dv_, &c1_, &k1_})
+    a->assign(padded, 0.0);
+  omega_.assign(padded, 1.0);
   for (int i = 0; i < modes; ++i) {
     const int n = i + 1;
     omega_[i] = slab.omega(n);
-    coef_[i] = recurrence_coefficients(omega_[i], xi_s, dt);
-    flex_.same += gain_ * coef_[i].D;
-    flex_.cross += gain_ * sign_at_right(n) * coef_[i].D;
+    const RecurrenceCoefficients c = recurrence_coefficients(omega_[i], xi_s, dt);
+    A_[i] = c.A, B_[i] = c.B, C_[i] = c.C, D_[i] = c.D;
+    Av_[i] = c.Av, Bv_[i] = c.Bv, Cv_[i] = c.Cv, Dv_[i] = c.Dv;
+    c1_[i] = 2.0 * xi_s * omega_[i];
+    k1_[i] = omega_[i] * omega_[i];
+    flex_.same += gain_ * c.D;
+    flex_.cross += gain_ * sign_at_right(n) * c.D;
   }
 }
 
@@ -100,9 +156,8 @@ SectionValues ModalBank::predict(const EndLoads& begin) const {
   SectionValues s;
   for (int i = 0; i < modes(); ++i) {
     const int n = i + 1;
-    const auto& c = coef_[i];
     const double f = gain_ * (begin.left_N + sign_at_right(n) * begin.right_N);
-    const double q = c.A * q_[i] + c.B * v_[i] + c.C * f;
+    const double q = A_[i] * q_[i] + B_[i] * v_[i] + C_[i] * f;
     s.left += q;
     s.right += sign_at_right(n) * q;
   }
@@ -112,13 +167,49 @@ SectionValues ModalBank::predict(const EndLoads& begin) const {
 void ModalBank::step(const EndLoads& begin, const EndLoads& end) {
   for (int i = 0; i < modes(); ++i) {
     const double sgn = sign_at_right(i + 1);
-    const auto& c = coef_[i];
     const double f0 = gain_ * (begin.left_N + sgn * begin.right_N);
     const double f1 = gain_ * (end.left_N + sgn * end.right_N);
     const double q = q_[i], v = v_[i];
-    q_[i] = c.A * q + c.B * v + c.C * f0 + c.D * f1;
-    v_[i] = c.Av * q + c.Bv * v + c.Cv * f0 + c.Dv * f1;
+    q_[i] = A_[i] * q + B_[i] * v + C_[i] * f0 + D_[i] * f1;
+    v_[i] = Av_[i] * q + Bv_[i] * v + Cv_[i] * f0 + Dv_[i] * f1;
   }
+}
+
+void ModalBank::step(const EndLoads& begin, const EndLoads& end, StepResult& out) {
+  // Lane k of a block of four modes holds n = 4j + k + 1: n odd for k = 0, 2 ((-1)^n = -1,
+  // cos(n pi / 2) = 0), n = 4j + 2 for k = 1 (cos = -1), n = 4j + 4 for k = 3 (cos = +1).
+  const double f0o = gain_ * (begin.left_N - begin.right_N),
+               f0e = gain_ * (begin.left_N + begin.right_N);
+  const double f1o = gain_ * (end.left_N - end.right_N), f1e = gain_ * (end.left_N + end.right_N);
+  const double f0[4] = {f0o, f0e, f0o, f0e}, f1[4] = {f1o, f1e, f1o, f1e};
+  FusedArrays arr{q_.data(), v_.data(), A_.data(), B_.data(), C_.data(), D_.data(), Av_.data(),
+                  Bv_.data(), Cv_.data(), Dv_.data(), c1_.data(), k1_.data(),
+                  static_cast<int>(q_.size())};
+  double s[12];
+  fused_step_kernel(arr, f0, f1, s);
+  // Forcing term of the accelerations, f1 once per real mode of each lane.
+  for (int k = 0; k < 4; ++k) s[4 + k] += f1[k] * ((modes_ - k + 3) / 4);
+  lane_faces(s, out.disp);
+  lane_faces(s + 4, out.accel);
+  lane_faces(s + 8, out.next_pred);
+}
+
+void ModalBank::step_free(StepResult& out) {
+  double sq[4] = {0, 0, 0, 0}, sa[4] = {0, 0, 0, 0};
+  const int padded = static_cast<int>(q_.size());
+  for (int j = 0; j < padded; j += 4)
+    for (int k = 0; k < 4; ++k) {
+      const int i = j + k;
+      const double q = q_[i], v = v_[i];
+      const double qn = Af_[i] * q + Bf_[i] * v;
+      const double vn = Avf_[i] * q + Bvf_[i] * v;
+      q_[i] = qn;
+      v_[i] = vn;
+      sq[k] += qn;
+      sa[k] -= c1_[i] * vn + k1_[i] * qn;
+    }
+  lane_faces(sq, out.disp);
+  lane_faces(sa, out.accel);
 }
 
 double ModalBank::energy() const {
@@ -145,17 +236,18 @@ double ModalBank::free_face_bound() const {
 void ModalBank::set_free_step(double h) {
   if (!(h > 0.0 && std::isfinite(h))) throw InputError("damped Sears model: free step must be > 0");
   h_free_ = h;
-  coef_free_.resize(omega_.size());
-  for (std::size_t i = 0; i < omega_.size(); ++i)
-    coef_free_[i] = recurrence_coefficients(omega_[i], xi_, h);
+  for (auto* a : {&Af_, &Bf_, &Avf_, &Bvf_}) a->assign(q_.size(), 0.0);
+  for (int i = 0; i < modes_; ++i) {
+    const RecurrenceCoefficients c = recurrence_coefficients(omega_[i], xi_, h);
+    Af_[i] = c.A, Bf_[i] = c.B, Avf_[i] = c.Av, Bvf_[i] = c.Bv;
+  }
 }
 
 void ModalBank::step_free() {
   for (int i = 0; i < modes(); ++i) {
-    const auto& c = coef_free_[i];
     const double q = q_[i], v = v_[i];
-    q_[i] = c.A * q + c.B * v;
-    v_[i] = c.Av * q + c.Bv * v;
+    q_[i] = Af_[i] * q + Bf_[i] * v;
+    v_[i] = Avf_[i] * q + Bvf_[i] * v;
   }
 }
 

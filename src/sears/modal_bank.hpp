@@ -50,7 +50,7 @@ class ModalBank {
   /// N internal modes of `slab` with modal damping xi_s in [0, 1), recurrence for step dt [s].
   ModalBank(const Slab& slab, int modes, double xi_s, double dt);
 
-  int modes() const { return static_cast<int>(q_.size()); }
+  int modes() const { return modes_; }
   double dt() const { return dt_; }
   const Slab& slab() const { return slab_; }
 
@@ -76,6 +76,17 @@ class ModalBank {
   /// Advances one step with end loads linear from `begin` to `end`. No allocation.
   void step(const EndLoads& begin, const EndLoads& end);
 
+  /// What the row solver needs after a step (one pass over the modes, docs/speed.md).
+  struct StepResult {
+    SectionValues disp;       ///< displacement() at the end of the step
+    SectionValues accel;      ///< acceleration(end) at the end of the step
+    SectionValues next_pred;  ///< predict(end) for the next step (faces only)
+  };
+  /// step(begin, end) fused with displacement(), acceleration(end) and predict(end). Sums are
+  /// taken in four interleaved lanes (modes n mod 4), so they may differ from the separate
+  /// calls in the last bits. No allocation.
+  void step(const EndLoads& begin, const EndLoads& end, StepResult& out);
+
   /// Energy in the internal vibration, sum (m/4)(q_n'^2 + w_n^2 q_n^2) [J].
   double energy() const;
   /// Power dissipated by the modal damping now, sum xi_s w_n m q_n'^2 [W].
@@ -93,6 +104,9 @@ class ModalBank {
   double free_step() const { return h_free_; }
   /// Advances one free step (no end loads) of length free_step(). No allocation.
   void step_free();
+  /// step_free() fused with displacement() and acceleration({}) after it (out.next_pred is
+  /// left unset: the next fine step calls predict()). No allocation.
+  void step_free(StepResult& out);
   /// Bound on how far either face can move, by internal vibration, within the next `h` seconds
   /// of free (unloaded) motion [m]:
   ///     |w(t + tau) - w(t)| <= sum_n R_n min(2, w_n h),  R_n = sqrt(q_n^2 + (q_n'/w_n)^2),
@@ -102,14 +116,18 @@ class ModalBank {
 
  private:
   Slab slab_;
+  int modes_ = 0;
   double dt_ = 0.0;
   double gain_ = 0.0;  // 2 / m [1/kg]
   double xi_ = 0.0;
+  // Structure of arrays, padded with inert modes (zero coefficients and state, w = 1) to a
+  // multiple of 4 for the fused step; every other loop runs over the modes_ real modes.
   std::vector<double> omega_, q_, v_;
-  std::vector<RecurrenceCoefficients> coef_;
+  std::vector<double> A_, B_, C_, D_, Av_, Bv_, Cv_, Dv_;  // recurrence for dt_
+  std::vector<double> c1_, k1_;                            // 2 xi w_n, w_n^2
   Flexibility flex_;
   double h_free_ = 0.0;
-  std::vector<RecurrenceCoefficients> coef_free_;  // A, B, Av, Bv only
+  std::vector<double> Af_, Bf_, Avf_, Bvf_;  // free recurrence for h_free_
 };
 
 }  // namespace pound::sears

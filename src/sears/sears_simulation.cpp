@@ -141,8 +141,11 @@ SearsRowResult solve_sears_row(const SearsRowProblem& p, const SearsRowModel& mo
   for (int s = 0; s < ns; ++s)
     delta(s) = u(a.sites[s].dof_left) - u(a.sites[s].dof_right) - a.sites[s].gap;
   std::vector<EndLoads> begin(nf), end(nf);
-  std::vector<SectionValues> pred(nf), disp(nf);
+  std::vector<SectionValues> pred(nf), disp(nf), accel(nf);
+  std::vector<ModalBank::StepResult> fused(nf);
+  bool pred_valid = false;  // pred holds predict(begin) from the last fused step
   std::vector<double> modal_bound(nf);
+  bool modal_bound_valid = false;  // modal_bound holds since the last fine step
   auto loads = [&](const Eigen::VectorXd& f, std::vector<EndLoads>& out) {
     for (int i = 0; i < nf; ++i) {
       out[i].left_N = L.floors[i].site_left >= 0 ? f(L.floors[i].site_left) : 0.0;
@@ -169,7 +172,8 @@ SearsRowResult solve_sears_row(const SearsRowProblem& p, const SearsRowModel& mo
     loads(F, begin);
     F_next.setZero();
     if (p.contacts && ns > 0) {
-      for (int k = 0; k < nf; ++k) pred[k] = L.banks[k].predict(begin[k]);
+      if (!pred_valid)
+        for (int k = 0; k < nf; ++k) pred[k] = L.banks[k].predict(begin[k]);
       for (int s = 0; s < ns; ++s)
         delta_pred(s) = u_hat(a.sites[s].dof_left) - u_hat(a.sites[s].dof_right) +
                         pred[L.site_left_floor[s]].right - pred[L.site_right_floor[s]].left -
@@ -180,14 +184,28 @@ SearsRowResult solve_sears_row(const SearsRowProblem& p, const SearsRowModel& mo
     if (ns > 0) a_next.noalias() -= H * F_next;
     newmark_update(dt);
     loads(F_next, end);
-    for (int k = 0; k < nf; ++k) L.banks[k].step(begin[k], end[k]);
+    for (int k = 0; k < nf; ++k) {
+      L.banks[k].step(begin[k], end[k], fused[k]);
+      disp[k] = fused[k].disp;
+      accel[k] = fused[k].accel;
+      pred[k] = fused[k].next_pred;
+    }
+    pred_valid = true;
   };
   auto coarse_step = [&](double t_next) {  // F = 0 at both ends
     newmark_predict(hc, mt_coarse, t_next);
     newmark_update(hc);
     F_next.setZero();
     loads(F_next, end);
-    for (int k = 0; k < nf; ++k) L.banks[k].step_free();
+    // Without contacts the modes are never loaded and stay at rest (zero displacement and
+    // acceleration, as initialised): nothing to step.
+    if (p.contacts)
+      for (int k = 0; k < nf; ++k) {
+        L.banks[k].step_free(fused[k]);
+        disp[k] = fused[k].disp;
+        accel[k] = fused[k].accel;
+      }
+    pred_valid = false;
   };
 
   SearsRowResult out;
@@ -215,7 +233,11 @@ SearsRowResult solve_sears_row(const SearsRowProblem& p, const SearsRowModel& mo
       if (!(kCoarseBoundSafety * bound.approach(a.sites[s].dof_left, a.sites[s].dof_right, v, hc) <
             -delta(s)))
         return false;
-    for (int k = 0; k < nf; ++k) modal_bound[k] = L.banks[k].face_motion_bound(hc);
+    // Free modes only lose energy, so the bound taken after the last fine step stays valid
+    // through every following coarse step.
+    if (!modal_bound_valid)
+      for (int k = 0; k < nf; ++k) modal_bound[k] = L.banks[k].face_motion_bound(hc);
+    modal_bound_valid = true;
     for (int s = 0; s < ns; ++s) {
       const double b = bound.approach(a.sites[s].dof_left, a.sites[s].dof_right, v, hc) +
                        modal_bound[L.site_left_floor[s]] + modal_bound[L.site_right_floor[s]];
@@ -236,6 +258,7 @@ SearsRowResult solve_sears_row(const SearsRowProblem& p, const SearsRowModel& mo
       ++out.counts.coarse;
     } else {
       fine_step(t_next);
+      modal_bound_valid = false;
       ++out.counts.fine;
     }
     if (!u.allFinite())
@@ -244,7 +267,6 @@ SearsRowResult solve_sears_row(const SearsRowProblem& p, const SearsRowModel& mo
     const double ag = ag_at(t_next);
 
     // Contact sites: events, peaks, impulse (force linear over the step).
-    for (int k = 0; k < nf; ++k) disp[k] = L.banks[k].displacement();
     for (int s = 0; s < ns; ++s) {
       const double d = u(a.sites[s].dof_left) - u(a.sites[s].dof_right) +
                        disp[L.site_left_floor[s]].right - disp[L.site_right_floor[s]].left -
@@ -276,6 +298,8 @@ SearsRowResult solve_sears_row(const SearsRowProblem& p, const SearsRowModel& mo
       }
       delta(s) = d;
     }
+    if (!coarse && ns > 0 && (F.cwiseAbs().maxCoeff() > 0.0 || F_next.cwiseAbs().maxCoeff() > 0.0))
+      ++out.counts.fine_in_contact;
     F = F_next;
 
     // Floor peaks (relative displacement, storey drift, absolute acceleration).
@@ -288,7 +312,7 @@ SearsRowResult solve_sears_row(const SearsRowProblem& p, const SearsRowModel& mo
       }
     // Slab faces and centres: floor (rigid) + internal acceleration (Th. 7.5, 8.3).
     for (int k = 0; k < nf; ++k) {
-      const SectionValues ai = L.banks[k].acceleration(end[k]);
+      const SectionValues& ai = accel[k];
       const double a0 = acc(L.floors[k].dof) + ag;
       double face = 0.0;
       if (L.floors[k].site_left >= 0) face = std::max(face, std::fabs(a0 + ai.left));

@@ -153,11 +153,16 @@ TEST(SearsRow, WithoutContactsNewmarkMatchesTheRowSolver) {
   SearsRowModel model;
   model.slabs = {{20.0, 21e9, 2500.0, 0.15}, {12.0, 21e9, 2500.0, 0.15}};
   model.modes = 10;
+  model.stepping = SearsStepping::fixed;  // Newmark at the fine step; event stepping below
   SearsRowProblem p;
   p.row = &row;
   p.motion = &gm;
   p.t_end = gm.duration();
   const SearsRowResult r = solve_sears_row(p, model);
+  model.stepping = SearsStepping::event;  // coarse steps throughout (no contact possible)
+  const SearsRowResult e = solve_sears_row(p, model);
+  EXPECT_EQ(e.counts.fine, 0);
+  EXPECT_GT(e.coarse_dt_s, 10.0 * e.dt_s);
   const AssembledRow a = assemble(row);
   RowProblem q;
   q.row = &a;
@@ -172,6 +177,11 @@ TEST(SearsRow, WithoutContactsNewmarkMatchesTheRowSolver) {
     EXPECT_NEAR(r.row.u_end(i), ref.u_end(i), 1e-5 * ref.peak_disp(i)) << i;
     EXPECT_NEAR(r.row.peak_disp(i), ref.peak_disp(i), 1e-4 * ref.peak_disp(i)) << i;
     EXPECT_NEAR(r.row.peak_abs_accel(i), ref.peak_abs_accel(i), 1e-3 * ref.peak_abs_accel(i)) << i;
+    // Coarse Newmark steps of T_min / 50: phase error (w h)^2 / 24 per radian of the highest
+    // mode; observed 1.6e-4 of the peak at the end, 2.5e-5 on the peaks.
+    EXPECT_NEAR(e.row.u_end(i), ref.u_end(i), 1e-3 * ref.peak_disp(i)) << i;
+    EXPECT_NEAR(e.row.peak_disp(i), ref.peak_disp(i), 1e-3 * ref.peak_disp(i)) << i;
+    EXPECT_NEAR(e.row.peak_abs_accel(i), ref.peak_abs_accel(i), 3e-3 * ref.peak_abs_accel(i)) << i;
   }
 }
 

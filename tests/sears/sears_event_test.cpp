@@ -1,0 +1,219 @@
+// Event-driven stepping of the damped Sears row (docs/speed.md): the bounds that decide a coarse
+// step hold for free motion, a contact that starts and ends inside one coarse step is not
+// missed, and on the chapter 8 example the event path agrees with the fixed-step path within
+// the tolerances of issue 8 (0.5 % displacement and drift, 2 % peak force, same impact count).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <string>
+
+#include "core/error.hpp"
+#include "io/options.hpp"
+#include "sears/modal_bank.hpp"
+#include "sears/sears_simulation.hpp"
+#include "sears/translation_bound.hpp"
+#include "study/row_options.hpp"
+#include "study/sears_row_options.hpp"
+
+namespace pound::sears {
+namespace {
+
+Building storeys(int n, double m, double k, double damping) {
+  Building b;
+  b.masses.assign(n, m);
+  b.stiffnesses.assign(n, k);
+  b.storey_heights.assign(n, 3.0);
+  b.damping_ratio = damping;
+  return b;
+}
+
+TEST(SearsEvent, ModalFaceBoundHoldsForFreeVibrationAndFreeStepIsExact) {
+  const Slab slab{12.0, 21e9, 2500.0, 0.15, 29e3, 0.125};
+  const double dt = 2e-5;
+  constexpr int kSteps = 70;  // the coarse step
+  std::mt19937 gen(7);
+  std::uniform_real_distribution<double> load(-5e5, 5e5);
+  for (int trial = 0; trial < 10; ++trial) {
+    ModalBank bank(slab, 100, 0.05, dt);
+    bank.set_free_step(kSteps * dt);
+    // A random loaded history leaves a random internal vibration.
+    EndLoads a{load(gen), load(gen)}, b;
+    for (int i = 0; i < 50 + 10 * trial; ++i) {
+      b = EndLoads{load(gen), load(gen)};
+      bank.step(a, b);
+      a = b;
+    }
+    bank.step(a, EndLoads{});  // the forces fall to zero: free from here
+    ModalBank coarse = bank;
+    const SectionValues w0 = bank.displacement();
+    const double bound = bank.face_motion_bound(kSteps * dt);
+    double moved = 0.0;
+    for (int i = 0; i < kSteps; ++i) {
+      bank.step(EndLoads{}, EndLoads{});
+      const SectionValues w = bank.displacement();
+      moved = std::max({moved, std::fabs(w.left - w0.left), std::fabs(w.right - w0.right)});
+    }
+    EXPECT_LE(moved, bound) << trial;
+    // Not vacuous, though loose: it adds the amplitudes of 100 modes of random phase.
+    EXPECT_GT(moved, 0.01 * bound) << trial;
+    // The free recurrence is exact at any step: one coarse step = kSteps fine ones.
+    coarse.step_free();
+    const SectionValues wc = coarse.displacement(), wf = bank.displacement();
+    EXPECT_NEAR(wc.left, wf.left, 1e-9 * bound) << trial;
+    EXPECT_NEAR(wc.right, wf.right, 1e-9 * bound) << trial;
+  }
+}
+
+TEST(SearsEvent, TranslationBoundHoldsUnderGroundMotion) {
+  // The chapter 8 pair (no contacts), random states, a 2.5 Hz ground shaking of 3 m/s^2:
+  // the increase of u_L - u_R at every site over one coarse step never exceeds the bound.
+  BuildingRow row;
+  row.buildings = {storeys(5, 48e3, 8.4e7, 0.05), storeys(3, 29e3, 6.7e7, 0.05)};
+  row.gaps = {{0.0, 0.0, 0.0}};
+  GroundMotion gm;
+  gm.dt = 0.02;
+  for (int i = 0; i <= 100; ++i) gm.accel.push_back(3.0 * std::sin(2.0 * M_PI * 2.5 * i * gm.dt));
+  SearsRowModel model;
+  model.slabs = {{20.0, 21e9, 2500.0, 0.15}, {12.0, 21e9, 2500.0, 0.15}};
+  model.modes = 10;
+  model.stepping = SearsStepping::fixed;
+  model.dt_s = 1e-5;
+  const AssembledRow a = assemble(row);
+  TranslationBound bound(a, gm.pga());
+  std::mt19937 gen(11);
+  std::uniform_real_distribution<double> ud(-0.05, 0.05), vd(-0.5, 0.5);
+  const double h = 1.5e-3;
+  double tightest = 0.0;  // largest rise / bound seen
+  for (int trial = 0; trial < 10; ++trial) {
+    SearsRowProblem p;
+    p.row = &row;
+    p.motion = &gm;
+    p.t_end = h;
+    p.contacts = false;
+    p.record_history = true;
+    p.u0 = Eigen::VectorXd(8);
+    p.v0 = Eigen::VectorXd(8);
+    for (int i = 0; i < 8; ++i) p.u0(i) = ud(gen), p.v0(i) = vd(gen);
+    const SearsRowResult r = solve_sears_row(p, model);
+    bound.set_state(p.u0, p.v0);
+    for (const auto& site : a.sites) {
+      const int l = site.dof_left, rr = site.dof_right;
+      const double rel0 = p.u0(l) - p.u0(rr);
+      double rise = 0.0;
+      for (const auto& u : r.row.history.u) rise = std::max(rise, u(l) - u(rr) - rel0);
+      const double b = bound.approach(l, rr, p.v0, h);
+      EXPECT_LE(rise, b) << trial;
+      tightest = std::max(tightest, rise / b);
+    }
+  }
+  EXPECT_GT(tightest, 0.5);  // the velocity term is exact; the acceleration term is loose
+}
+
+TEST(SearsEvent, BriefContactInsideOneCoarseStepIsNotMissed) {
+  // Two one-storey buildings (T = 4 s, so a coarse step of T/200 = 20 ms), stiff short slabs
+  // (contact about 1.1 ms), the left one moving at 0.1 m/s towards a 0.6 mm gap: the contact
+  // starts near 6 ms and ends near 7.5 ms, inside the first coarse step, and the faces are
+  // apart at both of its ends, so sampling the gap at coarse steps would miss it.
+  const double m = 1e4, k = m * M_PI * M_PI / 4.0;
+  BuildingRow row;
+  row.buildings = {storeys(1, m, k, 0.0), storeys(1, m, k, 0.0)};
+  row.gaps = {{0.6e-3}};
+  SearsRowModel model;
+  model.slabs = {{1.0, 2e10, 2500.0, 0.15}, {1.0, 2e10, 2500.0, 0.15}};
+  model.chi = 1.0;
+  model.modes = 20;
+  SearsRowProblem p;
+  p.row = &row;
+  p.t_end = 0.1;
+  p.u0 = Eigen::Vector2d(0.0, 0.0);
+  p.v0 = Eigen::Vector2d(0.1, 0.0);
+  p.record_history = true;
+  model.stepping = SearsStepping::fixed;
+  const SearsRowResult fixed = solve_sears_row(p, model);
+  model.stepping = SearsStepping::event;
+  const SearsRowResult event = solve_sears_row(p, model);
+  const double hc = event.coarse_dt_s;
+  ASSERT_NEAR(hc, 0.02, 1e-12);
+  // The reference: one contact inside (0, hc), the faces apart at 0 and at hc.
+  ASSERT_EQ(fixed.row.sites[0].impacts, 1);
+  EXPECT_GT(fixed.row.sites[0].first_contact, 0.0);
+  EXPECT_LT(fixed.row.sites[0].last_separation, hc);
+  const auto& H = fixed.row.history;
+  const std::size_t at_hc = std::lower_bound(H.t.begin(), H.t.end(), hc - 1e-12) - H.t.begin();
+  ASSERT_LT(at_hc, H.t.size());
+  EXPECT_LT(H.u[at_hc](0) - H.u[at_hc](1) - 0.6e-3, -1e-4);
+  // The event path finds it, with the same impulse, and takes coarse steps afterwards.
+  EXPECT_EQ(event.row.sites[0].impacts, 1);
+  EXPECT_NEAR(event.row.sites[0].impulse, fixed.row.sites[0].impulse,
+              1e-4 * fixed.row.sites[0].impulse);
+  EXPECT_NEAR(event.row.sites[0].peak_force, fixed.row.sites[0].peak_force,
+              1e-3 * fixed.row.sites[0].peak_force);
+  EXPECT_GT(event.counts.coarse, 0);
+  EXPECT_EQ(event.counts.bound_violations, 0);
+  // After the contact, coarse Newmark steps of T/200 (phase error (w h)^2 / 12 = 8e-5 per
+  // radian) against fine ones.
+  EXPECT_NEAR(event.row.v_end(1), fixed.row.v_end(1), 1e-4 * 0.1);
+}
+
+struct StudyRun {
+  BuildingRow row;
+  SearsRowModel model;
+  GroundMotion motion;
+};
+
+StudyRun read_study(const std::string& file, std::vector<std::string> extra = {}) {
+  auto specs = row_option_specs();
+  const auto ss = sears_row_option_specs();
+  specs.insert(specs.end(), ss.begin(), ss.end());
+  Options opt("simulate", "event stepping test", specs);
+  const std::string path = std::string(POUND_SOURCE_DIR) + "/studies/" + file;
+  std::vector<std::string> args = {"simulate", "--config", path};
+  args.insert(args.end(), extra.begin(), extra.end());
+  std::vector<const char*> argv;
+  for (const auto& x : args) argv.push_back(x.c_str());
+  opt.parse(static_cast<int>(argv.size()), argv.data());
+  StudyRun r;
+  r.row = row_from_options(opt);
+  r.model = sears_row_from_options(opt, r.row);
+  r.motion = motion_from_options(opt);
+  return r;
+}
+
+TEST(SearsEvent, StudyKeySelectsTheStepping) {
+  EXPECT_EQ(read_study("ch8-five-three.ini").model.stepping, SearsStepping::event);
+  EXPECT_EQ(read_study("ch8-five-three.ini", {"--sears.integrator", "fixed"}).model.stepping,
+            SearsStepping::fixed);
+  EXPECT_THROW(read_study("ch8-five-three.ini", {"--sears.integrator", "rk4"}), InputError);
+}
+
+TEST(SearsEvent, AgreesWithTheFixedStepOnTheChapter8Example) {
+  // The first 8 s of studies/ch8-five-three.ini (zero gap: the floors are in contact about
+  // 40 % of the time). Reference: the fixed path at its automatic step (the benchmark,
+  // bench/speed_bench.cpp, compares the full record against dt = 10 us).
+  StudyRun s = read_study("ch8-five-three.ini");
+  s.model.stepping = SearsStepping::fixed;
+  const SearsRowSimulation f = simulate_sears_row(s.row, s.motion, s.model);
+  s.model.stepping = SearsStepping::event;
+  const SearsRowSimulation e = simulate_sears_row(s.row, s.motion, s.model);
+  EXPECT_EQ(e.counts_pounding.bound_violations, 0);
+  EXPECT_EQ(e.counts_free.fine, 0);
+  EXPECT_GT(e.counts_pounding.coarse, 0);
+  ASSERT_EQ(e.base.floors.size(), f.base.floors.size());
+  for (std::size_t i = 0; i < f.base.floors.size(); ++i) {
+    const FloorResponse &x = e.base.floors[i], &y = f.base.floors[i];
+    EXPECT_NEAR(x.disp_pounding, y.disp_pounding, 5e-3 * y.disp_pounding) << i;
+    EXPECT_NEAR(x.disp_free, y.disp_free, 5e-3 * y.disp_free) << i;
+    EXPECT_NEAR(x.drift_ratio_pounding, y.drift_ratio_pounding, 5e-3 * y.drift_ratio_pounding) << i;
+    EXPECT_NEAR(x.drift_ratio_free, y.drift_ratio_free, 5e-3 * y.drift_ratio_free) << i;
+  }
+  for (std::size_t s2 = 0; s2 < f.base.sites.size(); ++s2) {
+    EXPECT_NEAR(e.base.sites[s2].peak_force, f.base.sites[s2].peak_force,
+                0.02 * f.base.sites[s2].peak_force) << s2;
+    EXPECT_EQ(e.contacts[s2].impacts, f.contacts[s2].impacts) << s2;
+  }
+}
+
+}  // namespace
+}  // namespace pound::sears
