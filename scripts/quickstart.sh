@@ -22,8 +22,7 @@ echo "== ${mpi[*]} build/bin/pound campaign --config studies/fragility-default.i
 "${mpi[@]}" build/bin/pound campaign --config studies/fragility-default.ini \
   --out "$out/campaign.h5" --force "${samples[@]}"
 echo "== build/bin/pound fragility --input $out/campaign.h5 --out $out/fragility"
-build/bin/pound fragility --input "$out/campaign.h5" --out "$out/fragility" \
-  --disp-limits 0.02,0.04 --force-limits 1e5,1e6
+build/bin/pound fragility --input "$out/campaign.h5" --out "$out/fragility"
 # Inputs of the figures that the campaign file does not hold: a few generated motions against
 # their target spectrum, and the time histories of the chapter 8 example.
 build/bin/pound motion generate --spectrum ec8 --ec8-type 1 --ground-type C --ag 0.3 \

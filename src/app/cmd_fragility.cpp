@@ -15,6 +15,7 @@
 #include "fragility/campaign_reader.hpp"
 #include "fragility/fragility_analysis.hpp"
 #include "fragility/report_files.hpp"
+#include "io/ini.hpp"
 #include "io/json.hpp"
 #include "io/options.hpp"
 #include "motion/ground_motion.hpp"
@@ -207,11 +208,33 @@ int run_fragility(int argc, const char* const* argv) {
   }
   if (!opt.given("input")) throw InputError("command line: --input RUN.h5 is required");
   const std::string input = opt.get_path("input");
+  // Limits: the command line first, then the study's [fragility] section stored in the
+  // campaign file, then the defaults (drift only).
+  const CampaignData c = read_campaign(input);
+  std::vector<IniEntry> study;
+  try {
+    study = parse_ini(c.study, input + " (stored study)");
+  } catch (const InputError&) {
+    study.clear();  // an unreadable stored study only loses its limits
+  }
+  auto limits_of = [&](const std::string& cli, const std::string& study_key) {
+    if (opt.given(cli)) return limits(opt, cli);
+    for (const auto& e : study)
+      if (e.key == "fragility." + study_key) {
+        const auto v = parse_number_list(
+            e.value, e.file + ":" + std::to_string(e.line) + ": key '" + e.key + "'");
+        for (double x : v)
+          if (!(x > 0))
+            throw InputError(e.file + ": key '" + e.key + "': valid: limits > 0 in SI units");
+        return v;
+      }
+    return limits(opt, cli);
+  };
   FragilitySettings s;
-  s.drift_limits = limits(opt, "drift-limits");
-  s.disp_limits = limits(opt, "disp-limits");
-  s.accel_limits = limits(opt, "accel-limits");
-  s.force_limits = limits(opt, "force-limits");
+  s.drift_limits = limits_of("drift-limits", "drift_limits");
+  s.disp_limits = limits_of("disp-limits", "disp_limits");
+  s.accel_limits = limits_of("accel-limits", "accel_limits");
+  s.force_limits = limits_of("force-limits", "force_limits");
   const long reps = opt.get_int("replicates");
   if (reps < 10 || reps > 100000) throw opt.invalid("replicates", "valid: 10 to 100000");
   const long seed = opt.get_int("seed");
@@ -229,7 +252,6 @@ int run_fragility(int argc, const char* const* argv) {
     fs::path p(input);
     dir = (p.parent_path() / (p.stem().string() + "-fragility")).string();
   }
-  const CampaignData c = read_campaign(input);
   const FragilityReport r = analyse_fragility(c, s);
 
   std::error_code ec;

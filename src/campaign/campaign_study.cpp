@@ -81,6 +81,11 @@ std::vector<OptionSpec> campaign_option_specs() {
        "building (number from the left, or name) whose first period defines Sa(T1)"},
       {"intensity.levels", "g", "",
        "stripe levels (multiple-stripe analysis); samples cycle through them"},
+      {"fragility.drift_limits", "-", "",
+       "damage limits of the peak drift ratio for pound fragility (list)"},
+      {"fragility.disp_limits", "m", "", "limits of the peak floor displacement (list)"},
+      {"fragility.accel_limits", "m/s^2", "", "limits of the peak absolute floor acceleration"},
+      {"fragility.force_limits", "N", "", "limits of the peak pounding force (list)"},
       {"intensity.scale", "-", "",
        "sampled scale factor on the motion instead of levels (distribution)"},
   };

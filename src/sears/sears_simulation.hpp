@@ -142,7 +142,8 @@ double sears_row_step(const BuildingRow& row, const GroundMotion* motion,
 /// Event stepping: the coarse step is the largest step <= min(record spacing,
 /// kCoarseStepPerBuildingPeriod x the shortest building period) that divides the record spacing;
 /// the automatic fine step is the largest step <= sears_row_step() that divides the coarse one
-/// (a given dt is kept, and the ratio rounded down).
+/// (a given dt is kept, and the ratio rounded down). When that coarse step is not longer than
+/// the fine one (few modes, soft contacts), ratio = 1: every step is of the fixed path's size.
 struct SearsSteps {
   double fine_s = 0.0;
   double coarse_s = 0.0;
