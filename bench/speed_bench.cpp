@@ -8,8 +8,9 @@
 // default path over the reference, and the largest relative differences between the two in
 // peak floor displacement, peak drift and peak pounding force, and the impact counts.
 // Times are process CPU times (one thread), robust on a shared machine; wall times beside.
-// Usage: bench_speed [source dir [quick]] (default: the source tree it was built from; "quick":
-// only the event-driven chapter 8 run, for profiling)
+// Usage: bench_speed [source dir [quick | sample ID]] (default: the source tree it was built
+// from; "quick": only the event-driven chapter 8 run, for profiling; "sample ID": peak forces of
+// one campaign sample on the default path, the fixed path at its automatic step and at 10 us)
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -63,13 +64,13 @@ struct Differences {
 };
 
 // Pounding-run peaks of every floor and site.
-Differences compare(const RowSimulation& d, const RowSimulation& r,
-                    const std::vector<int>& imp_d, const std::vector<int>& imp_r) {
+Differences compare(const RowSimulation& d, const RowSimulation& r, const std::vector<int>& imp_d,
+                    const std::vector<int>& imp_r) {
   Differences x;
   for (std::size_t i = 0; i < d.floors.size(); ++i) {
     x.disp = std::max(x.disp, rel(d.floors[i].disp_pounding, r.floors[i].disp_pounding));
-    x.drift = std::max(x.drift,
-                       rel(d.floors[i].drift_ratio_pounding, r.floors[i].drift_ratio_pounding));
+    x.drift =
+        std::max(x.drift, rel(d.floors[i].drift_ratio_pounding, r.floors[i].drift_ratio_pounding));
   }
   for (std::size_t s = 0; s < d.sites.size(); ++s)
     x.force = std::max(x.force, rel(d.sites[s].peak_force, r.sites[s].peak_force));
@@ -107,6 +108,26 @@ Options row_study(const std::string& file, std::vector<std::string> extra) {
   return opt;
 }
 
+constexpr long kSamples = 20;
+
+CampaignStudy load_campaign(const std::string& src, long samples) {
+  Options oc("campaign", "speed benchmark", campaign_option_specs());
+  const std::string frag = src + "/studies/fragility-default.ini";
+  const char* cargv[] = {"campaign", "--config", frag.c_str()};
+  oc.parse(3, cargv);
+  return campaign_from_options(oc, samples, -1);
+}
+
+// The same study on the fixed-step reference path.
+CampaignStudy reference_of(const CampaignStudy& study) {
+  CampaignStudy ref = study;
+  ref.integrator.control = StepControl::fixed;
+  ref.integrator.dt = kReferenceDt;
+  ref.sears.stepping = sears::SearsStepping::fixed;
+  ref.sears.dt_s = kReferenceDt;
+  return ref;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -115,78 +136,9 @@ int main(int argc, char** argv) {
   std::printf("speed benchmark (issue 8): default integrators vs fixed dt = %g s, one core\n",
               kReferenceDt);
 
-  // 1. Chapter 8, sears, N = 100, the full record.
-  const Options o1 = row_study(ch8, {"--motion.duration", "1e9"});
-  const BuildingRow row = row_from_options(o1);
-  const GroundMotion motion = motion_from_options(o1);
-  sears::SearsRowModel ev = sears_row_from_options(o1, row), fx = ev;
-  ev.stepping = sears::SearsStepping::event;
-  fx.stepping = sears::SearsStepping::fixed;
-  fx.dt_s = kReferenceDt;
-  sears::SearsRowSimulation se, sf;
-  const Timing t_se = time_it([&] { se = sears::simulate_sears_row(row, motion, ev); }, 3);
-  if (argc > 2 && std::string(argv[2]) == "quick") {
-    std::printf("chapter 8, event: %.4f s cpu; pounding run %ld fine (%ld with a contact force) "
-                "+ %ld coarse\n", t_se.cpu_s, se.counts_pounding.fine,
-                se.counts_pounding.fine_in_contact, se.counts_pounding.coarse);
-    return 0;
-  }
-  const Timing t_sf = time_it([&] { sf = sears::simulate_sears_row(row, motion, fx); }, 1);
-  std::vector<int> ie, ifx;
-  for (const auto& c : se.contacts) ie.push_back(c.impacts);
-  for (const auto& c : sf.contacts) ifx.push_back(c.impacts);
-  std::printf("\n1. chapter 8 example, sears N = 100, %s, %.2f s; event: fine %.3g s, coarse "
-              "%.3g s; pounding run %ld fine (%ld with a contact force) + %ld coarse steps (bound "
-              "violations %ld), free run %ld fine + %ld coarse\n",
-              motion.name.c_str(), motion.duration(), se.dt_s, se.coarse_dt_s,
-              se.counts_pounding.fine, se.counts_pounding.fine_in_contact, se.counts_pounding.coarse,
-              se.counts_pounding.bound_violations, se.counts_free.fine, se.counts_free.coarse);
-  header();
-  line("sears ch8 (event)", t_se, t_sf, 1, compare(se.base, sf.base, ie, ifx));
-  std::printf("  impacts: phases above %g of the site's peak force per floor; raw phases "
-              "%d/%d/%d (event) vs %d/%d/%d (fixed)\n",
-              ev.impact_force_fraction, se.base.sites[0].impacts, se.base.sites[1].impacts,
-              se.base.sites[2].impacts, sf.base.sites[0].impacts, sf.base.sites[1].impacts,
-              sf.base.sites[2].impacts);
-  std::printf("  peak force per floor [kN]: event %.2f/%.2f/%.2f, fixed %.2f/%.2f/%.2f\n",
-              se.base.sites[0].peak_force / 1e3, se.base.sites[1].peak_force / 1e3,
-              se.base.sites[2].peak_force / 1e3, sf.base.sites[0].peak_force / 1e3,
-              sf.base.sites[1].peak_force / 1e3, sf.base.sites[2].peak_force / 1e3);
-
-  // 2. The same pair, lumped hc-linear (adaptive DP 5(4) with event location vs fixed).
-  const Options o2 = row_study(ch8, {"--motion.duration", "1e9", "--contact.model", "hc-linear",
-                                     "--contact.k_factor", "50"});
-  const ContactSpec contact = contact_from_options(o2, row);
-  IntegratorSettings ad = integrator_from_options(o2), fi = ad;
-  ad.control = StepControl::adaptive;
-  fi.control = StepControl::fixed;
-  fi.dt = kReferenceDt;
-  RowSimulation le, lf;
-  const Timing t_le = time_it([&] { le = simulate_row(row, motion, contact, ad); }, 5);
-  const Timing t_lf = time_it([&] { lf = simulate_row(row, motion, contact, fi); }, 1);
-  std::vector<int> je, jf;
-  for (const auto& s : le.sites) je.push_back(s.impacts);
-  for (const auto& s : lf.sites) jf.push_back(s.impacts);
-  std::printf("\n2. the same pair, lumped hc-linear (k = 50 x 8.4e7 N/m, e = %g), full record; "
-              "adaptive: %ld steps (%ld rejected), fixed: %ld steps\n",
-              contact.params.e, le.pounding.steps, le.pounding.rejected, lf.pounding.steps);
-  header();
-  line("hc-linear 5+3 (adaptive)", t_le, t_lf, 1, compare(le, lf, je, jf));
-
-  // 3. A 20-sample campaign of the default fragility study (half sears N = 40, half hc-linear).
-  auto specs = campaign_option_specs();
-  Options oc("campaign", "speed benchmark", specs);
-  const std::string frag = src + "/studies/fragility-default.ini";
-  const char* cargv[] = {"campaign", "--config", frag.c_str()};
-  oc.parse(3, cargv);
-  constexpr long kSamples = 20;
-  const CampaignStudy study = campaign_from_options(oc, kSamples, -1);
-  CampaignStudy ref = study;
-  ref.integrator.control = StepControl::fixed;
-  ref.integrator.dt = kReferenceDt;
-  ref.sears.stepping = sears::SearsStepping::fixed;
-  ref.sears.dt_s = kReferenceDt;
   if (argc > 3 && std::string(argv[2]) == "sample") {  // diagnostics of one campaign sample
+    const CampaignStudy study = load_campaign(src, kSamples);
+    const CampaignStudy ref = reference_of(study);
     const long id = std::stol(argv[3]);
     CampaignStudy auto_fixed = study;
     auto_fixed.sears.stepping = sears::SearsStepping::fixed;
@@ -208,13 +160,80 @@ int main(int argc, char** argv) {
     std::printf("\n");
     return 0;
   }
+  // 1. Chapter 8, sears, N = 100, the full record.
+  const Options o1 = row_study(ch8, {"--motion.duration", "1e9"});
+  const BuildingRow row = row_from_options(o1);
+  const GroundMotion motion = motion_from_options(o1);
+  sears::SearsRowModel ev = sears_row_from_options(o1, row), fx = ev;
+  ev.stepping = sears::SearsStepping::event;
+  fx.stepping = sears::SearsStepping::fixed;
+  fx.dt_s = kReferenceDt;
+  sears::SearsRowSimulation se, sf;
+  const Timing t_se = time_it([&] { se = sears::simulate_sears_row(row, motion, ev); }, 3);
+  if (argc > 2 && std::string(argv[2]) == "quick") {
+    std::printf(
+        "chapter 8, event: %.4f s cpu; pounding run %ld fine (%ld with a contact force) "
+        "+ %ld coarse\n",
+        t_se.cpu_s, se.counts_pounding.fine, se.counts_pounding.fine_in_contact,
+        se.counts_pounding.coarse);
+    return 0;
+  }
+  const Timing t_sf = time_it([&] { sf = sears::simulate_sears_row(row, motion, fx); }, 1);
+  std::vector<int> ie, ifx;
+  for (const auto& c : se.contacts) ie.push_back(c.impacts);
+  for (const auto& c : sf.contacts) ifx.push_back(c.impacts);
+  std::printf(
+      "\n1. chapter 8 example, sears N = 100, %s, %.2f s; event: fine %.3g s, coarse "
+      "%.3g s; pounding run %ld fine (%ld with a contact force) + %ld coarse steps (bound "
+      "violations %ld), free run %ld fine + %ld coarse\n",
+      motion.name.c_str(), motion.duration(), se.dt_s, se.coarse_dt_s, se.counts_pounding.fine,
+      se.counts_pounding.fine_in_contact, se.counts_pounding.coarse,
+      se.counts_pounding.bound_violations, se.counts_free.fine, se.counts_free.coarse);
+  header();
+  line("sears ch8 (event)", t_se, t_sf, 1, compare(se.base, sf.base, ie, ifx));
+  std::printf(
+      "  impacts: phases above %g of the site's peak force per floor; raw phases "
+      "%d/%d/%d (event) vs %d/%d/%d (fixed)\n",
+      ev.impact_force_fraction, se.base.sites[0].impacts, se.base.sites[1].impacts,
+      se.base.sites[2].impacts, sf.base.sites[0].impacts, sf.base.sites[1].impacts,
+      sf.base.sites[2].impacts);
+  std::printf("  peak force per floor [kN]: event %.2f/%.2f/%.2f, fixed %.2f/%.2f/%.2f\n",
+              se.base.sites[0].peak_force / 1e3, se.base.sites[1].peak_force / 1e3,
+              se.base.sites[2].peak_force / 1e3, sf.base.sites[0].peak_force / 1e3,
+              sf.base.sites[1].peak_force / 1e3, sf.base.sites[2].peak_force / 1e3);
+
+  // 2. The same pair, lumped hc-linear (adaptive DP 5(4) with event location vs fixed).
+  const Options o2 = row_study(ch8, {"--motion.duration", "1e9", "--contact.model", "hc-linear",
+                                     "--contact.k_factor", "50"});
+  const ContactSpec contact = contact_from_options(o2, row);
+  IntegratorSettings ad = integrator_from_options(o2), fi = ad;
+  ad.control = StepControl::adaptive;
+  fi.control = StepControl::fixed;
+  fi.dt = kReferenceDt;
+  RowSimulation le, lf;
+  const Timing t_le = time_it([&] { le = simulate_row(row, motion, contact, ad); }, 5);
+  const Timing t_lf = time_it([&] { lf = simulate_row(row, motion, contact, fi); }, 1);
+  std::vector<int> je, jf;
+  for (const auto& s : le.sites) je.push_back(s.impacts);
+  for (const auto& s : lf.sites) jf.push_back(s.impacts);
+  std::printf(
+      "\n2. the same pair, lumped hc-linear (k = 50 x 8.4e7 N/m, e = %g), full record; "
+      "adaptive: %ld steps (%ld rejected), fixed: %ld steps\n",
+      contact.params.e, le.pounding.steps, le.pounding.rejected, lf.pounding.steps);
+  header();
+  line("hc-linear 5+3 (adaptive)", t_le, t_lf, 1, compare(le, lf, je, jf));
+
+  // 3. A 20-sample campaign of the default fragility study (half sears N = 40, half hc-linear).
+  const CampaignStudy study = load_campaign(src, kSamples);
+  const CampaignStudy ref = reference_of(study);
   std::vector<SampleOutcome> ce(kSamples), cf(kSamples);
-  std::vector<double> cpu_e(kSamples), cpu_f(kSamples);
   SampleRunner run_e(study), run_f(ref);
-  std::printf("\n3. campaign: studies/fragility-default.ini, %ld samples (SampleRunner, one "
-              "core)\n", kSamples);
-  std::printf("%4s %-10s %8s %10s %10s %8s %8s %8s %8s  %s\n", "id", "model", "PGA[g]",
-              "cpu[s]", "ref cpu[s]", "d disp", "d drift", "d force", "same imp",
+  std::printf(
+      "\n3. campaign: studies/fragility-default.ini, %ld samples (SampleRunner, one "
+      "core)\n",
+      kSamples);
+  std::printf("%4s %-10s %8s %10s %10s %8s %8s %8s %8s  %s\n", "id", "model", "PGA[g]", "cpu[s]",
+              "ref cpu[s]", "d disp", "d drift", "d force", "same imp",
               "impacts default | reference");
   Timing t_ce, t_cf;
   Differences worst;
@@ -255,8 +274,7 @@ int main(int argc, char** argv) {
                 model.c_str(), e.im / 9.80665, a.cpu_s, b.cpu_s, 100 * x.disp, 100 * x.drift,
                 100 * x.force, x.same_impacts ? "yes" : "NO", x.impacts_default.c_str(),
                 x.impacts_reference.c_str(),
-                e.status == SampleStatus::ok && f.status == SampleStatus::ok ? ""
-                                                                              : "  (failed)");
+                e.status == SampleStatus::ok && f.status == SampleStatus::ok ? "" : "  (failed)");
     worst.disp = std::max(worst.disp, x.disp);
     worst.drift = std::max(worst.drift, x.drift);
     worst.force = std::max(worst.force, x.force);
@@ -265,11 +283,11 @@ int main(int argc, char** argv) {
   worst.impacts_default = worst.impacts_reference = "(per sample above)";
   header();
   line("campaign, 20 samples", t_ce, t_cf, kSamples, worst);
-  std::printf("  per sample: sears (%d) mean %.4f s, max %.4f s; hc-linear (%ld) mean %.4f s, "
-              "max %.4f s (cpu)\n",
-              models_sears, models_sears ? cpu_sears / models_sears : 0.0, max_sears,
-              kSamples - models_sears,
-              kSamples > models_sears ? cpu_lumped / (kSamples - models_sears) : 0.0,
-              max_lumped);
+  std::printf(
+      "  per sample: sears (%d) mean %.4f s, max %.4f s; hc-linear (%ld) mean %.4f s, "
+      "max %.4f s (cpu)\n",
+      models_sears, models_sears ? cpu_sears / models_sears : 0.0, max_sears,
+      kSamples - models_sears,
+      kSamples > models_sears ? cpu_lumped / (kSamples - models_sears) : 0.0, max_lumped);
   return 0;
 }

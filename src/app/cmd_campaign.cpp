@@ -61,6 +61,9 @@ int run_campaign(int argc, const char* const* argv) {
   specs.push_back({"out", "", "", "result file (HDF5); its journal is OUT.journal"});
   specs.push_back({"samples", "-", "", "number of samples (overrides campaign.samples)"});
   specs.push_back({"seed", "-", "", "study seed (overrides campaign.seed)"});
+  specs.push_back({"sample-range", "", "",
+                   "LO:HI: simulate only sample ids LO..HI-1 (one part of a split campaign; "
+                   "join the parts with pound merge)"});
   specs.push_back({"resume", "", "", "complete an interrupted campaign from its journal", true});
   specs.push_back({"force", "", "", "overwrite an existing result file", true});
   specs.push_back({"quiet", "", "", "no progress lines", true});
@@ -82,6 +85,21 @@ int run_campaign(int argc, const char* const* argv) {
       const long seed = opt.given("seed") ? opt.get_int("seed") : -1;
       if (opt.given("seed") && seed < 0) throw opt.invalid("seed", "valid: >= 0");
       study = campaign_from_options(opt, samples, seed);
+      if (opt.given("sample-range")) {
+        const std::string r = opt.get_string("sample-range");
+        const auto colon = r.find(':');
+        long lo = -1, hi = -1;
+        if (colon != std::string::npos) {
+          lo = static_cast<long>(parse_number(r.substr(0, colon), opt.where("sample-range")));
+          hi = static_cast<long>(parse_number(r.substr(colon + 1), opt.where("sample-range")));
+        }
+        if (!(lo >= 0 && hi > lo && hi <= study.samples))
+          throw opt.invalid("sample-range",
+                            "valid: LO:HI with 0 <= LO < HI <= " + std::to_string(study.samples) +
+                                " (the sample count)");
+        study.range_lo = lo;
+        study.range_hi = hi;
+      }
     }
   } catch (const std::exception& e) {
     error = e.what();

@@ -6,5 +6,6 @@ int run_impact(int argc, const char* const* argv);
 int run_simulate(int argc, const char* const* argv);
 int run_motion(int argc, const char* const* argv);
 int run_campaign(int argc, const char* const* argv);
+int run_merge(int argc, const char* const* argv);
 int run_fragility(int argc, const char* const* argv);
 }  // namespace pound::app

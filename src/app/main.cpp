@@ -25,6 +25,7 @@ const Command kCommands[] = {
      "ground motions: response spectra, design spectra, spectrum-compatible generation"},
     {"campaign", pound::app::run_campaign,
      "Monte Carlo campaign over MPI ranks, results in one HDF5 file (mpirun -np N ...)"},
+    {"merge", pound::app::run_merge, "joins the parts of a campaign split with --sample-range"},
     {"fragility", pound::app::run_fragility,
      "fragility curves with and without pounding from a campaign file"},
 };
@@ -63,8 +64,8 @@ int main(int argc, char** argv) {
       return 1;
     }
   }
-  std::cerr
-      << "pound: error: unknown command '" << argv[1]
-      << "'; valid commands: impact, simulate, motion, campaign, fragility (see 'pound --help')\n";
+  std::cerr << "pound: error: unknown command '" << argv[1]
+            << "'; valid commands: impact, simulate, motion, campaign, fragility, merge (see "
+               "'pound --help')\n";
   return 2;
 }

@@ -105,6 +105,8 @@ CampaignStudy campaign_from_options(const Options& opt, long samples_override, l
 
   st.samples = samples_override > 0 ? samples_override : opt.get_int("campaign.samples");
   if (st.samples < 1) throw opt.invalid("campaign.samples", "valid: a whole number >= 1");
+  st.range_lo = 0;
+  st.range_hi = st.samples;
   if (seed_override >= 0) {
     st.seed = static_cast<std::uint64_t>(seed_override);
   } else {
@@ -288,8 +290,8 @@ CampaignStudy campaign_from_options(const Options& opt, long samples_override, l
   }
   // The study as resolved; run-control options (output, resume, ...) are not part of it, the
   // sample count and seed are stored on their own.
-  st.resolved = opt.resolved_text(
-      {"out", "resume", "force", "quiet", "samples", "seed", "campaign.samples", "campaign.seed"});
+  st.resolved = opt.resolved_text({"out", "resume", "force", "quiet", "samples", "seed",
+                                   "sample-range", "campaign.samples", "campaign.seed"});
   return st;
 }
 

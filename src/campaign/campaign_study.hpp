@@ -40,7 +40,12 @@ struct CampaignStudy {
   double extra_time = 0.0;     ///< free vibration after the record [s]
 
   // Sampling.
-  long samples = 100;      ///< number of samples [-]
+  long samples = 100;  ///< number of samples of the campaign [-]
+  /// The ids this run simulates, [range_lo, range_hi) (default: all). A part of a campaign
+  /// split over independent jobs; each sample stays the same function of (study, samples,
+  /// seed, id), Latin hypercube strata included. `pound merge` joins the parts.
+  long range_lo = 0, range_hi = 0;
+  long range_size() const { return range_hi - range_lo; }
   std::uint64_t seed = 1;  ///< study seed
   SamplingMethod sampling = SamplingMethod::latin_hypercube;
   int batch = 1;  ///< samples handed to a worker at a time

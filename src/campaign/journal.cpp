@@ -67,6 +67,8 @@ std::size_t RecordLayout::record_bytes() const {
 std::uint64_t study_hash(const CampaignStudy& st) {
   std::string s =
       st.resolved + "\nsamples=" + std::to_string(st.samples) + "\nseed=" + std::to_string(st.seed);
+  if (st.range_lo != 0 || st.range_hi != st.samples)
+    s += "\nrange=" + std::to_string(st.range_lo) + ":" + std::to_string(st.range_hi);
   return fnv(s.data(), s.size());
 }
 

@@ -140,11 +140,11 @@ CampaignSummary master_loop(const CampaignStudy& st, const CampaignRunOptions& o
   const RecordLayout layout(st);
   const std::string journal_path = opt.out + ".journal";
   CampaignSummary sum;
-  sum.total = st.samples;
+  sum.total = st.range_size();
   std::vector<char> done(static_cast<std::size_t>(st.samples), 0);
   if (opt.resume) {
     for_each_record(journal_path, st, [&](const SampleOutcome& o) {
-      if (o.id >= 0 && o.id < st.samples && !done[o.id]) {
+      if (o.id >= st.range_lo && o.id < st.range_hi && !done[o.id]) {
         done[o.id] = 1;
         ++sum.done;
         if (o.status != SampleStatus::ok) ++sum.failed;
@@ -153,7 +153,7 @@ CampaignSummary master_loop(const CampaignStudy& st, const CampaignRunOptions& o
   }
   JournalWriter journal(journal_path, st, opt.resume);
   std::vector<long> pending;
-  for (long i = 0; i < st.samples; ++i)
+  for (long i = st.range_lo; i < st.range_hi; ++i)
     if (!done[i]) pending.push_back(i);
   std::size_t next = 0;
   Progress prog;
@@ -166,7 +166,7 @@ CampaignSummary master_loop(const CampaignStudy& st, const CampaignRunOptions& o
       SampleOutcome o;
       if (!decode_record(bytes + off, layout, o))
         throw std::runtime_error("corrupt record from a worker");
-      if (o.id >= 0 && o.id < st.samples && !done[o.id]) {
+      if (o.id >= st.range_lo && o.id < st.range_hi && !done[o.id]) {
         done[o.id] = 1;
         ++sum.done;
         if (o.status != SampleStatus::ok) {

@@ -59,7 +59,9 @@ class RowDataset {
 
 void write_result_file(const std::string& path, const CampaignStudy& st,
                        const std::string& journal_path, const RunInfo& info) {
-  const hsize_t n = static_cast<hsize_t>(st.samples);
+  // Rows: the samples of this run's range, sample id = range_lo + row.
+  const hsize_t n = static_cast<hsize_t>(st.range_size());
+  const long lo = st.range_lo;
   const hsize_t nb = st.buildings(), nf = st.max_floors(), np = st.pairs(), nl = st.max_levels();
   h5::File f(path);
   const hid_t fid = f.id();
@@ -89,10 +91,10 @@ void write_result_file(const std::string& path, const CampaignStudy& st,
 
     std::vector<char> seen(n, 0);
     for_each_record(journal_path, st, [&](const SampleOutcome& o) {
-      if (o.id < 0 || static_cast<hsize_t>(o.id) >= n || seen[o.id])
+      if (o.id < lo || static_cast<hsize_t>(o.id - lo) >= n || seen[o.id - lo])
         return;  // duplicates: first wins
-      seen[o.id] = 1;
-      const hsize_t r = static_cast<hsize_t>(o.id);
+      seen[o.id - lo] = 1;
+      const hsize_t r = static_cast<hsize_t>(o.id - lo);
       const long idv = o.id;
       const int stv = static_cast<int>(o.status);
       const char* msg = o.message.c_str();
@@ -120,7 +122,7 @@ void write_result_file(const std::string& path, const CampaignStudy& st,
     });
     for (hsize_t i = 0; i < n; ++i)
       if (!seen[i])
-        throw InputError(journal_path + ": sample " + std::to_string(i) +
+        throw InputError(journal_path + ": sample " + std::to_string(lo + long(i)) +
                          " is missing; resume the campaign with --resume");
   }
   H5Tclose(str);
@@ -128,6 +130,8 @@ void write_result_file(const std::string& path, const CampaignStudy& st,
   h5::attribute(fid, "/", "engine_version", kVersion);
   h5::attribute(fid, "/", "git_revision", kGitRevision);
   h5::attribute(fid, "/", "seed", std::to_string(st.seed));
+  h5::attribute(fid, "/", "sample_range",
+                std::to_string(st.range_lo) + ":" + std::to_string(st.range_hi));
   h5::attribute(fid, "/", "samples", static_cast<double>(st.samples));
   h5::attribute(fid, "/", "sampling",
                 st.sampling == SamplingMethod::latin_hypercube ? "lhs" : "mc");

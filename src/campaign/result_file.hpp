@@ -1,6 +1,7 @@
 #pragma once
 // The campaign result file (HDF5), built from the journal when every sample is done. Schema:
-//   /samples/id [N]                    sample id (0..N-1; row i holds sample i)
+//   /samples/id [N]                    sample id (row i holds sample lo + i; lo = 0 unless the
+//                                      run was one part of a split campaign, see sample_range)
 //   /samples/status [N]                0 ok, 1 numerical failure, 2 input failure
 //   /samples/message [N]               "" or what failed
 //   /samples/im [N]                    intensity measure of the scaled motion [m/s^2]
@@ -14,6 +15,7 @@
 //   (NaN where a building has fewer floors, a pair fewer levels, or the sample failed)
 //   /run/rank [N], /run/wall_seconds [N]   bookkeeping that differs between runs
 // Root attributes: study (resolved text), engine_version, git_revision, seed, samples,
+// sample_range ("lo:hi", the ids held),
 // sampling, intensity_measure, im_period_s, ranks, start_time, end_time, host.
 #include <string>
 

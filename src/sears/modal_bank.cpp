@@ -34,23 +34,26 @@ inline V4 load(const double* p) {
   std::memcpy(&r, p, sizeof r);
   return r;
 }
-inline void store(double* p, V4 x) { std::memcpy(p, &x, sizeof x); }
+inline void store(double* p, V4 x) {
+  std::memcpy(p, &x, sizeof x);
+}
 
 // One step of every mode with loads linear from f0 to f1 (per lane), and the lane sums of the
 // new q (s[0..3]), of -(2 xi w q' + w^2 q) (s[4..7]) and of the next prediction A q + B q' + C f1
 // (s[8..11]). Each lane sums its modes in order, as a scalar loop would; no FMA is enabled, so
 // the AVX2 clone and the default (SSE2) clone give the same bits.
 __attribute__((target_clones("avx2", "default"))) void fused_step_kernel(const FusedArrays& a,
-                                                                           const double* f0,
-                                                                           const double* f1,
-                                                                           double* s) {
+                                                                         const double* f0,
+                                                                         const double* f1,
+                                                                         double* s) {
   const V4 F0 = load(f0), F1 = load(f1);
   V4 sq = {0, 0, 0, 0}, sa = {0, 0, 0, 0}, sp = {0, 0, 0, 0};
   for (int i = 0; i < a.padded; i += 4) {
     const V4 q = load(a.q + i), v = load(a.v + i);
     const V4 A = load(a.A + i), B = load(a.B + i), C = load(a.C + i);
     const V4 qn = A * q + B * v + C * F0 + load(a.D + i) * F1;
-    const V4 vn = load(a.Av + i) * q + load(a.Bv + i) * v + load(a.Cv + i) * F0 + load(a.Dv + i) * F1;
+    const V4 vn =
+        load(a.Av + i) * q + load(a.Bv + i) * v + load(a.Cv + i) * F0 + load(a.Dv + i) * F1;
     store(a.q + i, qn);
     store(a.v + i, vn);
     sq += qn;
@@ -182,8 +185,18 @@ void ModalBank::step(const EndLoads& begin, const EndLoads& end, StepResult& out
                f0e = gain_ * (begin.left_N + begin.right_N);
   const double f1o = gain_ * (end.left_N - end.right_N), f1e = gain_ * (end.left_N + end.right_N);
   const double f0[4] = {f0o, f0e, f0o, f0e}, f1[4] = {f1o, f1e, f1o, f1e};
-  FusedArrays arr{q_.data(), v_.data(), A_.data(), B_.data(), C_.data(), D_.data(), Av_.data(),
-                  Bv_.data(), Cv_.data(), Dv_.data(), c1_.data(), k1_.data(),
+  FusedArrays arr{q_.data(),
+                  v_.data(),
+                  A_.data(),
+                  B_.data(),
+                  C_.data(),
+                  D_.data(),
+                  Av_.data(),
+                  Bv_.data(),
+                  Cv_.data(),
+                  Dv_.data(),
+                  c1_.data(),
+                  k1_.data(),
                   static_cast<int>(q_.size())};
   double s[12];
   fused_step_kernel(arr, f0, f1, s);

@@ -89,11 +89,12 @@ SearsSteps sears_row_steps(const BuildingRow& row, const GroundMotion* motion,
   if (!std::isfinite(hc)) hc = kMaxRatio * st.fine_s;
   if (motion && motion->dt > 0.0) hc = motion->dt / std::ceil(motion->dt / hc - 1e-9);
   if (!(hc > st.fine_s * (1.0 + 1e-9))) return st;  // the fine step is already coarse enough
-  if (model.dt_s > 0.0) {  // a given fine step is kept
+  if (model.dt_s > 0.0) {                           // a given fine step is kept
     st.ratio = static_cast<long>(std::floor(std::min(hc / st.fine_s, kMaxRatio) + 1e-9));
     st.ratio = std::max(1L, st.ratio);
   } else {  // the fine step divides the coarse one
-    st.ratio = std::max(1L, static_cast<long>(std::ceil(std::min(hc / st.fine_s, kMaxRatio) - 1e-9)));
+    st.ratio =
+        std::max(1L, static_cast<long>(std::ceil(std::min(hc / st.fine_s, kMaxRatio) - 1e-9)));
     st.fine_s = hc / st.ratio;
   }
   st.coarse_s = st.ratio * st.fine_s;

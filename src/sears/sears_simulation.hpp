@@ -64,7 +64,7 @@ struct SearsRowModel {
   double D = 1.0;        ///< flat: fraction factor (Th. 8.2) [-]
   double hertz_k = 0.0;  ///< hertz: stiffness [N/m^1.5]
   double force_cap_N = std::numeric_limits<double>::infinity();  ///< PF_max (Th. 9.1) [N]
-  double dt_s = 0.0;  ///< (fine) step; 0 = automatic
+  double dt_s = 0.0;                                             ///< (fine) step; 0 = automatic
   SearsStepping stepping = SearsStepping::event;
   /// Approach velocity used for the Hertz contact time scale of the step rule [m/s].
   double hertz_reference_velocity = 1.0;
@@ -90,7 +90,7 @@ struct ContactPhase {
 /// Contact phases of one site and the impact count with the threshold applied.
 struct SiteContacts {
   std::vector<ContactPhase> phases;  ///< every phase in time order; phases.size() = raw count
-  int impacts = 0;            ///< phases with peak force >= fraction x the site's largest [-]
+  int impacts = 0;               ///< phases with peak force >= fraction x the site's largest [-]
   double first_impact_s = -1.0;  ///< start of the first counted phase [s]; -1 when none
 };
 
@@ -125,11 +125,11 @@ struct SearsStepCounts {
 };
 
 struct SearsRowResult {
-  RowResult row;                 ///< the fields the lumped solver reports
-  std::vector<SlabPeaks> slabs;  ///< colliding floors only
+  RowResult row;                       ///< the fields the lumped solver reports
+  std::vector<SlabPeaks> slabs;        ///< colliding floors only
   std::vector<SiteContacts> contacts;  ///< per site (row.sites[s].impacts is the raw count)
-  double dt_s = 0.0;             ///< (fine) step used [s]
-  double coarse_dt_s = 0.0;      ///< coarse step [s] (= dt_s for fixed stepping)
+  double dt_s = 0.0;                   ///< (fine) step used [s]
+  double coarse_dt_s = 0.0;            ///< coarse step [s] (= dt_s for fixed stepping)
   SearsStepCounts counts;
 };
 
@@ -156,11 +156,11 @@ SearsSteps sears_row_steps(const BuildingRow& row, const GroundMotion* motion,
 SearsRowResult solve_sears_row(const SearsRowProblem& p, const SearsRowModel& model);
 
 struct SearsRowSimulation {
-  RowSimulation base;            ///< as simulate_row() returns for the lumped models
-  std::vector<SlabPeaks> slabs;  ///< peak face and slab-centre accelerations (pounding run)
+  RowSimulation base;                  ///< as simulate_row() returns for the lumped models
+  std::vector<SlabPeaks> slabs;        ///< peak face and slab-centre accelerations (pounding run)
   std::vector<SiteContacts> contacts;  ///< per site: phases and thresholded impact count
-  double dt_s = 0.0;             ///< (fine) step [s]
-  double coarse_dt_s = 0.0;      ///< coarse step [s]
+  double dt_s = 0.0;                   ///< (fine) step [s]
+  double coarse_dt_s = 0.0;            ///< coarse step [s]
   SearsStepCounts counts_free, counts_pounding;
 };
 

@@ -32,11 +32,11 @@ class TranslationBound {
   double approach(int dof_left, int dof_right, const Eigen::VectorXd& v, double h) const;
 
  private:
-  std::vector<int> building_of_;      // per DOF
-  std::vector<int> begin_, size_;     // per building
-  std::vector<double> sqrt_mass_;     // sqrt(m_b) per building [sqrt(kg)]
-  std::vector<double> sqrt2E_;        // sqrt(2 E_b) per building, current [sqrt(J)]
-  Eigen::VectorXd G_;                 // per DOF [1/(s sqrt(kg))]
+  std::vector<int> building_of_;   // per DOF
+  std::vector<int> begin_, size_;  // per building
+  std::vector<double> sqrt_mass_;  // sqrt(m_b) per building [sqrt(kg)]
+  std::vector<double> sqrt2E_;     // sqrt(2 E_b) per building, current [sqrt(J)]
+  Eigen::VectorXd G_;              // per DOF [1/(s sqrt(kg))]
   Eigen::MatrixXd K_, M_;
   double ag_max_ = 0.0;
 };

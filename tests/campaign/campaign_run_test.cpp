@@ -131,6 +131,29 @@ TEST(CampaignRun, SigtermStopsCleanlyAndTheRunResumes) {
   expect_same_numbers(ref, cut);
 }
 
+TEST(CampaignRun, PartsOfASplitCampaignMergeIntoTheSingleRun) {
+  // Three sample ranges (as three jobs of a Slurm array would run them), merged.
+  const std::string ref = dir() + "/whole.h5";
+  const std::string n = "--samples 30";
+  ASSERT_EQ(sh(pound(n + " --out " + ref)), 0);
+  const char* ranges[] = {"0:7", "7:20", "20:30"};
+  std::string parts;
+  for (int i = 2; i >= 0; --i) {  // in any order
+    const std::string part = dir() + "/part" + std::to_string(i) + ".h5";
+    ASSERT_EQ(sh(pound(n + " --sample-range " + ranges[i] + " --out " + part)), 0);
+    parts += (parts.empty() ? "" : ",") + part;
+  }
+  const std::string merged = dir() + "/merged.h5";
+  ASSERT_EQ(sh(std::string(POUND_BINARY) + " merge --out " + merged + " --parts " + parts), 0);
+  expect_same_numbers(ref, merged);
+  // A gap is refused and leaves no file.
+  const std::string bad = dir() + "/bad-merge.h5";
+  EXPECT_EQ(sh(std::string(POUND_BINARY) + " merge --out " + bad + " --parts " + dir() +
+               "/part0.h5," + dir() + "/part2.h5"),
+            2);
+  EXPECT_FALSE(fs::exists(bad));
+}
+
 TEST(CampaignRun, StudyErrorCreatesNoFile) {
   const std::string out = dir() + "/bad.h5";
   EXPECT_EQ(sh(std::string(POUND_BINARY) + " campaign --config " + kStudy +

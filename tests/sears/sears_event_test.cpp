@@ -210,7 +210,8 @@ TEST(SearsEvent, AgreesWithTheFixedStepOnTheChapter8Example) {
   }
   for (std::size_t s2 = 0; s2 < f.base.sites.size(); ++s2) {
     EXPECT_NEAR(e.base.sites[s2].peak_force, f.base.sites[s2].peak_force,
-                0.02 * f.base.sites[s2].peak_force) << s2;
+                0.02 * f.base.sites[s2].peak_force)
+        << s2;
     EXPECT_EQ(e.contacts[s2].impacts, f.contacts[s2].impacts) << s2;
   }
 }
