@@ -1,26 +1,16 @@
 #!/usr/bin/python3
-"""Split a pound campaign into chunks for a Slurm job array, merge the chunks, compare files.
+"""Check pound campaign files and journals (used by test-local-slurm.sh and by hand).
 
 Needs Debian's python3-h5py and python3-numpy (run it with /usr/bin/python3).
 
   pound_parts.py range  --chunk K --chunks C --samples N      print "LO HI" of chunk K
-  pound_parts.py seed   --probe PROBE.journal --journal PART.h5.journal --chunk K --chunks C
-  pound_parts.py merge  OUT.h5 PART0.h5 PART1.h5 ...          (parts in chunk order)
+                                                               (as pound campaign --chunk K/C)
   pound_parts.py check  RUN.h5                                every sample exactly once
   pound_parts.py journal RUN.h5.journal                       records; fails on a duplicate
   pound_parts.py compare A.h5 B.h5                            /samples and /response equal
 
-How the split works with the current engine (a stopgap until `pound campaign` can run a
-sample range by itself): samples are pure functions of (study, sample id), and
-`pound campaign --resume` skips every sample its journal already holds. `seed` writes a
-journal for chunk K that holds *placeholder* records for every sample outside the chunk, so
-that `--resume` simulates only the chunk's samples; the finished part file then has real
-rows for its own samples and placeholder rows (all zeros, message PLACEHOLDER) elsewhere.
-`merge` takes from each part only the rows of its own chunk and refuses placeholders.
-The journal layout is the one documented in src/campaign/journal.hpp ("POUNDJ01"); the
-header (study hash, values per record, sample count) is copied from a journal the engine
-itself started for the same study and options (the probe), so this script never needs to
-know how the study hash is computed.
+Splitting and merging are done by the engine: `pound campaign --chunk K/C` runs one range of
+samples and `pound merge` joins the parts (see README.md).
 """
 import argparse
 import os
@@ -32,7 +22,6 @@ import numpy as np
 
 MAGIC = b"POUNDJ01"
 HEADER_BYTES = 8 + 4 * 8
-PLACEHOLDER = b"pound-slurm placeholder: this sample belongs to another chunk"
 FNV_OFFSET = np.uint64(14695981039346656037)
 FNV_PRIME = np.uint64(1099511628211)
 
@@ -59,21 +48,6 @@ def read_header(path):
              "(the engine's journal format changed: update pound_parts.py)")
     _hash, values, msg_bytes, samples = struct.unpack("<4Q", h[8:])
     return h, values, msg_bytes, samples
-
-
-def placeholder_records(ids, values, msg_bytes):
-    """Encoded placeholder records for `ids` (array of int64), as one bytes object."""
-    n = len(ids)
-    body = 16 + 8 * values + msg_bytes
-    rec = np.zeros((n, body + 8), dtype=np.uint8)
-    rec[:, 0:8] = ids.astype("<i8").view(np.uint8).reshape(n, 8)
-    # status (8 bytes) = 0 (ok, so that the engine does not count them as failures),
-    # values = 0.0 (a valid index for a sampled `model` too).
-    msg = PLACEHOLDER[: msg_bytes - 1]
-    rec[:, 16 + 8 * values: 16 + 8 * values + len(msg)] = np.frombuffer(msg, dtype=np.uint8)
-    h = fnv_rows(rec[:, :body])
-    rec[:, body:] = h.astype("<u8").view(np.uint8).reshape(n, 8)
-    return rec.tobytes()
 
 
 def fnv_rows(rec):
@@ -112,23 +86,6 @@ def cmd_range(a):
     print(lo, hi)
 
 
-def cmd_seed(a):
-    header, values, msg_bytes, samples = read_header(a.probe)
-    lo, hi = chunk_range(a.chunk, a.chunks, samples)
-    ids = np.concatenate([np.arange(0, lo), np.arange(hi, samples)]).astype(np.int64)
-    tmp = a.journal + ".seeding"
-    with open(tmp, "wb") as f:
-        f.write(header)
-        step = 65536
-        for s in range(0, len(ids), step):
-            f.write(placeholder_records(ids[s: s + step], values, msg_bytes))
-        f.flush()
-        os.fsync(f.fileno())
-    os.replace(tmp, a.journal)
-    print("pound_parts: %s: chunk %d of %d = samples [%d, %d) of %d; %d placeholders"
-          % (a.journal, a.chunk, a.chunks, lo, hi, samples, len(ids)))
-
-
 def datasets(f, groups=("samples", "response", "run")):
     out = []
     for g in groups:
@@ -142,51 +99,6 @@ def as_bytes(x):
     return x if isinstance(x, bytes) else str(x).encode()
 
 
-def cmd_merge(a):
-    import h5py
-    parts = a.parts
-    chunks = len(parts)
-    files = [h5py.File(p, "r") for p in parts]
-    try:
-        first = files[0]
-        samples = int(first["samples/id"].shape[0])
-        names = datasets(first)
-        for p, f in zip(parts, files):
-            if datasets(f) != names or int(f["samples/id"].shape[0]) != samples:
-                fail(p + ": not a part of the same campaign as " + parts[0])
-            for key in ("study", "seed", "samples"):
-                if f.attrs.get(key) != first.attrs.get(key):
-                    fail("%s: attribute %s differs from %s" % (p, key, parts[0]))
-        for k, (p, f) in enumerate(zip(parts, files)):
-            lo, hi = chunk_range(k, chunks, samples)
-            ids = f["samples/id"][lo:hi]
-            if not np.array_equal(ids, np.arange(lo, hi)):
-                fail("%s: rows [%d, %d) do not hold samples %d..%d" % (p, lo, hi, lo, hi - 1))
-            msgs = f["samples/message"][lo:hi]
-            if any(as_bytes(m) == PLACEHOLDER for m in msgs):
-                fail("%s: chunk %d holds placeholders; is this part of chunk %d of %d?"
-                     % (p, k, k, chunks))
-        tmp = a.out + ".merging"
-        shutil.copyfile(parts[0], tmp)
-        with h5py.File(tmp, "r+") as out:
-            for k, f in enumerate(files[1:], start=1):
-                lo, hi = chunk_range(k, chunks, samples)
-                for name in names:
-                    out[name][lo:hi] = f[name][lo:hi]
-            if any(as_bytes(m) == PLACEHOLDER for m in out["samples/message"][:]):
-                fail("merged file still holds placeholders")
-            out.attrs["ranks"] = float(sum(f.attrs.get("ranks", 0) for f in files))
-            out.attrs["start_time"] = min(as_bytes(f.attrs["start_time"]) for f in files).decode()
-            out.attrs["end_time"] = max(as_bytes(f.attrs["end_time"]) for f in files).decode()
-            out.attrs["host"] = ", ".join(sorted({as_bytes(f.attrs["host"]).decode() for f in files}))
-            out.attrs["merged_parts"] = float(chunks)
-        os.replace(tmp, a.out)
-    finally:
-        for f in files:
-            f.close()
-    print("pound_parts: merged %d parts (%d samples) into %s" % (chunks, samples, a.out))
-
-
 def cmd_check(a):
     import h5py
     with h5py.File(a.file, "r") as f:
@@ -196,8 +108,6 @@ def cmd_check(a):
         status = f["samples/status"][:]
     if len(ids) != n or not np.array_equal(np.sort(ids), np.arange(n)) or not np.array_equal(ids, np.arange(n)):
         fail("%s: sample ids are not 0..%d, each once" % (a.file, n - 1))
-    if any(as_bytes(m) == PLACEHOLDER for m in msgs):
-        fail(a.file + ": holds placeholder rows")
     print("pound_parts: %s: %d samples, ids 0..%d each exactly once, %d not ok"
           % (a.file, n, n - 1, int(np.count_nonzero(status != 0))))
 
@@ -232,14 +142,6 @@ def main():
     r.add_argument("--chunk", type=int, required=True)
     r.add_argument("--chunks", type=int, required=True)
     r.add_argument("--samples", type=int, required=True)
-    s = sub.add_parser("seed")
-    s.add_argument("--probe", required=True, help="a journal the engine started for this study")
-    s.add_argument("--journal", required=True, help="the part's journal to write")
-    s.add_argument("--chunk", type=int, required=True)
-    s.add_argument("--chunks", type=int, required=True)
-    m = sub.add_parser("merge")
-    m.add_argument("out")
-    m.add_argument("parts", nargs="+")
     c = sub.add_parser("check")
     c.add_argument("file")
     j = sub.add_parser("journal")
@@ -249,8 +151,8 @@ def main():
     d.add_argument("b")
     a = p.parse_args()
     try:
-        {"range": cmd_range, "seed": cmd_seed, "merge": cmd_merge, "check": cmd_check,
-         "journal": cmd_journal, "compare": cmd_compare}[a.cmd](a)
+        {"range": cmd_range, "check": cmd_check, "journal": cmd_journal,
+         "compare": cmd_compare}[a.cmd](a)
     except OSError as e:
         fail(str(e))
 

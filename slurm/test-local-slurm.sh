@@ -326,8 +326,8 @@ for k in 0 1; do
   expect_job "${arr}_$k" COMPLETED 0:0 "$J/chunk-$k.out"
   excerpt "$J/chunk-$k.out"
   lohi=$("$PY" "$parts_py" range --chunk "$k" --chunks 2 --samples "$samples")
-  grep -q "chunk $k of 2 = samples \[${lohi% *}, ${lohi#* })" "$J/chunk-$k.out" \
-    || { show_log "$J/chunk-$k.out"; die "chunk $k: no seeding line"; }
+  grep -q "chunk $k/2 = samples \[${lohi% *}, ${lohi#* })" "$J/chunk-$k.out" \
+    || { show_log "$J/chunk-$k.out"; die "chunk $k: the engine did not report its sample range"; }
 done
 ok "array tasks ${arr}_0 and ${arr}_1 completed, each on its own half of the samples"
 wait_job "$mrg" 200

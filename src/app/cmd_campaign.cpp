@@ -64,6 +64,8 @@ int run_campaign(int argc, const char* const* argv) {
   specs.push_back({"sample-range", "", "",
                    "LO:HI: simulate only sample ids LO..HI-1 (one part of a split campaign; "
                    "join the parts with pound merge)"});
+  specs.push_back(
+      {"chunk", "", "", "K/C: the K-th of C equal sample ranges, K = 0..C-1 (Slurm array tasks)"});
   specs.push_back({"resume", "", "", "complete an interrupted campaign from its journal", true});
   specs.push_back({"force", "", "", "overwrite an existing result file", true});
   specs.push_back({"quiet", "", "", "no progress lines", true});
@@ -100,6 +102,20 @@ int run_campaign(int argc, const char* const* argv) {
         study.range_lo = lo;
         study.range_hi = hi;
       }
+      if (opt.given("chunk")) {
+        if (opt.given("sample-range")) throw opt.invalid("chunk", "give --chunk or --sample-range");
+        const std::string r = opt.get_string("chunk");
+        const auto slash = r.find('/');
+        long k = -1, c = -1;
+        if (slash != std::string::npos) {
+          k = static_cast<long>(parse_number(r.substr(0, slash), opt.where("chunk")));
+          c = static_cast<long>(parse_number(r.substr(slash + 1), opt.where("chunk")));
+        }
+        if (!(c >= 1 && c <= study.samples && k >= 0 && k < c))
+          throw opt.invalid("chunk", "valid: K/C with C chunks, 1 <= C <= samples, 0 <= K < C");
+        study.range_lo = k * study.samples / c;
+        study.range_hi = (k + 1) * study.samples / c;
+      }
     }
   } catch (const std::exception& e) {
     error = e.what();
@@ -130,6 +146,12 @@ int run_campaign(int argc, const char* const* argv) {
                  study.samples, size, size == 1 ? "" : "s",
                  static_cast<unsigned long long>(study.seed), study.parameters.size(),
                  study.parameters.size() == 1 ? "" : "s", opt.flag("resume") ? " (resuming)" : "");
+    if (opt.given("chunk"))
+      std::fprintf(stderr, "campaign: chunk %s = samples [%ld, %ld) of %ld\n",
+                   opt.get_string("chunk").c_str(), study.range_lo, study.range_hi, study.samples);
+    else if (opt.given("sample-range"))
+      std::fprintf(stderr, "campaign: samples [%ld, %ld) of %ld\n", study.range_lo, study.range_hi,
+                   study.samples);
     std::fprintf(stderr, "campaign: resolved study:\n");
     std::string text = study.resolved;
     std::size_t p = 0;
