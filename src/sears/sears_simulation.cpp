@@ -122,8 +122,20 @@ SearsRowResult solve_sears_row(const SearsRowProblem& p, const SearsRowModel& mo
   // H = Mt^-1 [e_L - e_R], and u_{i+1} = u_hat - dt^2/4 H F.
   const Eigen::MatrixXd Mt = a.M + (0.5 * dt) * a.C + (0.25 * dt * dt) * a.K;
   const Eigen::LLT<Eigen::MatrixXd> mt(Mt);
+  const Eigen::VectorXd m_ones = a.M * Eigen::VectorXd::Ones(n);
+  // Mt^-1 applied once here, so that a step costs two matrix-vector products:
+  //   a_{i+1} = -(Mt^-1 M 1) ag - (Mt^-1 C) (v + h/2 a) - (Mt^-1 K) (u + h v + h^2/4 a).
+  struct NewmarkOperator {
+    Eigen::MatrixXd C, K;  // Mt^-1 C, Mt^-1 K
+    Eigen::VectorXd g;     // Mt^-1 M 1
+  };
+  auto newmark_operator = [&](const Eigen::LLT<Eigen::MatrixXd>& f) {
+    return NewmarkOperator{f.solve(a.C), f.solve(a.K), f.solve(m_ones)};
+  };
+  const NewmarkOperator nm_fine = newmark_operator(mt);
   // Coarse steps carry no contact force (event stepping only).
-  const Eigen::LLT<Eigen::MatrixXd> mt_coarse(a.M + (0.5 * hc) * a.C + (0.25 * hc * hc) * a.K);
+  const NewmarkOperator nm_coarse = newmark_operator(
+      Eigen::LLT<Eigen::MatrixXd>(a.M + (0.5 * hc) * a.C + (0.25 * hc * hc) * a.K));
   Eigen::MatrixXd Dsites = Eigen::MatrixXd::Zero(n, ns);  // columns e_L - e_R
   for (int s = 0; s < ns; ++s) {
     Dsites(a.sites[s].dof_left, s) = 1.0;
@@ -131,7 +143,6 @@ SearsRowResult solve_sears_row(const SearsRowProblem& p, const SearsRowModel& mo
   }
   const Eigen::MatrixXd H = mt.solve(Dsites);
   const Eigen::MatrixXd S = (0.25 * dt * dt) * Dsites.transpose() * H + L.S_modal;
-  const Eigen::VectorXd m_ones = a.M * Eigen::VectorXd::Ones(n);
   TranslationBound bound(a, p.motion ? p.motion->pga() : 0.0);
 
   auto ag_at = [&](double t) { return p.motion ? p.motion->at(t) : 0.0; };
@@ -139,7 +150,7 @@ SearsRowResult solve_sears_row(const SearsRowProblem& p, const SearsRowModel& mo
   Eigen::VectorXd v = p.v0.size() ? p.v0 : Eigen::VectorXd::Zero(n);
   Eigen::VectorXd acc = a.M.ldlt().solve(-m_ones * ag_at(0.0) - a.C * v - a.K * u);
   Eigen::VectorXd F = Eigen::VectorXd::Zero(ns), F_next = F, delta_pred(ns), delta(ns);
-  Eigen::VectorXd u_hat(n), a_next(n), rhs(n), work(n);
+  Eigen::VectorXd u_hat(n), a_next(n), work(n);
   for (int s = 0; s < ns; ++s)
     delta(s) = u(a.sites[s].dof_left) - u(a.sites[s].dof_right) - a.sites[s].gap;
   std::vector<EndLoads> begin(nf), end(nf);
@@ -155,13 +166,12 @@ SearsRowResult solve_sears_row(const SearsRowProblem& p, const SearsRowModel& mo
     }
   };
   // a_next = Mt^-1 (p_{i+1} - C (v + h/2 a) - K (u + h v + h^2/4 a)), without contact forces.
-  auto newmark_predict = [&](double h, const Eigen::LLT<Eigen::MatrixXd>& f, double t_next) {
+  auto newmark_predict = [&](double h, const NewmarkOperator& op, double t_next) {
     work = v + (0.5 * h) * acc;
-    rhs.noalias() = a.C * work;
+    a_next.noalias() = op.C * work;
     work = u + h * v + (0.25 * h * h) * acc;
-    rhs.noalias() += a.K * work;
-    rhs = -m_ones * ag_at(t_next) - rhs;
-    a_next = f.solve(rhs);
+    a_next.noalias() += op.K * work;
+    a_next = -op.g * ag_at(t_next) - a_next;
   };
   auto newmark_update = [&](double h) {
     u += h * v + (0.25 * h * h) * (acc + a_next);
@@ -169,7 +179,7 @@ SearsRowResult solve_sears_row(const SearsRowProblem& p, const SearsRowModel& mo
     acc = a_next;
   };
   auto fine_step = [&](double t_next) {
-    newmark_predict(dt, mt, t_next);
+    newmark_predict(dt, nm_fine, t_next);
     u_hat = u + dt * v + (0.25 * dt * dt) * (acc + a_next);
     loads(F, begin);
     F_next.setZero();
@@ -195,7 +205,7 @@ SearsRowResult solve_sears_row(const SearsRowProblem& p, const SearsRowModel& mo
     pred_valid = true;
   };
   auto coarse_step = [&](double t_next) {  // F = 0 at both ends
-    newmark_predict(hc, mt_coarse, t_next);
+    newmark_predict(hc, nm_coarse, t_next);
     newmark_update(hc);
     F_next.setZero();
     loads(F_next, end);
