@@ -78,6 +78,7 @@ class Solver {
     }
     force_.setZero(ns_);
     P_.setZero(n_);
+    work_force_.setZero(n_);
     work_.resize(2 * n_ + ns_);
   }
 
@@ -92,7 +93,11 @@ class Solver {
     const double ag = p_.motion ? p_.motion->at(t) : 0.0;
     dy.resize(2 * n_ + ns_);
     dy.head(n_) = v;
-    dy.segment(n_, n_).noalias() = row_.inv_mass.cwiseProduct(P_ - row_.C * v - row_.K * u);
+    // Allocation-free: the products go into a preallocated work vector.
+    work_force_ = P_;
+    work_force_.noalias() -= row_.C * v;
+    work_force_.noalias() -= row_.K * u;
+    dy.segment(n_, n_) = row_.inv_mass.cwiseProduct(work_force_);
     dy.segment(n_, n_).array() -= ag;
     dy.tail(ns_) = force_;
   }
@@ -210,7 +215,7 @@ class Solver {
   std::vector<int> below_;    // DOF of the floor below, -1 for a first floor
   std::vector<double> last_event_t_;
   std::vector<int> chatter_;
-  Eigen::VectorXd force_, P_;
+  Eigen::VectorXd force_, P_, work_force_;
   Dopri5Work work_;
   RowResult r_;
 };
