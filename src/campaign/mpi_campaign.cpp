@@ -24,6 +24,10 @@ extern "C" void on_stop_signal(int) {
   g_stop = 1;
 }
 
+// Work requests each worker keeps in flight: with several, a worker always holds queued work
+// while the master is busy with its own sample and cannot answer at once.
+constexpr int kRequestsInFlight = 4;
+
 enum Tag : int {
   kRequest = 1,  // worker -> master: finished records (0..n), asks for one more batch
   kWork = 2,     // master -> worker: ids of a batch
@@ -31,6 +35,45 @@ enum Tag : int {
   kStopNow = 4,  // master -> worker: interrupted; drop the queue
   kDone = 5,     // worker -> master: finished, nothing outstanding
 };
+
+// Non-blocking sends whose buffers live until the send completes. A blocking MPI_Send may
+// wait for the receiver to post its receive (rendezvous), and both master and workers spend
+// most of their time simulating, so a blocking send would idle the sender for up to one
+// sample's time.
+class PendingSends {
+ public:
+  void send(std::vector<char> bytes, int dest, int tag, MPI_Comm comm) {
+    items_.push_back({std::move(bytes), MPI_REQUEST_NULL});
+    auto& it = items_.back();
+    MPI_Isend(it.bytes.data(), static_cast<int>(it.bytes.size()), MPI_BYTE, dest, tag, comm,
+              &it.request);
+    reap();
+  }
+  void reap() {
+    while (!items_.empty()) {
+      int done = 0;
+      MPI_Test(&items_.front().request, &done, MPI_STATUS_IGNORE);
+      if (!done) break;
+      items_.pop_front();
+    }
+  }
+  void wait_all() {
+    for (auto& it : items_) MPI_Wait(&it.request, MPI_STATUS_IGNORE);
+    items_.clear();
+  }
+
+ private:
+  struct Item {
+    std::vector<char> bytes;
+    MPI_Request request;
+  };
+  std::deque<Item> items_;  // deque: element addresses stay valid as it grows
+};
+
+std::vector<char> id_bytes(const std::vector<long>& ids) {
+  const char* p = reinterpret_cast<const char*>(ids.data());
+  return std::vector<char>(p, p + ids.size() * sizeof(long));
+}
 
 std::string now_text() {
   char buf[64];
@@ -46,8 +89,9 @@ void worker(const CampaignStudy& st, MPI_Comm comm, int rank) {
   std::deque<long> queue;
   int outstanding = 0;
   bool stopped = false;
-  auto request = [&](const std::vector<char>& records) {
-    MPI_Send(records.data(), static_cast<int>(records.size()), MPI_BYTE, 0, kRequest, comm);
+  PendingSends sends;
+  auto request = [&](std::vector<char> records) {
+    sends.send(std::move(records), 0, kRequest, comm);
     ++outstanding;
   };
   auto receive = [&](bool block) {
@@ -60,9 +104,9 @@ void worker(const CampaignStudy& st, MPI_Comm comm, int rank) {
         MPI_Iprobe(0, MPI_ANY_TAG, comm, &flag, &s);
       if (!flag) return;
       int count = 0;
-      MPI_Get_count(&s, MPI_LONG, &count);
-      std::vector<long> ids(static_cast<std::size_t>(count));
-      MPI_Recv(ids.data(), count, MPI_LONG, 0, s.MPI_TAG, comm, MPI_STATUS_IGNORE);
+      MPI_Get_count(&s, MPI_BYTE, &count);
+      std::vector<long> ids(static_cast<std::size_t>(count) / sizeof(long));
+      MPI_Recv(ids.data(), count, MPI_BYTE, 0, s.MPI_TAG, comm, MPI_STATUS_IGNORE);
       --outstanding;
       if (s.MPI_TAG == kWork) {
         queue.insert(queue.end(), ids.begin(), ids.end());
@@ -73,9 +117,8 @@ void worker(const CampaignStudy& st, MPI_Comm comm, int rank) {
       block = false;
     }
   };
-  // Two requests in flight: a batch is always queued while the master is busy.
-  request({});
-  request({});
+  // Several requests in flight: a batch is always queued while the master is busy.
+  for (int i = 0; i < kRequestsInFlight; ++i) request({});
   while (true) {
     receive(queue.empty() && outstanding > 0);
     if (queue.empty()) {
@@ -86,14 +129,12 @@ void worker(const CampaignStudy& st, MPI_Comm comm, int rank) {
     queue.pop_front();
     SampleOutcome o = runner.run(id);
     o.rank = rank;
-    const std::vector<char> rec = encode_record(o, layout);
-    if (!stopped) {
-      request(rec);
-    } else {
-      // Still deliver the result; the master answers every request with a stop.
-      request(rec);
-    }
+    // Deliver the result with a request for more work (after a stop the master answers every
+    // request with a stop).
+    request(encode_record(o, layout));
+    sends.reap();
   }
+  sends.wait_all();
   MPI_Send(nullptr, 0, MPI_BYTE, 0, kDone, comm);
 }
 
@@ -116,7 +157,7 @@ void drain_workers(MPI_Comm comm, int active) {
     if (s.MPI_TAG == kDone)
       --active;
     else
-      MPI_Send(nullptr, 0, MPI_LONG, s.MPI_SOURCE, kStopNow, comm);
+      MPI_Send(nullptr, 0, MPI_BYTE, s.MPI_SOURCE, kStopNow, comm);
   }
 }
 
@@ -189,6 +230,7 @@ CampaignSummary master_loop(const CampaignStudy& st, const CampaignRunOptions& o
   };
 
   bool stopping = false;
+  PendingSends replies;
   while (true) {
     if (g_stop && !stopping) {
       stopping = true;
@@ -217,7 +259,7 @@ CampaignSummary master_loop(const CampaignStudy& st, const CampaignRunOptions& o
         while (next < pending.size() && ids.size() < static_cast<std::size_t>(st.batch))
           ids.push_back(pending[next++]);
       const int tag = !ids.empty() ? kWork : (stopping ? kStopNow : kStopEnd);
-      MPI_Send(ids.data(), static_cast<int>(ids.size()), MPI_LONG, s.MPI_SOURCE, tag, comm);
+      replies.send(id_bytes(ids), s.MPI_SOURCE, tag, comm);
     }
     report(false);
     if (!stopping && next < pending.size()) {
@@ -234,6 +276,7 @@ CampaignSummary master_loop(const CampaignStudy& st, const CampaignRunOptions& o
       MPI_Probe(MPI_ANY_SOURCE, MPI_ANY_TAG, comm, &s);  // wait for the next message
     }
   }
+  replies.wait_all();
   journal.sync();
   if (stopping && sum.done < sum.total) sum.interrupted = true;
   report(true);
