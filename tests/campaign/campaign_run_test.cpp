@@ -80,16 +80,30 @@ TEST(CampaignRun, SameNumbersOnOneAndTwoRanks) {
   EXPECT_FALSE(fs::exists(one + ".journal"));
 }
 
+// Starts `pound campaign` with these arguments in the background.
+pid_t start_campaign(const std::string& args) {
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    ::execl("/bin/sh", "sh", "-c", ("exec " + pound(args)).c_str(), nullptr);
+    ::_exit(127);
+  }
+  return pid;
+}
+
+// Sends the signal and returns the wait status.
+int signal_and_wait(pid_t pid, int sig) {
+  ::kill(pid, sig);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  return status;
+}
+
 TEST(CampaignRun, KilledRunResumesToTheUninterruptedFile) {
   const std::string ref = dir() + "/ref.h5", cut = dir() + "/cut.h5";
   const std::string n = "--samples 160";
   ASSERT_EQ(sh(pound(n + " --out " + ref)), 0);
   // Start the same run and SIGKILL it once its journal holds some samples.
-  const pid_t pid = ::fork();
-  if (pid == 0) {
-    ::execl("/bin/sh", "sh", "-c", ("exec " + pound(n + " --out " + cut)).c_str(), nullptr);
-    ::_exit(127);
-  }
+  const pid_t pid = start_campaign(n + " --out " + cut);
   const std::string journal = cut + ".journal";
   const auto t0 = std::chrono::steady_clock::now();
   while (std::chrono::steady_clock::now() - t0 < std::chrono::seconds(60)) {
@@ -97,9 +111,7 @@ TEST(CampaignRun, KilledRunResumesToTheUninterruptedFile) {
     if (::stat(journal.c_str(), &s) == 0 && s.st_size > 40 * 1024 / 10) break;
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
-  ::kill(pid, SIGKILL);
-  int status = 0;
-  ::waitpid(pid, &status, 0);
+  const int status = signal_and_wait(pid, SIGKILL);
   ASSERT_TRUE(WIFSIGNALED(status)) << "the run finished before it could be killed";
   ASSERT_TRUE(fs::exists(journal));
   EXPECT_FALSE(fs::exists(cut));
@@ -113,15 +125,9 @@ TEST(CampaignRun, SigtermStopsCleanlyAndTheRunResumes) {
   const std::string ref = dir() + "/ref2.h5", cut = dir() + "/term.h5";
   const std::string n = "--samples 160";
   ASSERT_EQ(sh(pound(n + " --out " + ref)), 0);
-  const pid_t pid = ::fork();
-  if (pid == 0) {
-    ::execl("/bin/sh", "sh", "-c", ("exec " + pound(n + " --out " + cut)).c_str(), nullptr);
-    ::_exit(127);
-  }
+  const pid_t pid = start_campaign(n + " --out " + cut);
   std::this_thread::sleep_for(std::chrono::milliseconds(600));
-  ::kill(pid, SIGTERM);
-  int status = 0;
-  ::waitpid(pid, &status, 0);
+  const int status = signal_and_wait(pid, SIGTERM);
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 0);
   if (fs::exists(cut + ".journal")) {  // stopped before the end (the usual case)
