@@ -55,8 +55,14 @@ RowContactLayout make_layout(const BuildingRow& row, const AssembledRow& a,
       const Slab left = floor_slab(row, model, site.pair, site.level);
       const Slab right = floor_slab(row, model, site.pair + 1, site.level);
       law.stiffness = flat_contact_stiffness(left, right, model.D);  // Th. 8.1-8.2
-    } else {
+    } else if (model.hertz_k > 0.0) {
       law.stiffness = model.hertz_k;
+    } else {
+      // Th. 7.2 from the faces' radii and the two slabs' materials.
+      const auto& sl = model.slabs.at(site.pair);
+      const auto& sr = model.slabs.at(site.pair + 1);
+      law.stiffness = hertz_stiffness(sl.E_Pa, sl.poisson, model.hertz_radius_left, sr.E_Pa,
+                                      sr.poisson, model.hertz_radius_right);
     }
     validate(law);
     L.laws.push_back(law);

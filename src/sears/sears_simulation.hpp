@@ -62,7 +62,10 @@ struct SearsRowModel {
   double chi = 1.0 / 8.0;                  ///< wave-speed factor [-]
   ContactKind contact = ContactKind::flat;
   double D = 1.0;        ///< flat: fraction factor (Th. 8.2) [-]
-  double hertz_k = 0.0;  ///< hertz: stiffness [N/m^1.5]
+  double hertz_k = 0.0;  ///< hertz: stiffness [N/m^1.5]; 0: from the radii below
+  /// hertz: radii of the left and right contact faces of every pair [m] (kFlatRadius for a
+  /// flat face); k = (4/3) E* sqrt(R*) from the two slabs' E and Poisson's ratios (Th. 7.2).
+  double hertz_radius_left = 0.0, hertz_radius_right = 0.0;
   double force_cap_N = std::numeric_limits<double>::infinity();  ///< PF_max (Th. 9.1) [N]
   double dt_s = 0.0;                                             ///< (fine) step; 0 = automatic
   SearsStepping stepping = SearsStepping::event;

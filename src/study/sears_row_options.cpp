@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "sears/contact_stiffness.hpp"
+
 namespace pound {
 
 std::vector<OptionSpec> sears_row_option_specs() {
@@ -16,6 +18,10 @@ std::vector<OptionSpec> sears_row_option_specs() {
       {"sears.contact", "", "flat", "sears: flat (k_L from D, Th. 8.1-8.2) or hertz (k delta^1.5)"},
       {"sears.D", "-", "1", "sears: fraction factor of the flat contact stiffness, >= 1"},
       {"sears.k", "N/m^1.5", "", "sears: Hertz contact stiffness (contact = hertz)"},
+      {"sears.radius_left", "m", "",
+       "sears: hertz: radius of the left building's contact face (absent: flat)"},
+      {"sears.radius_right", "m", "",
+       "sears: hertz: radius of the right building's contact face (absent: flat)"},
       {"sears.force_cap", "N", "", "sears: cap PF_max on the contact force (Th. 9.1)"},
       {"sears.dt", "s", "", "sears: (fine) time step (default: automatic, docs/sears.md)"},
       {"sears.integrator", "", "event",
@@ -49,7 +55,20 @@ sears::SearsRowModel sears_row_from_options(const Options& opt, const BuildingRo
     if (!(m.D >= 1)) throw opt.invalid("sears.D", "valid: a fraction factor >= 1");
   } else if (c == "hertz") {
     m.contact = sears::ContactKind::hertz;
-    m.hertz_k = opt.get_positive("sears.k");
+    if (opt.given("sears.k")) {
+      m.hertz_k = opt.get_positive("sears.k");
+    } else if (opt.given("sears.radius_left") || opt.given("sears.radius_right")) {
+      // A face without a radius is flat.
+      m.hertz_radius_left = opt.given("sears.radius_left") ? opt.get_positive("sears.radius_left")
+                                                           : sears::kFlatRadius;
+      m.hertz_radius_right = opt.given("sears.radius_right")
+                                 ? opt.get_positive("sears.radius_right")
+                                 : sears::kFlatRadius;
+    } else {
+      throw opt.invalid("sears.contact",
+                        "hertz contact needs sears.k [N/m^1.5] or sears.radius_left and/or "
+                        "sears.radius_right [m] (Th. 7.2)");
+    }
   } else {
     throw opt.invalid("sears.contact", "valid: flat or hertz");
   }

@@ -7,7 +7,9 @@
 
 #include <cmath>
 
+#include "sears/contact_stiffness.hpp"
 #include "sears/sears_impact.hpp"
+#include "sears/sears_row_layout.hpp"
 #include "solver/row_solver.hpp"
 
 namespace pound::sears {
@@ -184,6 +186,35 @@ TEST(SearsRow, WithoutContactsNewmarkMatchesTheRowSolver) {
     EXPECT_NEAR(e.row.peak_disp(i), ref.peak_disp(i), 5e-5 * ref.peak_disp(i)) << i;
     EXPECT_NEAR(e.row.peak_abs_accel(i), ref.peak_abs_accel(i), 3e-3 * ref.peak_abs_accel(i)) << i;
   }
+}
+
+}  // namespace
+}  // namespace pound::sears
+
+namespace pound::sears {
+namespace {
+
+TEST(SearsRow, HertzStiffnessFromTheFaceRadiiAndTheSlabMaterials) {
+  // Th. 7.2 for a 50 mm concrete hemisphere on a flat concrete face: 3.21 GN/m^1.5 in the
+  // thesis; the row computes it per pair from the two buildings' slabs.
+  BuildingRow row;
+  Building b;
+  b.masses = {100.0};
+  b.stiffnesses = {1e5};
+  b.storey_heights = {3.0};
+  row.buildings = {b, b};
+  row.gaps = {{0.0}};
+  SearsRowModel model;
+  model.slabs = {{0.7, 21e9, 2400.0, 0.15}, {0.65, 21e9, 2400.0, 0.15}};
+  model.contact = ContactKind::hertz;
+  model.hertz_radius_left = 0.05;
+  model.hertz_radius_right = kFlatRadius;
+  const AssembledRow a = assemble(row);
+  const RowContactLayout layout = make_layout(row, a, model);
+  ASSERT_EQ(layout.laws.size(), 1u);
+  EXPECT_NEAR(layout.laws[0].stiffness / 3.21e9, 1.0, 0.005);
+  EXPECT_DOUBLE_EQ(layout.laws[0].stiffness,
+                   hertz_stiffness(21e9, 0.15, 0.05, 21e9, 0.15, kFlatRadius));
 }
 
 }  // namespace
