@@ -9,7 +9,15 @@ namespace pound::sears {
 
 Slab floor_slab(const BuildingRow& row, const SearsRowModel& model, int b, int j) {
   const FloorSlabProperties& p = model.slabs.at(b);
-  Slab s{p.length_m, p.E_Pa, p.rho_kg_m3, p.poisson, row.buildings[b].masses[j], model.chi};
+  auto pick = [j](const std::vector<double>& per_floor, double all) {
+    return per_floor.empty() ? all : per_floor.at(static_cast<std::size_t>(j));
+  };
+  Slab s{pick(p.length_per_floor_m, p.length_m),
+         pick(p.E_per_floor_Pa, p.E_Pa),
+         pick(p.rho_per_floor_kg_m3, p.rho_kg_m3),
+         p.poisson,
+         row.buildings[b].masses[j],
+         model.chi};
   const std::string what = "building " + std::to_string(b + 1) + " floor " + std::to_string(j + 1);
   validate(s, what.c_str());
   return s;

@@ -8,9 +8,10 @@ namespace pound {
 
 std::vector<OptionSpec> sears_row_option_specs() {
   return {
-      {"building#.slab_length", "m", "", "sears: floor slab length along the row"},
-      {"building#.E", "Pa", "", "sears: Young's modulus of the floor slabs"},
-      {"building#.rho", "kg/m^3", "", "sears: density of the floor slabs"},
+      {"building#.slab_length", "m", "",
+       "sears: floor slab length along the row (one value, or one per floor)"},
+      {"building#.E", "Pa", "", "sears: Young's modulus of the floor slabs (one, or per floor)"},
+      {"building#.rho", "kg/m^3", "", "sears: density of the floor slabs (one, or per floor)"},
       {"building#.poisson", "-", "0.15", "sears: Poisson's ratio of the floor slabs"},
       {"sears.modes", "-", "100", "sears: internal axial modes per colliding floor N"},
       {"sears.xi_s", "-", "0.05", "sears: modal damping ratio of the slabs' axial vibration"},
@@ -34,9 +35,25 @@ sears::SearsRowModel sears_row_from_options(const Options& opt, const BuildingRo
   for (std::size_t b = 1; b <= row.buildings.size(); ++b) {
     const std::string pre = "building" + std::to_string(b) + ".";
     sears::FloorSlabProperties s;
-    s.length_m = opt.get_positive(pre + "slab_length");
-    s.E_Pa = opt.get_positive(pre + "E");
-    s.rho_kg_m3 = opt.get_positive(pre + "rho");
+    // One value for every floor, or one per floor where the floors differ.
+    const std::size_t floors = row.buildings[b - 1].masses.size();
+    auto values = [&](const std::string& key, double& all, std::vector<double>& per_floor) {
+      const auto v = opt.get_doubles(pre + key);
+      for (double x : v)
+        if (!(x > 0)) throw opt.invalid(pre + key, "every value must be > 0");
+      if (v.size() == 1) {
+        all = v[0];
+      } else if (v.size() == floors) {
+        per_floor = v;
+        all = v[0];
+      } else {
+        throw opt.invalid(pre + key,
+                          "give one value or " + std::to_string(floors) + " (one per floor)");
+      }
+    };
+    values("slab_length", s.length_m, s.length_per_floor_m);
+    values("E", s.E_Pa, s.E_per_floor_Pa);
+    values("rho", s.rho_kg_m3, s.rho_per_floor_kg_m3);
     s.poisson = opt.get_double(pre + "poisson");
     if (!(s.poisson >= 0 && s.poisson < 0.5)) throw opt.invalid(pre + "poisson", "valid: [0, 0.5)");
     m.slabs.push_back(s);

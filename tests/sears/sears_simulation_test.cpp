@@ -219,3 +219,32 @@ TEST(SearsRow, HertzStiffnessFromTheFaceRadiiAndTheSlabMaterials) {
 
 }  // namespace
 }  // namespace pound::sears
+
+namespace pound::sears {
+namespace {
+
+TEST(SearsRow, SlabPropertiesMayDifferPerFloor) {
+  // Flat contact (Th. 8.1-8.2, D = 1): k_A = E A / l with A = m / (rho l), so
+  // k_A = E m / (rho l^2); two slabs in series. Floor 2 of the left building has a 10 m slab.
+  Building b;
+  b.masses = {48e3, 48e3};
+  b.stiffnesses = {8.4e7, 8.4e7};
+  b.storey_heights = {3.0, 3.0};
+  BuildingRow row;
+  row.buildings = {b, b};
+  row.gaps = {{0.0, 0.0}};
+  SearsRowModel model;
+  FloorSlabProperties left{20.0, 21e9, 2500.0, 0.15};
+  left.length_per_floor_m = {20.0, 10.0};
+  model.slabs = {left, {20.0, 21e9, 2500.0, 0.15}};
+  const AssembledRow a = assemble(row);
+  const RowContactLayout layout = make_layout(row, a, model);
+  auto ka = [](double l) { return 21e9 * 48e3 / (2500.0 * l * l); };
+  auto series = [](double x, double y) { return 1.0 / (1.0 / x + 1.0 / y); };
+  ASSERT_EQ(layout.laws.size(), 2u);
+  EXPECT_NEAR(layout.laws[0].stiffness / series(ka(20.0), ka(20.0)), 1.0, 1e-12);
+  EXPECT_NEAR(layout.laws[1].stiffness / series(ka(10.0), ka(20.0)), 1.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace pound::sears
