@@ -24,17 +24,19 @@ struct FusedArrays {
   int padded;
 };
 // Four doubles as one vector (GCC/Clang vector extension): one block of four modes. The helpers
-// are inlined into the kernel below, so GCC's note on the AVX argument ABI does not apply.
+// are always inlined into the kernel below (also at -O0, where a call would pass the 32-byte
+// vector with the default ABI into the AVX2 clone and crash), so GCC's note on the AVX
+// argument ABI does not apply.
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic ignored "-Wpsabi"
 #endif
 typedef double V4 __attribute__((vector_size(32)));
-inline V4 load(const double* p) {
+__attribute__((always_inline)) inline V4 load(const double* p) {
   V4 r;
   std::memcpy(&r, p, sizeof r);
   return r;
 }
-inline void store(double* p, V4 x) {
+__attribute__((always_inline)) inline void store(double* p, V4 x) {
   std::memcpy(p, &x, sizeof x);
 }
 
