@@ -90,14 +90,17 @@ sears::SearsRowModel sears_row_from_options(const Options& opt, const BuildingRo
     throw opt.invalid("sears.contact", "valid: flat or hertz");
   }
   if (opt.given("sears.force_cap")) m.force_cap_N = opt.get_positive("sears.force_cap");
-  if (opt.given("sears.dt")) m.dt_s = opt.get_positive("sears.dt");
-  const std::string integ = opt.get_string("sears.integrator");
-  if (integ == "event") {
+  // The shorthands --integrator and --dt (shared with the lumped models) win.
+  const std::string dt_key = opt.given("dt") ? "dt" : "sears.dt";
+  if (opt.given(dt_key)) m.dt_s = opt.get_positive(dt_key);
+  const std::string ikey = opt.given("integrator") ? "integrator" : "sears.integrator";
+  const std::string integ = opt.get_string(ikey);
+  if (integ == "event" || integ == "adaptive") {
     m.stepping = sears::SearsStepping::event;
   } else if (integ == "fixed") {
     m.stepping = sears::SearsStepping::fixed;
   } else {
-    throw opt.invalid("sears.integrator", "valid: event or fixed");
+    throw opt.invalid(ikey, "valid: event or fixed");
   }
   return m;
 }
