@@ -204,14 +204,7 @@ std::string Options::get_path(const std::string& key) const {
 }
 
 double Options::get_double(const std::string& key) const {
-  try {
-    return parse_number(get_string(key), where(key));
-  } catch (const InputError& e) {
-    const auto* s = find_spec(key);
-    if (!s) throw;
-    throw InputError(std::string(e.what()) + "; expected " + s->help +
-                     (s->unit.empty() || s->unit == "-" ? "" : " [" + s->unit + "]"));
-  }
+  return with_expectation(key, [&] { return parse_number(get_string(key), where(key)); });
 }
 
 long Options::get_int(const std::string& key) const {
@@ -221,14 +214,7 @@ long Options::get_int(const std::string& key) const {
 }
 
 std::vector<double> Options::get_doubles(const std::string& key) const {
-  try {
-    return parse_number_list(get_string(key), where(key));
-  } catch (const InputError& e) {
-    const auto* s = find_spec(key);
-    if (!s) throw;
-    throw InputError(std::string(e.what()) + "; expected " + s->help +
-                     (s->unit.empty() || s->unit == "-" ? "" : " [" + s->unit + "]"));
-  }
+  return with_expectation(key, [&] { return parse_number_list(get_string(key), where(key)); });
 }
 
 double Options::get_positive(const std::string& key) const {

@@ -78,6 +78,18 @@ class Options {
   };
   const OptionSpec* find_spec(const std::string& key) const;
   const Value* lookup(const std::string& key) const;
+  /// Runs a parse; a failure gets the key's meaning and unit appended ("expected ...").
+  template <class Parse>
+  auto with_expectation(const std::string& key, Parse parse) const -> decltype(parse()) {
+    try {
+      return parse();
+    } catch (const InputError& e) {
+      const auto* s = find_spec(key);
+      if (!s) throw;
+      throw InputError(std::string(e.what()) + "; expected " + s->help +
+                       (s->unit.empty() || s->unit == "-" ? "" : " [" + s->unit + "]"));
+    }
+  }
   std::string valid_keys_hint(const std::string& key) const;
 
   std::string command_, summary_, prefix_;

@@ -40,7 +40,7 @@ struct FloorSlabProperties {
   double poisson = 0.0;    ///< Poisson's ratio [-]
   /// Per-floor values where the floors differ (floor 1 first); empty: the values above for
   /// every floor.
-  std::vector<double> length_per_floor_m, E_per_floor_Pa, rho_per_floor_kg_m3;
+  std::vector<double> length_per_floor_m{}, E_per_floor_Pa{}, rho_per_floor_kg_m3{};
 };
 
 /// Time stepping of solve_sears_row (docs/speed.md).
