@@ -173,9 +173,9 @@ int main(int argc, char** argv) {
   if (argc > 2 && std::string(argv[2]) == "quick") {
     std::printf(
         "chapter 8, event: %.4f s cpu; pounding run %ld fine (%ld with a contact force) "
-        "+ %ld coarse\n",
+        "+ %ld coarse; slab sleeps %ld, wakes %ld\n",
         t_se.cpu_s, se.counts_pounding.fine, se.counts_pounding.fine_in_contact,
-        se.counts_pounding.coarse);
+        se.counts_pounding.coarse, se.counts_pounding.slab_sleeps, se.counts_pounding.slab_wakes);
     return 0;
   }
   const Timing t_sf = time_it([&] { sf = sears::simulate_sears_row(row, motion, fx); }, 1);

@@ -67,6 +67,29 @@ __attribute__((target_clones("avx2", "default"))) void fused_step_kernel(const F
   store(s + 8, sp);
 }
 
+// One free step (no loads) of every mode by the coefficients Af..Bvf, and the lane sums of the new
+// q (s[0..3]) and of -(2 xi w q' + w^2 q) (s[4..7]); same rules as fused_step_kernel.
+struct FreeArrays {
+  double *q, *v;
+  const double *A, *B, *Av, *Bv, *c1, *k1;
+  int padded;
+};
+__attribute__((target_clones("avx2", "default"))) void free_step_kernel(const FreeArrays& a,
+                                                                        double* s) {
+  V4 sq = {0, 0, 0, 0}, sa = {0, 0, 0, 0};
+  for (int i = 0; i < a.padded; i += 4) {
+    const V4 q = load(a.q + i), v = load(a.v + i);
+    const V4 qn = load(a.A + i) * q + load(a.B + i) * v;
+    const V4 vn = load(a.Av + i) * q + load(a.Bv + i) * v;
+    store(a.q + i, qn);
+    store(a.v + i, vn);
+    sq += qn;
+    sa -= load(a.c1 + i) * vn + load(a.k1 + i) * qn;
+  }
+  store(s, sq);
+  store(s + 4, sa);
+}
+
 // Face and centre sums from the lane sums s[k], n % 4 = k + 1 (mod 4).
 inline void lane_faces(const double* s, SectionValues& o) {
   o.left = (s[0] + s[1]) + (s[2] + s[3]);
@@ -210,21 +233,13 @@ void ModalBank::step(const EndLoads& begin, const EndLoads& end, StepResult& out
 }
 
 void ModalBank::step_free(StepResult& out) {
-  double sq[4] = {0, 0, 0, 0}, sa[4] = {0, 0, 0, 0};
-  const int padded = static_cast<int>(q_.size());
-  for (int j = 0; j < padded; j += 4)
-    for (int k = 0; k < 4; ++k) {
-      const int i = j + k;
-      const double q = q_[i], v = v_[i];
-      const double qn = Af_[i] * q + Bf_[i] * v;
-      const double vn = Avf_[i] * q + Bvf_[i] * v;
-      q_[i] = qn;
-      v_[i] = vn;
-      sq[k] += qn;
-      sa[k] -= c1_[i] * vn + k1_[i] * qn;
-    }
-  lane_faces(sq, out.disp);
-  lane_faces(sa, out.accel);
+  FreeArrays arr{q_.data(),  v_.data(),   Af_.data(),
+                 Bf_.data(), Avf_.data(), Bvf_.data(),
+                 c1_.data(), k1_.data(),  static_cast<int>(q_.size())};
+  double s[8];
+  free_step_kernel(arr, s);
+  lane_faces(s, out.disp);
+  lane_faces(s + 4, out.accel);
 }
 
 double ModalBank::energy() const {

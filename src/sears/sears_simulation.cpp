@@ -11,13 +11,16 @@
 namespace pound::sears {
 namespace {
 
-// Nonlinear Gauss-Seidel on F_s = law_s(delta_pred_s - sum_t S(s,t) F_t).
+// Nonlinear Gauss-Seidel on F_s = law_s(delta_pred_s - sum_t S(s,t) F_t). Sites marked in
+// `frozen` keep F_s = 0 (the caller has shown that their faces stay apart).
 void solve_forces(const std::vector<ContactLaw>& laws, const Eigen::MatrixXd& S,
-                  const Eigen::VectorXd& delta_pred, Eigen::VectorXd& F) {
+                  const Eigen::VectorXd& delta_pred, const std::vector<char>& frozen,
+                  Eigen::VectorXd& F) {
   const int n = static_cast<int>(F.size());
   for (int it = 0; it < 500; ++it) {
     double change = 0.0, scale = 1e-300;
     for (int s = 0; s < n; ++s) {
+      if (frozen[s]) continue;
       const double r = delta_pred(s) - S.row(s).dot(F) + S(s, s) * F(s);
       const double f = laws[s].solve_implicit(r, S(s, s));
       change = std::max(change, std::fabs(f - F(s)));
@@ -153,18 +156,141 @@ SearsRowResult solve_sears_row(const SearsRowProblem& p, const SearsRowModel& mo
   Eigen::VectorXd u_hat(n), a_next(n), work(n);
   for (int s = 0; s < ns; ++s)
     delta(s) = u(a.sites[s].dof_left) - u(a.sites[s].dof_right) - a.sites[s].gap;
+  SearsRowResult out;
+  out.dt_s = dt;
+  out.coarse_dt_s = hc;
+  RowResult& r = out.row;
+  r.peak_disp = r.peak_drift = r.peak_abs_accel = Eigen::VectorXd::Zero(n);
+  r.sites.assign(ns, SiteResult{});
+  for (const auto& f : L.floors) out.slabs.push_back(SlabPeaks{f.building, f.floor, 0.0, 0.0});
+  std::vector<bool> in_contact(ns, false);
+  out.contacts.assign(ns, SiteContacts{});
+  for (int s = 0; s < ns; ++s) {
+    in_contact[s] = delta(s) > 0.0;
+    if (in_contact[s]) out.contacts[s].phases.push_back(ContactPhase{});  // open at t = 0
+  }
   std::vector<EndLoads> begin(nf), end(nf);
   std::vector<SectionValues> pred(nf), disp(nf), accel(nf);
   std::vector<ModalBank::StepResult> fused(nf);
-  bool pred_valid = false;  // pred holds predict(begin) from the last fused step
+  std::vector<char> pred_valid(nf, 0);  // pred[k] holds predict(begin) of slab k for this step
   std::vector<double> modal_bound(nf);
   bool modal_bound_valid = false;  // modal_bound holds since the last fine step
-  auto loads = [&](const Eigen::VectorXd& f, std::vector<EndLoads>& out) {
+  auto loads = [&](const Eigen::VectorXd& f, std::vector<EndLoads>& to) {
     for (int i = 0; i < nf; ++i) {
-      out[i].left_N = L.floors[i].site_left >= 0 ? f(L.floors[i].site_left) : 0.0;
-      out[i].right_N = L.floors[i].site_right >= 0 ? -f(L.floors[i].site_right) : 0.0;
+      to[i].left_N = L.floors[i].site_left >= 0 ? f(L.floors[i].site_left) : 0.0;
+      to[i].right_N = L.floors[i].site_right >= 0 ? -f(L.floors[i].site_right) : 0.0;
     }
   };
+
+  // Sleeping slabs (event stepping, docs/speed.md): during a run of fine steps, a slab none of
+  // whose sites carries a force at the start of the coarse interval is not stepped. Its faces
+  // are known only to within free_bound of their values when it fell asleep (w0): a free mode
+  // keeps R_n, so |w(t) - w0| <= face_motion_bound(hc) for the whole interval. A site with a
+  // sleeping slab ("guarded") keeps F = 0 as long as the upper bound of its end-of-step overlap
+  // stays negative; otherwise its sleeping slabs wake: they are brought to the step's start by
+  // unloaded fine steps (the same recurrence the awake path applies) and the step's forces are
+  // solved again with the site included. At the end of the interval a slab still asleep takes
+  // one exact free step of hc.
+  std::vector<char> asleep(nf, 0), guarded(ns, 0);
+  std::vector<long> slept(nf, 0);  // fine steps skipped since the slab fell asleep
+  std::vector<SectionValues> w0(nf);
+  std::vector<double> free_bound(nf, 0.0);
+  int n_asleep = 0;
+  const EndLoads no_load{};
+  auto update_guards = [&]() {
+    for (int s = 0; s < ns; ++s)
+      guarded[s] = asleep[L.site_left_floor[s]] || asleep[L.site_right_floor[s]];
+  };
+  // Overlap at the start of the step at site s (both slabs awake).
+  auto overlap_now = [&](int s) {
+    return u(a.sites[s].dof_left) - u(a.sites[s].dof_right) + disp[L.site_left_floor[s]].right -
+           disp[L.site_right_floor[s]].left - a.sites[s].gap;
+  };
+  auto wake = [&](int k) {  // slab k to the start of the current step
+    for (long j = 0; j < slept[k]; ++j) L.banks[k].step(no_load, no_load, fused[k]);
+    if (slept[k] > 0) {
+      disp[k] = fused[k].disp;
+      accel[k] = fused[k].accel;
+      pred[k] = fused[k].next_pred;
+      pred_valid[k] = 1;
+    }
+    asleep[k] = 0;
+    slept[k] = 0;
+    --n_asleep;
+    ++out.counts.slab_wakes;
+  };
+  auto fall_asleep = [&]() {  // at a point of the coarse grid, before a run of fine steps
+    for (int k = 0; k < nf; ++k) {
+      const int sl = L.floors[k].site_left, sr = L.floors[k].site_right;
+      const bool free_slab = (sl < 0 || (F(sl) == 0.0 && !in_contact[sl])) &&
+                             (sr < 0 || (F(sr) == 0.0 && !in_contact[sr]));
+      if (!free_slab) continue;
+      asleep[k] = 1;
+      slept[k] = 0;
+      w0[k] = disp[k];
+      free_bound[k] = L.banks[k].face_motion_bound(hc);
+      ++n_asleep;
+      ++out.counts.slab_sleeps;
+    }
+    update_guards();
+  };
+  auto finish_sleep = [&]() {  // at the next point of the coarse grid
+    for (int k = 0; k < nf; ++k) {
+      if (!asleep[k]) continue;
+      if (slept[k] == st.ratio) {
+        L.banks[k].step_free(fused[k]);
+      } else {
+        for (long j = 0; j < slept[k]; ++j) L.banks[k].step(no_load, no_load, fused[k]);
+      }
+      disp[k] = fused[k].disp;
+      accel[k] = fused[k].accel;
+      pred_valid[k] = 0;
+      asleep[k] = 0;
+      slept[k] = 0;
+    }
+    n_asleep = 0;
+    update_guards();
+  };
+  // End-of-step overlaps without contact forces, delta_pred; for a guarded site an upper bound.
+  auto predict_overlaps = [&]() {
+    for (int k = 0; k < nf; ++k)
+      if (!asleep[k] && !pred_valid[k]) {
+        pred[k] = L.banks[k].predict(begin[k]);
+        pred_valid[k] = 1;
+      }
+    for (int s = 0; s < ns; ++s) {
+      const int kl = L.site_left_floor[s], kr = L.site_right_floor[s];
+      const double wl = asleep[kl] ? w0[kl].right + free_bound[kl] : pred[kl].right;
+      const double wr = asleep[kr] ? w0[kr].left - free_bound[kr] : pred[kr].left;
+      delta_pred(s) =
+          u_hat(a.sites[s].dof_left) - u_hat(a.sites[s].dof_right) + wl - wr - a.sites[s].gap;
+    }
+  };
+  // True when every guarded site's end-of-step overlap bound is below zero (with a margin for
+  // round-off); otherwise wakes the sleeping slabs of the failing sites and returns false.
+  auto guards_hold = [&]() {
+    bool hold = true;
+    for (int s = 0; s < ns; ++s) {
+      if (!guarded[s]) continue;
+      const int kl = L.site_left_floor[s], kr = L.site_right_floor[s];
+      const double bound_end = delta_pred(s) - S.row(s).dot(F_next);
+      const double scale = std::fabs(u_hat(a.sites[s].dof_left)) +
+                           std::fabs(u_hat(a.sites[s].dof_right)) + std::fabs(a.sites[s].gap) +
+                           std::fabs(w0[kl].right) + std::fabs(w0[kr].left) + free_bound[kl] +
+                           free_bound[kr];
+      if (bound_end < -kGuardRoundOff * scale) continue;
+      hold = false;
+      if (asleep[kl]) wake(kl);
+      if (asleep[kr]) wake(kr);
+    }
+    if (!hold) {
+      update_guards();
+      for (int s = 0; s < ns; ++s)
+        if (!guarded[s]) delta(s) = overlap_now(s);  // exact again (was stale while guarded)
+    }
+    return hold;
+  };
+
   // a_next = Mt^-1 (p_{i+1} - C (v + h/2 a) - K (u + h v + h^2/4 a)), without contact forces.
   auto newmark_predict = [&](double h, const NewmarkOperator& op, double t_next) {
     work = v + (0.5 * h) * acc;
@@ -184,25 +310,26 @@ SearsRowResult solve_sears_row(const SearsRowProblem& p, const SearsRowModel& mo
     loads(F, begin);
     F_next.setZero();
     if (p.contacts && ns > 0) {
-      if (!pred_valid)
-        for (int k = 0; k < nf; ++k) pred[k] = L.banks[k].predict(begin[k]);
-      for (int s = 0; s < ns; ++s)
-        delta_pred(s) = u_hat(a.sites[s].dof_left) - u_hat(a.sites[s].dof_right) +
-                        pred[L.site_left_floor[s]].right - pred[L.site_right_floor[s]].left -
-                        a.sites[s].gap;
-      F_next = F;  // warm start
-      solve_forces(L.laws, S, delta_pred, F_next);
+      F_next = F;  // warm start (zero at guarded sites)
+      do {
+        predict_overlaps();
+        solve_forces(L.laws, S, delta_pred, guarded, F_next);
+      } while (n_asleep > 0 && !guards_hold());
     }
     if (ns > 0) a_next.noalias() -= H * F_next;
     newmark_update(dt);
     loads(F_next, end);
     for (int k = 0; k < nf; ++k) {
+      if (asleep[k]) {
+        ++slept[k];
+        continue;
+      }
       L.banks[k].step(begin[k], end[k], fused[k]);
       disp[k] = fused[k].disp;
       accel[k] = fused[k].accel;
       pred[k] = fused[k].next_pred;
+      pred_valid[k] = 1;
     }
-    pred_valid = true;
   };
   auto coarse_step = [&](double t_next) {  // F = 0 at both ends
     newmark_predict(hc, nm_coarse, t_next);
@@ -216,23 +343,10 @@ SearsRowResult solve_sears_row(const SearsRowProblem& p, const SearsRowModel& mo
         L.banks[k].step_free(fused[k]);
         disp[k] = fused[k].disp;
         accel[k] = fused[k].accel;
+        pred_valid[k] = 0;
       }
-    pred_valid = false;
   };
 
-  SearsRowResult out;
-  out.dt_s = dt;
-  out.coarse_dt_s = hc;
-  RowResult& r = out.row;
-  r.peak_disp = r.peak_drift = r.peak_abs_accel = Eigen::VectorXd::Zero(n);
-  r.sites.assign(ns, SiteResult{});
-  for (const auto& f : L.floors) out.slabs.push_back(SlabPeaks{f.building, f.floor, 0.0, 0.0});
-  std::vector<bool> in_contact(ns, false);
-  out.contacts.assign(ns, SiteContacts{});
-  for (int s = 0; s < ns; ++s) {
-    in_contact[s] = delta(s) > 0.0;
-    if (in_contact[s]) out.contacts[s].phases.push_back(ContactPhase{});  // open at t = 0
-  }
   // True when no contact can start within the next coarse step (docs/speed.md): no force acts
   // now, and at every site the bound on the faces' approach (building translation plus the
   // internal vibration of both slabs), times kCoarseBoundSafety, stays below the gap.
@@ -261,7 +375,9 @@ SearsRowResult solve_sears_row(const SearsRowProblem& p, const SearsRowModel& mo
 
   long i = 0;
   while (i < steps) {
-    const bool coarse = event && i % st.ratio == 0 && i + st.ratio <= steps && contact_free();
+    const bool on_grid = event && i % st.ratio == 0 && i + st.ratio <= steps;
+    const bool coarse = on_grid && contact_free();
+    if (on_grid && !coarse && p.contacts && model.sleeping_slabs) fall_asleep();
     const double h = coarse ? hc : dt;
     i += coarse ? st.ratio : 1;
     const double t_next = i * dt;
@@ -272,6 +388,7 @@ SearsRowResult solve_sears_row(const SearsRowProblem& p, const SearsRowModel& mo
       fine_step(t_next);
       modal_bound_valid = false;
       ++out.counts.fine;
+      if (n_asleep > 0 && i % st.ratio == 0) finish_sleep();
     }
     if (!u.allFinite())
       throw NumericalError("damped Sears model: non-finite state at t = " + std::to_string(t_next) +
@@ -280,6 +397,7 @@ SearsRowResult solve_sears_row(const SearsRowProblem& p, const SearsRowModel& mo
 
     // Contact sites: events, peaks, impulse (force linear over the step).
     for (int s = 0; s < ns; ++s) {
+      if (guarded[s]) continue;  // no force and no contact (shown by guards_hold)
       const double d = u(a.sites[s].dof_left) - u(a.sites[s].dof_right) +
                        disp[L.site_left_floor[s]].right - disp[L.site_right_floor[s]].left -
                        a.sites[s].gap;
@@ -324,6 +442,7 @@ SearsRowResult solve_sears_row(const SearsRowProblem& p, const SearsRowModel& mo
       }
     // Slab faces and centres: floor (rigid) + internal acceleration (Th. 7.5, 8.3).
     for (int k = 0; k < nf; ++k) {
+      if (asleep[k]) continue;  // sampled again when it wakes or the interval ends
       const SectionValues& ai = accel[k];
       const double a0 = acc(L.floors[k].dof) + ag;
       double face = 0.0;

@@ -57,6 +57,9 @@ inline constexpr double kCoarseStepPerBuildingPeriod = 1.0 / 200.0;
 /// the current gap: it covers the difference between the Newmark step and the exact motion the
 /// bound holds for, and round-off [-].
 inline constexpr double kCoarseBoundSafety = 2.0;
+/// A sleeping slab's site keeps F = 0 only while the bound of its overlap is below
+/// -kGuardRoundOff times the magnitudes that enter it (round-off of the awake path) [-].
+inline constexpr double kGuardRoundOff = 1e-9;
 
 struct SearsRowModel {
   std::vector<FloorSlabProperties> slabs;  ///< one per building of the row
@@ -72,6 +75,10 @@ struct SearsRowModel {
   double force_cap_N = std::numeric_limits<double>::infinity();  ///< PF_max (Th. 9.1) [N]
   double dt_s = 0.0;                                             ///< (fine) step; 0 = automatic
   SearsStepping stepping = SearsStepping::event;
+  /// Event stepping: slabs with no force at the start of a run of fine steps sleep (are not
+  /// stepped) while a bound shows their sites stay apart (docs/speed.md). false: every slab
+  /// takes every fine step (for comparison; the results agree to round-off).
+  bool sleeping_slabs = true;
   /// Approach velocity used for the Hertz contact time scale of the step rule [m/s].
   double hertz_reference_velocity = 1.0;
   /// A contact phase counts as an impact when its peak force is at least this fraction of the
@@ -128,6 +135,8 @@ struct SearsStepCounts {
   long fine_in_contact = 0;   ///< fine steps with a contact force at either end
   long coarse = 0;            ///< coarse steps (event stepping)
   long bound_violations = 0;  ///< coarse steps that ended with an overlap (must stay 0)
+  long slab_sleeps = 0;       ///< slabs put to sleep for a run of fine steps (event stepping)
+  long slab_wakes = 0;        ///< sleeping slabs woken before the end of their interval
 };
 
 struct SearsRowResult {

@@ -9,6 +9,7 @@
 #include <random>
 #include <string>
 
+#include "../support/allocation_counter.hpp"
 #include "core/error.hpp"
 #include "io/options.hpp"
 #include "sears/modal_bank.hpp"
@@ -214,6 +215,68 @@ TEST(SearsEvent, AgreesWithTheFixedStepOnTheChapter8Example) {
         << s2;
     EXPECT_EQ(e.contacts[s2].impacts, f.contacts[s2].impacts) << s2;
   }
+}
+
+TEST(SearsEvent, SleepingSlabsGiveTheResultsOfSteppingEverySlab) {
+  // The 8 s chapter 8 study with and without sleeping slabs (docs/speed.md): a slab with no
+  // force at the start of a run of fine steps is not stepped until a site's overlap bound
+  // reaches zero. The two paths differ only by round-off (the sleeping slab is brought forward
+  // by one exact free step instead of `ratio` unloaded fine steps).
+  StudyRun s = read_study("ch8-five-three.ini");
+  s.model.sleeping_slabs = false;
+  const SearsRowSimulation all = simulate_sears_row(s.row, s.motion, s.model);
+  s.model.sleeping_slabs = true;
+  const SearsRowSimulation lazy = simulate_sears_row(s.row, s.motion, s.model);
+  EXPECT_EQ(all.counts_pounding.slab_sleeps, 0);
+  // Both branches ran: slabs slept, and guards woke some of them before their interval ended.
+  EXPECT_GT(lazy.counts_pounding.slab_sleeps, 1000);
+  EXPECT_GT(lazy.counts_pounding.slab_wakes, 100);
+  EXPECT_EQ(lazy.counts_pounding.fine, all.counts_pounding.fine);
+  EXPECT_EQ(lazy.counts_pounding.coarse, all.counts_pounding.coarse);
+  for (std::size_t i = 0; i < all.base.floors.size(); ++i) {
+    const FloorResponse &x = lazy.base.floors[i], &y = all.base.floors[i];
+    EXPECT_NEAR(x.disp_pounding, y.disp_pounding, 1e-9 * y.disp_pounding) << i;
+    EXPECT_NEAR(x.drift_ratio_pounding, y.drift_ratio_pounding, 1e-9 * y.drift_ratio_pounding) << i;
+    EXPECT_NEAR(x.accel_pounding, y.accel_pounding, 1e-9 * y.accel_pounding) << i;
+  }
+  for (std::size_t k = 0; k < all.base.sites.size(); ++k) {
+    EXPECT_NEAR(lazy.base.sites[k].peak_force, all.base.sites[k].peak_force,
+                1e-9 * all.base.sites[k].peak_force)
+        << k;
+    EXPECT_EQ(lazy.contacts[k].phases.size(), all.contacts[k].phases.size()) << k;
+    EXPECT_EQ(lazy.contacts[k].impacts, all.contacts[k].impacts) << k;
+  }
+  for (std::size_t k = 0; k < all.slabs.size(); ++k) {
+    EXPECT_NEAR(lazy.slabs[k].centre_accel, all.slabs[k].centre_accel,
+                1e-9 * all.slabs[k].centre_accel)
+        << k;
+    EXPECT_NEAR(lazy.slabs[k].face_accel, all.slabs[k].face_accel, 1e-9 * all.slabs[k].face_accel)
+        << k;
+  }
+}
+
+TEST(SearsEvent, TimeLoopDoesNotAllocate) {
+  // Issue 8: the kernels are allocation-free in the time loop. Allocations of a 2 s and an 8 s
+  // run of the chapter 8 study (pounding on) differ only by the growth of the contact-phase
+  // lists, far fewer than one per thousand extra steps.
+  if (!test::AllocationCounting::available()) GTEST_SKIP() << "allocations not countable here";
+  const StudyRun s8 = read_study("ch8-five-three.ini"),
+                 s2 = read_study("ch8-five-three.ini", {"--motion.duration", "2"});
+  auto count = [](const StudyRun& s, long& steps) {
+    SearsRowProblem p;
+    p.row = &s.row;
+    p.motion = &s.motion;
+    p.t_end = s.motion.duration();
+    test::CountAllocations c;
+    const SearsRowResult r = solve_sears_row(p, s.model);
+    steps = r.counts.fine + r.counts.coarse;
+    return c.count();
+  };
+  long steps2 = 0, steps8 = 0;
+  const long a2 = count(s2, steps2), a8 = count(s8, steps8);
+  ASSERT_GT(steps8 - steps2, 20000);
+  EXPECT_GT(a2, 0);  // the counter works: set-up allocates
+  EXPECT_LT(a8 - a2, (steps8 - steps2) / 1000) << a2 << " vs " << a8 << " allocations";
 }
 
 }  // namespace

@@ -165,7 +165,7 @@ TEST(SearsRow, WithoutContactsNewmarkMatchesTheRowSolver) {
   model.modes = 100;  // a fine step below the coarse one (with 10 modes they coincide)
   const SearsRowResult e = solve_sears_row(p, model);
   EXPECT_EQ(e.counts.fine, 0);
-  EXPECT_GT(e.coarse_dt_s, 10.0 * e.dt_s);
+  EXPECT_GT(e.coarse_dt_s, 5.0 * e.dt_s);
   const AssembledRow a = assemble(row);
   RowProblem q;
   q.row = &a;
