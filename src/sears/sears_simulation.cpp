@@ -129,11 +129,14 @@ SearsRowResult solve_sears_row(const SearsRowProblem& p, const SearsRowModel& mo
   // Mt^-1 applied once here, so that a step costs two matrix-vector products:
   //   a_{i+1} = -(Mt^-1 M 1) ag - (Mt^-1 C) (v + h/2 a) - (Mt^-1 K) (u + h v + h^2/4 a).
   struct NewmarkOperator {
-    Eigen::MatrixXd C, K;  // Mt^-1 C, Mt^-1 K
-    Eigen::VectorXd g;     // Mt^-1 M 1
+    Eigen::MatrixXd CK;  // [Mt^-1 C, Mt^-1 K], n x 2n (column-major)
+    Eigen::VectorXd g;   // Mt^-1 M 1
   };
   auto newmark_operator = [&](const Eigen::LLT<Eigen::MatrixXd>& f) {
-    return NewmarkOperator{f.solve(a.C), f.solve(a.K), f.solve(m_ones)};
+    NewmarkOperator op{Eigen::MatrixXd(n, 2 * n), f.solve(m_ones)};
+    op.CK.leftCols(n) = f.solve(a.C);
+    op.CK.rightCols(n) = f.solve(a.K);
+    return op;
   };
   const NewmarkOperator nm_fine = newmark_operator(mt);
   // Coarse steps carry no contact force (event stepping only).
@@ -153,7 +156,7 @@ SearsRowResult solve_sears_row(const SearsRowProblem& p, const SearsRowModel& mo
   Eigen::VectorXd v = p.v0.size() ? p.v0 : Eigen::VectorXd::Zero(n);
   Eigen::VectorXd acc = a.M.ldlt().solve(-m_ones * ag_at(0.0) - a.C * v - a.K * u);
   Eigen::VectorXd F = Eigen::VectorXd::Zero(ns), F_next = F, delta_pred(ns), delta(ns);
-  Eigen::VectorXd u_hat(n), a_next(n), work(n);
+  Eigen::VectorXd u_hat(n), a_next(n);
   for (int s = 0; s < ns; ++s)
     delta(s) = u(a.sites[s].dof_left) - u(a.sites[s].dof_right) - a.sites[s].gap;
   SearsRowResult out;
@@ -291,13 +294,16 @@ SearsRowResult solve_sears_row(const SearsRowProblem& p, const SearsRowModel& mo
     return hold;
   };
 
-  // a_next = Mt^-1 (p_{i+1} - C (v + h/2 a) - K (u + h v + h^2/4 a)), without contact forces.
+  // a_next = Mt^-1 (p_{i+1} - C (v + h/2 a) - K (u + h v + h^2/4 a)), without contact forces:
+  // one product of [Mt^-1 C, Mt^-1 K] with [v + h/2 a; u + h v + h^2/4 a].
+  Eigen::VectorXd work2(2 * n);
   auto newmark_predict = [&](double h, const NewmarkOperator& op, double t_next) {
-    work = v + (0.5 * h) * acc;
-    a_next.noalias() = op.C * work;
-    work = u + h * v + (0.25 * h * h) * acc;
-    a_next.noalias() += op.K * work;
-    a_next = -op.g * ag_at(t_next) - a_next;
+    for (int j = 0; j < n; ++j) {
+      work2(j) = v(j) + (0.5 * h) * acc(j);
+      work2(n + j) = u(j) + h * v(j) + (0.25 * h * h) * acc(j);
+    }
+    a_next = op.g * (-ag_at(t_next));
+    a_next.noalias() -= op.CK * work2;
   };
   auto newmark_update = [&](double h) {
     u += h * v + (0.25 * h * h) * (acc + a_next);
