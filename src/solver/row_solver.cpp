@@ -92,7 +92,6 @@ class Solver {
       for (int i = o + 1; i < end; ++i) below_[i] = i - 1;
     }
     force_.setZero(ns_);
-    P_.setZero(n_);
     work_.resize(2 * n_ + ns_);
     build_sparse_rows();
   }
@@ -101,35 +100,70 @@ class Solver {
 
  private:
   // Right-hand side: y = [u; v; J] with J the impulse per site (physics.md section 1):
-  //   u' = v,  v' = M^-1 (P - C v - K u) - 1 ag,  J' = contact force per site.
-  // M is diagonal; the products C v and K u run over the stored nonzeros only (see
-  // build_sparse_rows). Allocation-free.
+  //   u' = v,  v' = -M^-1 (C v + K u) - 1 ag + M^-1 P,  J' = contact force per site.
+  // M is diagonal; the products C v and K u use the bands or the compressed rows of
+  // build_sparse_rows. Allocation-free.
   void rhs(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy) {
     contact_forces(y);
     const double ag = p_.motion ? p_.motion->at(t) : 0.0;
     dy.resize(2 * n_ + ns_);
     const double* u = y.data();
     const double* v = u + n_;
+    const double* im = row_.inv_mass.data();
     double* du = dy.data();
     double* dv = du + n_;
     for (int i = 0; i < n_; ++i) du[i] = v[i];
-    for (int i = 0; i < n_; ++i) {
-      double f = P_(i);
-      for (int e = row_start_[i]; e < row_start_[i + 1]; ++e) {
-        const int j = col_[e];
-        f -= c_val_[e] * v[j] + k_val_[e] * u[j];
+    if (tridiagonal_ && n_ > 1) {
+      const double *kl = kl_.data(), *kd = kd_.data(), *ku = ku_.data();
+      const double *cl = cl_.data(), *cd = cd_.data(), *cu = cu_.data();
+      const int m = n_ - 1;
+      dv[0] = -im[0] * (cd[0] * v[0] + cu[0] * v[1] + (kd[0] * u[0] + ku[0] * u[1])) - ag;
+      for (int i = 1; i < m; ++i)
+        dv[i] = -im[i] * (cl[i] * v[i - 1] + cd[i] * v[i] + cu[i] * v[i + 1] +
+                          (kl[i] * u[i - 1] + kd[i] * u[i] + ku[i] * u[i + 1])) -
+                ag;
+      dv[m] = -im[m] * (cl[m] * v[m - 1] + cd[m] * v[m] + (kl[m] * u[m - 1] + kd[m] * u[m])) - ag;
+    } else {
+      for (int i = 0; i < n_; ++i) {
+        double f = 0.0;
+        for (int e = row_start_[i]; e < row_start_[i + 1]; ++e) {
+          const int j = col_[e];
+          f += c_val_[e] * v[j] + k_val_[e] * u[j];
+        }
+        dv[i] = -im[i] * f - ag;
       }
-      dv[i] = row_.inv_mass(i) * f - ag;
     }
-    for (int i = 0; i < ns_; ++i) dv[n_ + i] = force_(i);
+    for (int i = 0; i < ns_; ++i) {
+      const double f = force_(i);
+      dv[n_ + i] = f;
+      if (f == 0.0) continue;
+      const auto& site = row_.sites[i];
+      dv[site.dof_left] -= im[site.dof_left] * f;
+      dv[site.dof_right] += im[site.dof_right] * f;
+    }
   }
 
-  // Compressed rows of K and C over the union of their nonzero patterns. A shear building's K
-  // is tridiagonal (Th. 3.6) and so is its Rayleigh damping C = a0 M + a1 K (Chopra 11.4.1);
-  // modal damping gives a full C per building; buildings do not couple (block diagonal).
-  // Products over these entries cost O(nonzeros) instead of O(n^2) and give the dense
-  // products' values up to round-off.
+  // Storage of K and C for the products of rhs(). A shear building's K is tridiagonal
+  // (Th. 3.6) and so is its Rayleigh damping C = a0 M + a1 K (Chopra 11.4.1); buildings do not
+  // couple (block diagonal: the entries between one building's top floor and the next one's
+  // first floor are zero). Then the three bands are kept (kl_(i) = K(i, i-1), kd_(i) = K(i, i),
+  // ku_(i) = K(i, i+1), the same for C; zero outside the matrix). Otherwise (modal damping
+  // gives a full C per building) compressed rows over the union of the nonzero patterns.
+  // Either costs O(nonzeros) instead of O(n^2) and gives the dense products up to round-off.
   void build_sparse_rows() {
+    tridiagonal_ = true;
+    for (int i = 0; i < n_; ++i)
+      for (int j = 0; j < n_; ++j)
+        if (std::abs(i - j) > 1 && (row_.K(i, j) != 0.0 || row_.C(i, j) != 0.0))
+          tridiagonal_ = false;
+    auto band = [&](const Eigen::MatrixXd& A, int offset) {
+      std::vector<double> b(n_, 0.0);
+      for (int i = 0; i < n_; ++i)
+        if (i + offset >= 0 && i + offset < n_) b[i] = A(i, i + offset);
+      return b;
+    };
+    kl_ = band(row_.K, -1), kd_ = band(row_.K, 0), ku_ = band(row_.K, 1);
+    cl_ = band(row_.C, -1), cd_ = band(row_.C, 0), cu_ = band(row_.C, 1);
     row_start_.assign(1, 0);
     for (int i = 0; i < n_; ++i) {
       for (int j = 0; j < n_; ++j) {
@@ -142,19 +176,17 @@ class Solver {
     }
   }
 
+  // Contact force per site [N] into force_ (zero where no contact is active).
   void contact_forces(const Eigen::VectorXd& y) {
-    P_.setZero();
-    force_.setZero();
-    if (!pounding_) return;
     for (int i = 0; i < ns_; ++i) {
-      if (!active_[i]) continue;
-      const auto& site = row_.sites[i];
-      const double d = gap_function(y, i);
-      const double dd = y(n_ + site.dof_left) - y(n_ + site.dof_right);
-      const double f = p_.laws[i]->force(d, dd, v0_[i]);
+      double f = 0.0;
+      if (active_[i]) {
+        const auto& site = row_.sites[i];
+        const double d = gap_function(y, i);
+        const double dd = y(n_ + site.dof_left) - y(n_ + site.dof_right);
+        f = p_.laws[i]->force(d, dd, v0_[i]);
+      }
       force_(i) = f;
-      P_(site.dof_left) -= f;
-      P_(site.dof_right) += f;
     }
   }
 
@@ -255,7 +287,9 @@ class Solver {
   std::vector<int> below_;    // DOF of the floor below, -1 for a first floor
   std::vector<double> last_event_t_;
   std::vector<int> chatter_;
-  Eigen::VectorXd force_, P_;
+  Eigen::VectorXd force_;                            // contact force per site [N]
+  bool tridiagonal_ = false;                         // K and C tridiagonal (build_sparse_rows)
+  std::vector<double> kl_, kd_, ku_, cl_, cd_, cu_;  // their bands [N/m], [N s/m]
   std::vector<int> row_start_, col_;   // compressed rows of K and C (build_sparse_rows)
   std::vector<double> k_val_, c_val_;  // their entries [N/m], [N s/m]
   Dopri5Work work_;
