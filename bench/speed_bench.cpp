@@ -8,9 +8,11 @@
 // default path over the reference, and the largest relative differences between the two in
 // peak floor displacement, peak drift and peak pounding force, and the impact counts.
 // Times are process CPU times (one thread), robust on a shared machine; wall times beside.
-// Usage: bench_speed [source dir [quick | sample ID]] (default: the source tree it was built
-// from; "quick": only the event-driven chapter 8 run, for profiling; "sample ID": peak forces of
-// one campaign sample on the default path, the fixed path at its automatic step and at 10 us)
+// Usage: bench_speed [source dir [quick | lumped [check] | sample ID]] (default: the source tree
+// it was built from; "quick": only the event-driven chapter 8 run, for profiling; "lumped": only
+// the adaptive run of case 2, for profiling, with "check" also its fixed-step reference and the
+// case 2 line; "sample ID": peak forces of one campaign sample on the default path, the fixed
+// path at its automatic step and at 10 us)
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -108,6 +110,39 @@ Options row_study(const std::string& file, std::vector<std::string> extra) {
   return opt;
 }
 
+// 2. The chapter 8 pair with the lumped hc-linear model (adaptive DP 5(4) with event location),
+// timed over 5 runs; with `reference`, also the fixed-step run at 10 us and the comparison line.
+void lumped_case(const std::string& ch8, const BuildingRow& row, const GroundMotion& motion,
+                 bool reference) {
+  const Options o2 = row_study(ch8, {"--motion.duration", "1e9", "--contact.model", "hc-linear",
+                                     "--contact.k_factor", "50"});
+  const ContactSpec contact = contact_from_options(o2, row);
+  IntegratorSettings ad = integrator_from_options(o2), fi = ad;
+  ad.control = StepControl::adaptive;
+  fi.control = StepControl::fixed;
+  fi.dt = kReferenceDt;
+  RowSimulation le, lf;
+  const Timing t_le = time_it([&] { le = simulate_row(row, motion, contact, ad); }, 5);
+  if (!reference) {
+    std::printf(
+        "2. lumped hc-linear, adaptive: %.4f s cpu per sample; pounding run %ld steps (%ld "
+        "rejected, %ld events), free run %ld steps (%ld rejected)\n",
+        t_le.cpu_s, le.pounding.steps, le.pounding.rejected, le.pounding.events, le.free.steps,
+        le.free.rejected);
+    return;
+  }
+  const Timing t_lf = time_it([&] { lf = simulate_row(row, motion, contact, fi); }, 1);
+  std::vector<int> je, jf;
+  for (const auto& s : le.sites) je.push_back(s.impacts);
+  for (const auto& s : lf.sites) jf.push_back(s.impacts);
+  std::printf(
+      "\n2. the same pair, lumped hc-linear (k = 50 x 8.4e7 N/m, e = %g), full record; "
+      "adaptive: %ld steps (%ld rejected), fixed: %ld steps\n",
+      contact.params.e, le.pounding.steps, le.pounding.rejected, lf.pounding.steps);
+  header();
+  line("hc-linear 5+3 (adaptive)", t_le, t_lf, 1, compare(le, lf, je, jf));
+}
+
 constexpr long kSamples = 20;
 
 CampaignStudy load_campaign(const std::string& src, long samples) {
@@ -164,6 +199,10 @@ int main(int argc, char** argv) {
   const Options o1 = row_study(ch8, {"--motion.duration", "1e9"});
   const BuildingRow row = row_from_options(o1);
   const GroundMotion motion = motion_from_options(o1);
+  if (argc > 2 && std::string(argv[2]) == "lumped") {  // case 2 alone
+    lumped_case(ch8, row, motion, argc > 3 && std::string(argv[3]) == "check");
+    return 0;
+  }
   sears::SearsRowModel ev = sears_row_from_options(o1, row), fx = ev;
   ev.stepping = sears::SearsStepping::event;
   fx.stepping = sears::SearsStepping::fixed;
@@ -202,26 +241,7 @@ int main(int argc, char** argv) {
               se.base.sites[2].peak_force / 1e3, sf.base.sites[0].peak_force / 1e3,
               sf.base.sites[1].peak_force / 1e3, sf.base.sites[2].peak_force / 1e3);
 
-  // 2. The same pair, lumped hc-linear (adaptive DP 5(4) with event location vs fixed).
-  const Options o2 = row_study(ch8, {"--motion.duration", "1e9", "--contact.model", "hc-linear",
-                                     "--contact.k_factor", "50"});
-  const ContactSpec contact = contact_from_options(o2, row);
-  IntegratorSettings ad = integrator_from_options(o2), fi = ad;
-  ad.control = StepControl::adaptive;
-  fi.control = StepControl::fixed;
-  fi.dt = kReferenceDt;
-  RowSimulation le, lf;
-  const Timing t_le = time_it([&] { le = simulate_row(row, motion, contact, ad); }, 5);
-  const Timing t_lf = time_it([&] { lf = simulate_row(row, motion, contact, fi); }, 1);
-  std::vector<int> je, jf;
-  for (const auto& s : le.sites) je.push_back(s.impacts);
-  for (const auto& s : lf.sites) jf.push_back(s.impacts);
-  std::printf(
-      "\n2. the same pair, lumped hc-linear (k = 50 x 8.4e7 N/m, e = %g), full record; "
-      "adaptive: %ld steps (%ld rejected), fixed: %ld steps\n",
-      contact.params.e, le.pounding.steps, le.pounding.rejected, lf.pounding.steps);
-  header();
-  line("hc-linear 5+3 (adaptive)", t_le, t_lf, 1, compare(le, lf, je, jf));
+  lumped_case(ch8, row, motion, true);
 
   // 3. A 20-sample campaign of the default fragility study (half sears N = 40, half hc-linear).
   const CampaignStudy study = load_campaign(src, kSamples);

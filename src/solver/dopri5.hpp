@@ -32,19 +32,37 @@ void dopri5_step(F&& f, double t, double h, const Eigen::VectorXd& y, const Eige
   // e_i = b_i - bhat_i (fifth minus fourth order weights).
   constexpr double e1 = 71.0 / 57600, e3 = -71.0 / 16695, e4 = 71.0 / 1920, e5 = -17253.0 / 339200,
                    e6 = 22.0 / 525, e7 = -1.0 / 40;
-  w.tmp = y + h * a21 * k1;
+  // Element loops over raw storage: the vectors are short (2 n + sites), where the dynamic-size
+  // expression templates cost more than the arithmetic.
+  const Eigen::Index n = y.size();
+  if (w.tmp.size() != n) w.resize(n);
+  y1.resize(n);
+  err.resize(n);
+  const double* y0 = y.data();
+  const double* q1 = k1.data();
+  const double *q2 = w.k2.data(), *q3 = w.k3.data(), *q4 = w.k4.data(), *q5 = w.k5.data(),
+               *q6 = w.k6.data(), *q7 = w.k7.data();
+  double* tmp = w.tmp.data();
+  for (Eigen::Index i = 0; i < n; ++i) tmp[i] = y0[i] + h * a21 * q1[i];
   f(t + c2 * h, w.tmp, w.k2);
-  w.tmp = y + h * (a31 * k1 + a32 * w.k2);
+  for (Eigen::Index i = 0; i < n; ++i) tmp[i] = y0[i] + h * (a31 * q1[i] + a32 * q2[i]);
   f(t + c3 * h, w.tmp, w.k3);
-  w.tmp = y + h * (a41 * k1 + a42 * w.k2 + a43 * w.k3);
+  for (Eigen::Index i = 0; i < n; ++i)
+    tmp[i] = y0[i] + h * (a41 * q1[i] + a42 * q2[i] + a43 * q3[i]);
   f(t + c4 * h, w.tmp, w.k4);
-  w.tmp = y + h * (a51 * k1 + a52 * w.k2 + a53 * w.k3 + a54 * w.k4);
+  for (Eigen::Index i = 0; i < n; ++i)
+    tmp[i] = y0[i] + h * (a51 * q1[i] + a52 * q2[i] + a53 * q3[i] + a54 * q4[i]);
   f(t + c5 * h, w.tmp, w.k5);
-  w.tmp = y + h * (a61 * k1 + a62 * w.k2 + a63 * w.k3 + a64 * w.k4 + a65 * w.k5);
+  for (Eigen::Index i = 0; i < n; ++i)
+    tmp[i] = y0[i] + h * (a61 * q1[i] + a62 * q2[i] + a63 * q3[i] + a64 * q4[i] + a65 * q5[i]);
   f(t + h, w.tmp, w.k6);
-  y1 = y + h * (b1 * k1 + b3 * w.k3 + b4 * w.k4 + b5 * w.k5 + b6 * w.k6);
+  double* out = y1.data();
+  for (Eigen::Index i = 0; i < n; ++i)
+    out[i] = y0[i] + h * (b1 * q1[i] + b3 * q3[i] + b4 * q4[i] + b5 * q5[i] + b6 * q6[i]);
   f(t + h, y1, w.k7);
-  err = h * (e1 * k1 + e3 * w.k3 + e4 * w.k4 + e5 * w.k5 + e6 * w.k6 + e7 * w.k7);
+  double* e = err.data();
+  for (Eigen::Index i = 0; i < n; ++i)
+    e[i] = h * (e1 * q1[i] + e3 * q3[i] + e4 * q4[i] + e5 * q5[i] + e6 * q6[i] + e7 * q7[i]);
 }
 
 }  // namespace pound

@@ -57,7 +57,22 @@ struct Hermite {
     return m;
   }
   double absmax_over_step() const {
-    return std::max(std::fabs(max_over_step()), std::fabs(min_over_step()));
+    double s[2], m = std::max(std::fabs(g0), std::fabs(g1));
+    const int n = stationary(s);
+    for (int i = 0; i < n; ++i) m = std::max(m, std::fabs(at(s[i])));
+    return m;
+  }
+  // Upper bound of |value| over the step: the basis functions of g0 and g1 are >= 0 and sum to
+  // 1, those of m0 and m1, theta (1 - theta)^2 and theta^2 (theta - 1), are at most 4/27 in
+  // magnitude. The factor 1 + 1e-12 covers the round-off of at().
+  double absmax_bound() const {
+    return (std::max(std::fabs(g0), std::fabs(g1)) + 4.0 / 27.0 * (std::fabs(m0) + std::fabs(m1))) *
+           (1.0 + 1e-12);
+  }
+  // max(peak, absmax_over_step()), skipping the stationary points when the bound cannot
+  // raise the peak.
+  double raise_peak(double peak) const {
+    return absmax_bound() <= peak ? peak : std::max(peak, absmax_over_step());
   }
 };
 
@@ -77,44 +92,101 @@ class Solver {
       for (int i = o + 1; i < end; ++i) below_[i] = i - 1;
     }
     force_.setZero(ns_);
-    P_.setZero(n_);
-    work_force_.setZero(n_);
     work_.resize(2 * n_ + ns_);
+    build_sparse_rows();
   }
 
   RowResult run();
 
  private:
-  // Right-hand side: y = [u; v; J] with J the impulse per site.
+  // Right-hand side: y = [u; v; J] with J the impulse per site (physics.md section 1):
+  //   u' = v,  v' = -M^-1 (C v + K u) - 1 ag + M^-1 P,  J' = contact force per site.
+  // M is diagonal; the products C v and K u use the bands or the compressed rows of
+  // build_sparse_rows. Allocation-free.
   void rhs(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy) {
-    const auto u = y.head(n_);
-    const auto v = y.segment(n_, n_);
     contact_forces(y);
     const double ag = p_.motion ? p_.motion->at(t) : 0.0;
     dy.resize(2 * n_ + ns_);
-    dy.head(n_) = v;
-    // Allocation-free: the products go into a preallocated work vector.
-    work_force_ = P_;
-    work_force_.noalias() -= row_.C * v;
-    work_force_.noalias() -= row_.K * u;
-    dy.segment(n_, n_) = row_.inv_mass.cwiseProduct(work_force_);
-    dy.segment(n_, n_).array() -= ag;
-    dy.tail(ns_) = force_;
+    const double* u = y.data();
+    const double* v = u + n_;
+    const double* im = row_.inv_mass.data();
+    double* du = dy.data();
+    double* dv = du + n_;
+    for (int i = 0; i < n_; ++i) du[i] = v[i];
+    if (tridiagonal_ && n_ > 1) {
+      const double *kl = kl_.data(), *kd = kd_.data(), *ku = ku_.data();
+      const double *cl = cl_.data(), *cd = cd_.data(), *cu = cu_.data();
+      const int m = n_ - 1;
+      dv[0] = -im[0] * (cd[0] * v[0] + cu[0] * v[1] + (kd[0] * u[0] + ku[0] * u[1])) - ag;
+      for (int i = 1; i < m; ++i)
+        dv[i] = -im[i] * (cl[i] * v[i - 1] + cd[i] * v[i] + cu[i] * v[i + 1] +
+                          (kl[i] * u[i - 1] + kd[i] * u[i] + ku[i] * u[i + 1])) -
+                ag;
+      dv[m] = -im[m] * (cl[m] * v[m - 1] + cd[m] * v[m] + (kl[m] * u[m - 1] + kd[m] * u[m])) - ag;
+    } else {
+      for (int i = 0; i < n_; ++i) {
+        double f = 0.0;
+        for (int e = row_start_[i]; e < row_start_[i + 1]; ++e) {
+          const int j = col_[e];
+          f += c_val_[e] * v[j] + k_val_[e] * u[j];
+        }
+        dv[i] = -im[i] * f - ag;
+      }
+    }
+    for (int i = 0; i < ns_; ++i) {
+      const double f = force_(i);
+      dv[n_ + i] = f;
+      if (f == 0.0) continue;
+      const auto& site = row_.sites[i];
+      dv[site.dof_left] -= im[site.dof_left] * f;
+      dv[site.dof_right] += im[site.dof_right] * f;
+    }
   }
 
+  // Storage of K and C for the products of rhs(). A shear building's K is tridiagonal
+  // (Th. 3.6) and so is its Rayleigh damping C = a0 M + a1 K (Chopra 11.4.1); buildings do not
+  // couple (block diagonal: the entries between one building's top floor and the next one's
+  // first floor are zero). Then the three bands are kept (kl_(i) = K(i, i-1), kd_(i) = K(i, i),
+  // ku_(i) = K(i, i+1), the same for C; zero outside the matrix). Otherwise (modal damping
+  // gives a full C per building) compressed rows over the union of the nonzero patterns.
+  // Either costs O(nonzeros) instead of O(n^2) and gives the dense products up to round-off.
+  void build_sparse_rows() {
+    tridiagonal_ = true;
+    for (int i = 0; i < n_; ++i)
+      for (int j = 0; j < n_; ++j)
+        if (std::abs(i - j) > 1 && (row_.K(i, j) != 0.0 || row_.C(i, j) != 0.0))
+          tridiagonal_ = false;
+    auto band = [&](const Eigen::MatrixXd& A, int offset) {
+      std::vector<double> b(n_, 0.0);
+      for (int i = 0; i < n_; ++i)
+        if (i + offset >= 0 && i + offset < n_) b[i] = A(i, i + offset);
+      return b;
+    };
+    kl_ = band(row_.K, -1), kd_ = band(row_.K, 0), ku_ = band(row_.K, 1);
+    cl_ = band(row_.C, -1), cd_ = band(row_.C, 0), cu_ = band(row_.C, 1);
+    row_start_.assign(1, 0);
+    for (int i = 0; i < n_; ++i) {
+      for (int j = 0; j < n_; ++j) {
+        if (row_.K(i, j) == 0.0 && row_.C(i, j) == 0.0) continue;
+        col_.push_back(j);
+        k_val_.push_back(row_.K(i, j));
+        c_val_.push_back(row_.C(i, j));
+      }
+      row_start_.push_back(static_cast<int>(col_.size()));
+    }
+  }
+
+  // Contact force per site [N] into force_ (zero where no contact is active).
   void contact_forces(const Eigen::VectorXd& y) {
-    P_.setZero();
-    force_.setZero();
-    if (!pounding_) return;
     for (int i = 0; i < ns_; ++i) {
-      if (!active_[i]) continue;
-      const auto& site = row_.sites[i];
-      const double d = gap_function(y, i);
-      const double dd = y(n_ + site.dof_left) - y(n_ + site.dof_right);
-      const double f = p_.laws[i]->force(d, dd, v0_[i]);
+      double f = 0.0;
+      if (active_[i]) {
+        const auto& site = row_.sites[i];
+        const double d = gap_function(y, i);
+        const double dd = y(n_ + site.dof_left) - y(n_ + site.dof_right);
+        f = p_.laws[i]->force(d, dd, v0_[i]);
+      }
       force_(i) = f;
-      P_(site.dof_left) -= f;
-      P_(site.dof_right) += f;
     }
   }
 
@@ -215,7 +287,11 @@ class Solver {
   std::vector<int> below_;    // DOF of the floor below, -1 for a first floor
   std::vector<double> last_event_t_;
   std::vector<int> chatter_;
-  Eigen::VectorXd force_, P_, work_force_;
+  Eigen::VectorXd force_;                            // contact force per site [N]
+  bool tridiagonal_ = false;                         // K and C tridiagonal (build_sparse_rows)
+  std::vector<double> kl_, kd_, ku_, cl_, cd_, cu_;  // their bands [N/m], [N s/m]
+  std::vector<int> row_start_, col_;   // compressed rows of K and C (build_sparse_rows)
+  std::vector<double> k_val_, c_val_;  // their entries [N/m], [N s/m]
   Dopri5Work work_;
   RowResult r_;
 };
@@ -247,7 +323,7 @@ void Solver::update_peaks(const Eigen::VectorXd& y0, const Eigen::VectorXd& y1, 
   // (fourth-order accurate, like the integrator's own error).
   for (int i = 0; i < n_; ++i) {
     const Hermite c{y0(i), y1(i), h * y0(n_ + i), h * y1(n_ + i)};
-    r_.peak_disp(i) = std::max(r_.peak_disp(i), c.absmax_over_step());
+    r_.peak_disp(i) = c.raise_peak(r_.peak_disp(i));
     const int b = below_[i];
     Hermite d = c;
     if (b >= 0) {
@@ -256,7 +332,7 @@ void Solver::update_peaks(const Eigen::VectorXd& y0, const Eigen::VectorXd& y1, 
       d.m0 -= h * y0(n_ + b);
       d.m1 -= h * y1(n_ + b);
     }
-    r_.peak_drift(i) = std::max(r_.peak_drift(i), d.absmax_over_step());
+    r_.peak_drift(i) = d.raise_peak(r_.peak_drift(i));
   }
   for (int i = 0; i < ns_; ++i) {
     if (!active_[i]) continue;
@@ -365,21 +441,41 @@ RowResult Solver::run() {
     if (t + hs > t_stop * (1 - 1e-14)) hs = t_stop - t;
     step(t, hs, y, k1, y1, err, k7);
     double en = 0.0;
+    // A rejected step: the next try from t has length hn [s].
+    auto retry = [&](double hn) {
+      ++r_.rejected;
+      h = hn;
+      if (h < 1e-14 * std::max(1.0, t))
+        throw NumericalError("step size underflow at t = " + std::to_string(t) + " s");
+    };
+    // Rejected for its local error enf > 1, a step of length hf is retried shorter (elementary
+    // controller, HNW II.4 eq. 4.13, factor limited to [0.1, 0.9]).
+    auto reject = [&](double hf, double enf) {
+      if (!std::isfinite(enf)) enf = 1e10;
+      retry(hf * std::max(0.1, 0.9 * std::pow(enf, -0.2)));
+    };
+    bool trial_failed = false;
     if (!fixed) {
       en = error_norm(y, y1, err);
-      if (!(en <= 1.0)) {
-        ++r_.rejected;
-        if (!std::isfinite(en)) en = 1e10;
-        h = hs * std::max(0.1, 0.9 * std::pow(en, -0.2));
-        if (h < 1e-14 * std::max(1.0, t))
-          throw NumericalError("step size underflow at t = " + std::to_string(t) + " s");
+      trial_failed = !(en <= 1.0);
+    }
+    double theta;
+    int ev = -1;
+    if (trial_failed) {
+      // A contact starting or ending inside the step puts a kink of the contact force (a jump
+      // of its derivative) into it: there the error estimate falls only like h^2, not h^5, and
+      // the controller would creep up on the event through many rejected steps. When the
+      // trial's interpolant shows an event, it is located at once on re-taken steps (below),
+      // which must then pass the error test; otherwise the step is rejected as usual.
+      if (pounding_ && y1.allFinite()) ev = find_event(y, y1, hs, theta);
+      if (ev < 0) {
+        reject(hs, en);
         continue;
       }
+    } else {
+      check_finite(t + hs, y1);
+      if (pounding_) ev = find_event(y, y1, hs, theta);
     }
-    check_finite(t + hs, y1);
-
-    double theta;
-    const int ev = pounding_ ? find_event(y, y1, hs, theta) : -1;
     if (ev >= 0) {
       // Illinois iteration on the step length: g(h') = delta of site ev after a step h'.
       const double sign = active_[ev] ? -1.0 : 1.0;
@@ -433,6 +529,26 @@ RowResult Solver::run() {
         }
         if (!found)
           throw NumericalError("contact event location failed at t = " + std::to_string(t));
+        if (trial_failed) {
+          // The step to the event replaces a rejected one: it must be re-taken (an event at
+          // t itself rests on the rejected trial only), pass the error test, and its own
+          // (accurate) interpolant must show no earlier event of another site.
+          if (!(hc > 0.0)) {
+            reject(hs, en);
+            continue;
+          }
+          const double enc = error_norm(y, ytry, etry);
+          if (!(enc <= 1.0)) {
+            reject(hc, enc);
+            continue;
+          }
+          double th2;
+          const int ev2 = find_event(y, ytry, hc, th2);
+          if (ev2 >= 0 && ev2 != ev) {  // retry up to the earlier event
+            retry(std::max(th2, 0.1) * hc);
+            continue;
+          }
+        }
         if (hc > 0.0) {
           update_peaks(y, ytry, hc, ktry);
           y = ytry;
@@ -448,6 +564,10 @@ RowResult Solver::run() {
           for (int i = 0; i < ns_; ++i) all_open = all_open && !active_[i] && gap_rate(y, i) < 0.0;
           if (all_open) break;
         }
+        continue;
+      }
+      if (trial_failed) {  // false alarm on a rejected trial
+        reject(hs, en);
         continue;
       }
     }

@@ -107,6 +107,35 @@ TEST(RowSolver, FixedStepConvergesAtFifthOrder) {
   EXPECT_LT(order2, 5.6);
 }
 
+TEST(RowSolver, ModalDampingDecaysAHigherModeAtItsOwnRatio) {
+  // Three storeys with modal damping (C full, not tridiagonal): released in the third mode
+  // shape, the response stays in that mode and decays with ratio xi at w3 (Chopra eq. 2.2.4).
+  // This needs every entry of C; Rayleigh damping would give mode 3 a larger ratio.
+  Building b;
+  b.masses = {2e4, 2e4, 1.5e4};
+  b.stiffnesses = {3e7, 2.5e7, 2e7};
+  b.storey_heights = {3.0, 3.0, 3.0};
+  b.damping_ratio = 0.05;
+  b.damping = DampingKind::modal;
+  BuildingRow row;
+  row.buildings = {b};
+  const AssembledRow a = assemble(row);
+  ASSERT_NE(a.C(0, 2), 0.0);
+  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eig(a.K, a.M);
+  const double w3 = std::sqrt(eig.eigenvalues()(2));
+  const Eigen::VectorXd phi = eig.eigenvectors().col(2);
+  RowProblem p;
+  p.row = &a;
+  p.u0 = 0.01 * phi / phi.cwiseAbs().maxCoeff();  // [m]
+  p.t_end = 0.5;
+  IntegratorSettings s;
+  s.rtol = 1e-10;
+  s.atol = 1e-13;
+  const RowResult r = solve(p, s);
+  const double q = free_vibration(0.5, 1.0, w3, 0.05);
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(r.u_end(i), p.u0(i) * q, 1e-10) << i;
+}
+
 // Two SDOF buildings side by side with a gap.
 BuildingRow pair(double gap, double k2 = 2500.0) {
   BuildingRow row = sdof(0.05);
