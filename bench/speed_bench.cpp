@@ -26,6 +26,7 @@
 #include "campaign/sample.hpp"
 #include "io/options.hpp"
 #include "motion/simqke.hpp"
+#include "sears/sears_row_layout.hpp"
 #include "sears/sears_simulation.hpp"
 #include "simulation/simulate_row.hpp"
 #include "study/row_options.hpp"
@@ -164,6 +165,58 @@ CampaignStudy reference_of(const CampaignStudy& study) {
   return ref;
 }
 
+// Convergence of the event path in its fine step (docs/speed.md, "Fine step"): chapter 8, full
+// record, fine steps h_c / r for r = 11 (T_min / 20, the former automatic step) down to 3,
+// against the fixed path at 10 us: the largest relative differences per quantity.
+void fine_step_study(const BuildingRow& row, const GroundMotion& motion,
+                     sears::SearsRowModel model) {
+  sears::SearsRowModel ref = model;
+  ref.stepping = sears::SearsStepping::fixed;
+  ref.dt_s = kReferenceDt;
+  const sears::SearsRowSimulation r = sears::simulate_sears_row(row, motion, ref);
+  model.stepping = sears::SearsStepping::event;
+  model.dt_s = 0.0;
+  const sears::SearsSteps automatic = sears::sears_row_steps(row, &motion, model);
+  std::printf(
+      "fine step of the event path vs the fixed path at %g s (chapter 8, sears N = %d, %.2f s); "
+      "coarse step %.4g s, automatic fine step %.4g s (ratio %ld); largest relative "
+      "differences over floors, sites and slabs\n",
+      kReferenceDt, model.modes, motion.duration(), automatic.coarse_s, automatic.fine_s,
+      automatic.ratio);
+  std::printf("%6s %11s %8s %9s %9s %9s %9s %9s %9s %9s %8s\n", "ratio", "fine dt[s]", "T_min/dt",
+              "cpu[s]", "disp", "drift", "floor acc", "force", "face acc", "centre acc",
+              "same imp");
+  double w_max = 0.0;  // the highest modal frequency retained over the colliding floors
+  for (const auto& f : sears::make_layout(row, assemble(row), model).floors)
+    w_max =
+        std::max(w_max, sears::floor_slab(row, model, f.building, f.floor - 1).omega(model.modes));
+  const double t_min = 2.0 * M_PI / w_max;
+  for (long ratio : {11L, 8L, 6L, 5L, 4L, 3L}) {
+    model.dt_s = automatic.coarse_s / static_cast<double>(ratio);
+    sears::SearsRowSimulation e;
+    const Timing t = time_it([&] { e = sears::simulate_sears_row(row, motion, model); }, 1);
+    double d[6] = {0, 0, 0, 0, 0, 0};
+    for (std::size_t i = 0; i < r.base.floors.size(); ++i) {
+      d[0] = std::max(d[0], rel(e.base.floors[i].disp_pounding, r.base.floors[i].disp_pounding));
+      d[1] = std::max(
+          d[1], rel(e.base.floors[i].drift_ratio_pounding, r.base.floors[i].drift_ratio_pounding));
+      d[2] = std::max(d[2], rel(e.base.floors[i].accel_pounding, r.base.floors[i].accel_pounding));
+    }
+    bool same = true;
+    for (std::size_t k = 0; k < r.base.sites.size(); ++k) {
+      d[3] = std::max(d[3], rel(e.base.sites[k].peak_force, r.base.sites[k].peak_force));
+      same = same && e.contacts[k].impacts == r.contacts[k].impacts;
+    }
+    for (std::size_t k = 0; k < r.slabs.size(); ++k) {
+      d[4] = std::max(d[4], rel(e.slabs[k].face_accel, r.slabs[k].face_accel));
+      d[5] = std::max(d[5], rel(e.slabs[k].centre_accel, r.slabs[k].centre_accel));
+    }
+    std::printf("%6ld %11.4g %8.1f %9.4f %8.3f%% %8.3f%% %8.3f%% %8.3f%% %8.3f%% %8.3f%% %8s\n",
+                ratio, model.dt_s, t_min / model.dt_s, t.cpu_s, 100 * d[0], 100 * d[1], 100 * d[2],
+                100 * d[3], 100 * d[4], 100 * d[5], same ? "yes" : "NO");
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -208,6 +261,10 @@ int main(int argc, char** argv) {
   ev.stepping = sears::SearsStepping::event;
   fx.stepping = sears::SearsStepping::fixed;
   fx.dt_s = kReferenceDt;
+  if (argc > 2 && std::string(argv[2]) == "fine-step") {  // the step rule's evidence
+    fine_step_study(row, motion, sears_row_from_options(o1, row));
+    return 0;
+  }
   sears::SearsRowSimulation se, sf;
   const Timing t_se = time_it([&] { se = sears::simulate_sears_row(row, motion, ev); }, 3);
   if (argc > 2 && std::string(argv[2]) == "quick") {

@@ -5,7 +5,7 @@
 # state (2 %, 10 %). Prints one table (docs/sears.md, "Validation: thesis chapter 8").
 # Every sensitivity case runs with the thesis' N = 100 modes and again with N = 400, because
 # at N = 100 the stiffer contacts (D = 2, 5) and the slower wave (chi = 1/16) leave the force
-# rise time Z / (2 k) unresolved (docs/sears.md, "Modal truncation"). 3-7 minutes.
+# rise time Z / (2 k) unresolved (docs/sears.md, "Modal truncation"). About 5 s.
 #
 #   POUND=build-s8/bin/pound scripts/ch8_sensitivity.sh
 #

@@ -255,6 +255,47 @@ TEST(SearsEvent, SleepingSlabsGiveTheResultsOfSteppingEverySlab) {
   }
 }
 
+TEST(SearsEvent, SleepingSlabsInARowOfThree) {
+  // A 4-storey added on the right of the chapter 8 pair (gap 2 mm): the 3-storey's slabs are
+  // loaded at both ends, so a slab may sleep while the slab it meets is awake, and waking one
+  // end's partner leaves the other end guarded. Sleeping or not, the results agree to
+  // round-off; both agree with the fixed path (issue 8 tolerances).
+  StudyRun s =
+      read_study("ch8-five-three.ini",
+                 {"--building3.masses", "40e3, 40e3, 40e3, 40e3", "--building3.stiffnesses",
+                  "7e7, 7e7, 7e7, 7e7", "--building3.slab_length", "16", "--building3.E", "21e9",
+                  "--building3.rho", "2500", "--pair2.gap", "0.002", "--motion.duration", "5"});
+  ASSERT_EQ(s.row.buildings.size(), 3u);
+  s.model.sleeping_slabs = false;
+  const SearsRowSimulation all = simulate_sears_row(s.row, s.motion, s.model);
+  s.model.sleeping_slabs = true;
+  const SearsRowSimulation lazy = simulate_sears_row(s.row, s.motion, s.model);
+  s.model.stepping = SearsStepping::fixed;
+  const SearsRowSimulation fixed = simulate_sears_row(s.row, s.motion, s.model);
+  EXPECT_GT(lazy.counts_pounding.slab_sleeps, 100);
+  EXPECT_GT(lazy.counts_pounding.slab_wakes, 10);
+  EXPECT_EQ(lazy.counts_pounding.bound_violations, 0);
+  ASSERT_EQ(all.base.sites.size(), 6u);
+  for (std::size_t k = 0; k < all.base.sites.size(); ++k) {
+    const double f = all.base.sites[k].peak_force;
+    EXPECT_GT(f, 0.0) << k;  // every site pounds
+    EXPECT_NEAR(lazy.base.sites[k].peak_force, f, 1e-9 * f) << k;
+    EXPECT_EQ(lazy.contacts[k].phases.size(), all.contacts[k].phases.size()) << k;
+    EXPECT_NEAR(lazy.base.sites[k].peak_force, fixed.base.sites[k].peak_force, 0.02 * f) << k;
+    EXPECT_EQ(lazy.contacts[k].impacts, fixed.contacts[k].impacts) << k;
+  }
+  for (std::size_t i = 0; i < all.base.floors.size(); ++i) {
+    const double d = all.base.floors[i].disp_pounding;
+    EXPECT_NEAR(lazy.base.floors[i].disp_pounding, d, 1e-9 * d) << i;
+    EXPECT_NEAR(lazy.base.floors[i].disp_pounding, fixed.base.floors[i].disp_pounding, 5e-3 * d)
+        << i;
+  }
+  for (std::size_t k = 0; k < all.slabs.size(); ++k)
+    EXPECT_NEAR(lazy.slabs[k].centre_accel, all.slabs[k].centre_accel,
+                1e-9 * all.slabs[k].centre_accel)
+        << k;
+}
+
 TEST(SearsEvent, TimeLoopDoesNotAllocate) {
   // Issue 8: the kernels are allocation-free in the time loop. Allocations of a 2 s and an 8 s
   // run of the chapter 8 study (pounding on) differ only by the growth of the contact-phase
