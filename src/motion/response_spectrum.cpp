@@ -132,17 +132,17 @@ __attribute__((always_inline)) inline V4 load(const double* p) {
   std::memcpy(&r, p, sizeof r);
   return r;
 }
-__attribute__((always_inline)) inline void store(double* p, V4 x) {
+__attribute__((always_inline)) inline void store(double* p, const V4& x) {
   std::memcpy(p, &x, sizeof x);
 }
 typedef long long I4 __attribute__((vector_size(32)));
-__attribute__((always_inline)) inline V4 vabs(V4 x) {  // clears the sign bits, like fabs
+__attribute__((always_inline)) inline V4 vabs(const V4& x) {  // clears the sign bits, like fabs
   const I4 magnitude = {0x7fffffffffffffffLL, 0x7fffffffffffffffLL, 0x7fffffffffffffffLL,
                         0x7fffffffffffffffLL};
   return (V4)((I4)x & magnitude);
 }
 // std::max(m, x) lane by lane: (m < x) ? x : m.
-__attribute__((always_inline)) inline V4 vmax(V4 m, V4 x) {
+__attribute__((always_inline)) inline V4 vmax(const V4& m, const V4& x) {
   return m < x ? x : m;
 }
 
