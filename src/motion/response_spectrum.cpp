@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <string>
 
 #include "core/error.hpp"
@@ -77,55 +78,131 @@ SpectrumCalculator::SpectrumCalculator(std::vector<double> periods, double dampi
       p.step = SdofStep::make(T, damping, dt / p.substeps);
     }
     per_.push_back(p);
-    if (T == 0.0) continue;
+  }
+  // Group the periods by sub-step count (in order of first appearance) and lay the groups
+  // out one after another in the flat lane arrays, each padded with inert oscillators (all
+  // coefficients 0) to a multiple of kLanes.
+  for (std::size_t i = 0; i < per_.size(); ++i) {
+    if (per_[i].omega == 0.0) continue;
     auto g = std::find_if(groups_.begin(), groups_.end(),
-                          [&](const Group& x) { return x.substeps == p.substeps; });
+                          [&](const Group& x) { return x.substeps == per_[i].substeps; });
     if (g == groups_.end()) {
       groups_.emplace_back();
       g = groups_.end() - 1;
-      g->substeps = p.substeps;
+      g->substeps = per_[i].substeps;
     }
-    g->index.push_back(per_.size() - 1);
-    const SdofStep& k = p.step;
-    g->a11.push_back(k.a11);
-    g->a12.push_back(k.a12);
-    g->a21.push_back(k.a21);
-    g->a22.push_back(k.a22);
-    g->b11.push_back(k.b11);
-    g->b12.push_back(k.b12);
-    g->b21.push_back(k.b21);
-    g->b22.push_back(k.b22);
-    g->c.push_back(2.0 * damping * p.omega);
-    g->w2.push_back(p.omega * p.omega);
+    g->index.push_back(i);
   }
-  // Pad every group with inert oscillators (all coefficients 0) to a multiple of kLanes.
-  for (Group& g : groups_)
+  Lanes& l = lanes_;
+  for (Group& g : groups_) {
+    g.begin = l.a11.size();
+    for (std::size_t i : g.index) {
+      const SdofStep& k = per_[i].step;
+      const double w = per_[i].omega;
+      l.a11.push_back(k.a11);
+      l.a12.push_back(k.a12);
+      l.a21.push_back(k.a21);
+      l.a22.push_back(k.a22);
+      l.b11.push_back(k.b11);
+      l.b12.push_back(k.b12);
+      l.b21.push_back(k.b21);
+      l.b22.push_back(k.b22);
+      l.c.push_back(2.0 * damping * w);
+      l.w2.push_back(w * w);
+    }
+    g.end = (l.a11.size() + kLanes - 1) / kLanes * kLanes;
     for (std::vector<double>* c :
-         {&g.a11, &g.a12, &g.a21, &g.a22, &g.b11, &g.b12, &g.b21, &g.b22, &g.c, &g.w2})
-      c->resize((c->size() + kLanes - 1) / kLanes * kLanes, 0.0);
+         {&l.a11, &l.a12, &l.a21, &l.a22, &l.b11, &l.b12, &l.b21, &l.b22, &l.c, &l.w2})
+      c->resize(g.end, 0.0);
+  }
 }
 
 namespace {
 
-// One step of n independent oscillators (restrict pointers so the loop vectorises).
-template <class G>
-void advance(const G& g, double a0, double a1, std::size_t n, double* __restrict x,
-             double* __restrict v, double* __restrict xmax) {
-  const double* __restrict a11 = g.a11.data();
-  const double* __restrict a12 = g.a12.data();
-  const double* __restrict a21 = g.a21.data();
-  const double* __restrict a22 = g.a22.data();
-  const double* __restrict b11 = g.b11.data();
-  const double* __restrict b12 = g.b12.data();
-  const double* __restrict b21 = g.b21.data();
-  const double* __restrict b22 = g.b22.data();
-  for (std::size_t b = 0; b < n; b += kLanes) {  // n is a multiple of kLanes
-    for (std::size_t p = b; p < b + kLanes; ++p) {
-      const double xn = a11[p] * x[p] + a12[p] * v[p] + b11[p] * a0 + b12[p] * a1;
-      const double vn = a21[p] * x[p] + a22[p] * v[p] + b21[p] * a0 + b22[p] * a1;
-      x[p] = xn;
-      v[p] = vn;
-      xmax[p] = std::max(xmax[p], std::fabs(xn));
+// Four doubles as one vector (GCC/Clang vector extension), as in src/sears/modal_bank.cpp:
+// four oscillators side by side. The helpers are always inlined into the kernel (a call would
+// pass the 32-byte vector with the default ABI into the AVX2 clone).
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wpsabi"
+#endif
+typedef double V4 __attribute__((vector_size(32)));
+static_assert(kLanes == 4, "the kernel works on blocks of four oscillators");
+__attribute__((always_inline)) inline V4 load(const double* p) {
+  V4 r;
+  std::memcpy(&r, p, sizeof r);
+  return r;
+}
+__attribute__((always_inline)) inline void store(double* p, const V4& x) {
+  std::memcpy(p, &x, sizeof x);
+}
+typedef long long I4 __attribute__((vector_size(32)));
+__attribute__((always_inline)) inline V4 vabs(const V4& x) {  // clears the sign bits, like fabs
+  const I4 magnitude = {0x7fffffffffffffffLL, 0x7fffffffffffffffLL, 0x7fffffffffffffffLL,
+                        0x7fffffffffffffffLL};
+  return (V4)((I4)x & magnitude);
+}
+// std::max(m, x) lane by lane: (m < x) ? x : m.
+__attribute__((always_inline)) inline V4 vmax(const V4& m, const V4& x) {
+  return m < x ? x : m;
+}
+
+// The oscillators of one sub-step group: lanes [begin, end) of the flat arrays.
+struct KernelGroup {
+  std::size_t begin, end;
+  int substeps;
+};
+struct KernelArrays {
+  const double *a11, *a12, *a21, *a22, *b11, *b12, *b21, *b22, *c, *w2;
+  double *x, *v, *xmax, *amax;  // amax null: no absolute acceleration
+};
+
+// Peaks of every oscillator over the record a[0..n): the exact step of SdofStep::make for
+// the ground acceleration linear between samples, sub-step j of m using the values
+// a_i + j (a_{i+1} - a_i) / m, every group in one pass over the samples (the groups'
+// recurrences are independent, so their steps overlap in the processor). Each lane does the
+// operations of the scalar recurrence in the same order and no FMA is enabled, so the AVX2
+// clone and the default (SSE2) clone give the same bits on any x86-64 machine.
+__attribute__((target_clones("avx2", "default"))) void peak_kernel(const KernelArrays& k,
+                                                                   const KernelGroup* groups,
+                                                                   std::size_t ngroups,
+                                                                   const double* a, std::size_t n) {
+  // Local restrict copies: the stores (memcpy) could otherwise alias the structure.
+  const double* __restrict a11 = k.a11;
+  const double* __restrict a12 = k.a12;
+  const double* __restrict a21 = k.a21;
+  const double* __restrict a22 = k.a22;
+  const double* __restrict b11 = k.b11;
+  const double* __restrict b12 = k.b12;
+  const double* __restrict b21 = k.b21;
+  const double* __restrict b22 = k.b22;
+  const double* __restrict c = k.c;
+  const double* __restrict w2 = k.w2;
+  double* __restrict x = k.x;
+  double* __restrict v = k.v;
+  double* __restrict xmax = k.xmax;
+  double* __restrict amax = k.amax;
+  for (std::size_t i = 0; i + 1 < n; ++i) {
+    for (std::size_t gi = 0; gi < ngroups; ++gi) {
+      const std::size_t begin = groups[gi].begin, end = groups[gi].end;
+      const int m = groups[gi].substeps;
+      const double da = (a[i + 1] - a[i]) * (1.0 / m);
+      for (int j = 0; j < m; ++j) {
+        const double a0 = a[i] + j * da;
+        const double a1 = j + 1 == m ? a[i + 1] : a[i] + (j + 1) * da;
+        const V4 A0 = {a0, a0, a0, a0}, A1 = {a1, a1, a1, a1};
+        for (std::size_t p = begin; p < end; p += kLanes) {
+          const V4 xp = load(x + p), vp = load(v + p);
+          const V4 xn =
+              load(a11 + p) * xp + load(a12 + p) * vp + load(b11 + p) * A0 + load(b12 + p) * A1;
+          const V4 vn =
+              load(a21 + p) * xp + load(a22 + p) * vp + load(b21 + p) * A0 + load(b22 + p) * A1;
+          store(x + p, xn);
+          store(v + p, vn);
+          store(xmax + p, vmax(load(xmax + p), vabs(xn)));
+          if (amax)  // x'' + a_g = -(c v + w^2 x)
+            store(amax + p, vmax(load(amax + p), vabs(load(c + p) * vn + load(w2 + p) * xn)));
+        }
+      }
     }
   }
 }
@@ -141,35 +218,24 @@ void SpectrumCalculator::peaks(const std::vector<double>& a, std::vector<double>
   for (double x : a) pga = std::max(pga, std::fabs(x));
   for (std::size_t i = 0; i < np; ++i)  // T = 0: a rigid oscillator moves with the ground
     if (per_[i].omega == 0.0 && sa) (*sa)[i] = pga;
-  std::vector<double> x, v, xmax, amax;
-  for (const Group& g : groups_) {
-    const std::size_t n = g.a11.size();  // padded
-    x.assign(n, 0.0);
-    v.assign(n, 0.0);
-    xmax.assign(n, 0.0);
-    amax.assign(n, 0.0);
-    double* xp = x.data();
-    double* vp = v.data();
-    double* xmaxp = xmax.data();
-    double* amaxp = amax.data();
-    const int m = g.substeps;
-    const double inv = 1.0 / m;
-    for (std::size_t i = 0; i + 1 < a.size(); ++i) {
-      const double da = (a[i + 1] - a[i]) * inv;
-      for (int j = 0; j < m; ++j) {
-        const double a0 = a[i] + j * da;
-        const double a1 = j + 1 == m ? a[i + 1] : a[i] + (j + 1) * da;
-        advance(g, a0, a1, n, xp, vp, xmaxp);
-        if (sa)
-          for (std::size_t p = 0; p < n; ++p)  // x'' + a_g = -(c v + w^2 x)
-            amaxp[p] = std::max(amaxp[p], std::fabs(g.c[p] * vp[p] + g.w2[p] * xp[p]));
-      }
-    }
+  const std::size_t nl = lanes_.a11.size();
+  std::vector<double> x(nl, 0.0), v(nl, 0.0), xmax(nl, 0.0), amax(sa ? nl : 0, 0.0);
+  std::vector<KernelGroup> kg;
+  for (const Group& g : groups_) kg.push_back({g.begin, g.end, g.substeps});
+  const Lanes& l = lanes_;
+  const KernelArrays k{l.a11.data(), l.a12.data(),
+                       l.a21.data(), l.a22.data(),
+                       l.b11.data(), l.b12.data(),
+                       l.b21.data(), l.b22.data(),
+                       l.c.data(),   l.w2.data(),
+                       x.data(),     v.data(),
+                       xmax.data(),  sa ? amax.data() : nullptr};
+  peak_kernel(k, kg.data(), kg.size(), a.data(), a.size());
+  for (const Group& g : groups_)
     for (std::size_t p = 0; p < g.index.size(); ++p) {
-      sd[g.index[p]] = xmax[p];
-      if (sa) (*sa)[g.index[p]] = amax[p];
+      sd[g.index[p]] = xmax[g.begin + p];
+      if (sa) (*sa)[g.index[p]] = amax[g.begin + p];
     }
-  }
 }
 
 ResponseSpectrum SpectrumCalculator::compute(const std::vector<double>& accel) const {

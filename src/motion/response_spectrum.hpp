@@ -66,11 +66,15 @@ class SpectrumCalculator {
     int substeps = 1;
     SdofStep step{};
   };
-  // Periods with the same number of sub-steps, advanced together (independent recurrences
-  // side by side, which the compiler can vectorise).
+  // Periods with the same number of sub-steps are advanced together: their coefficients sit
+  // side by side in the flat arrays below (structure of arrays, padded per group to a
+  // multiple of 4 lanes), so one SIMD kernel advances four independent recurrences at once.
   struct Group {
     int substeps = 1;
-    std::vector<std::size_t> index;  // into periods_
+    std::size_t begin = 0, end = 0;  // lanes [begin, end) of the flat arrays (padded)
+    std::vector<std::size_t> index;  // into periods_, one per real (unpadded) lane
+  };
+  struct Lanes {
     std::vector<double> a11, a12, a21, a22, b11, b12, b21, b22, c, w2;
   };
   // Peak |x| and peak |x'' + a_g| (when sa is not null) of every period.
@@ -80,6 +84,7 @@ class SpectrumCalculator {
   double damping_, dt_;
   std::vector<PerPeriod> per_;
   std::vector<Group> groups_;
+  Lanes lanes_;
 };
 
 /// Response spectrum of a record at the given periods [s] and damping [-].
