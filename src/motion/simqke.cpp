@@ -229,8 +229,7 @@ GeneratedMotion SimqkeGenerator::generate(std::uint64_t seed, std::uint64_t inde
     for (int it = 0;; ++it) {
       if (it > 0) m = d.correct(m, ratio);
       d.spectra->compute_psa(m.accel, psa);
-      // Score: the largest of 1 - q and (q - 1) / 2 over the matching periods, q = computed
-      // / target (asymmetric like the usual acceptance band 0.90-1.20).
+      // Score: the largest |q - 1| over the matching periods, q = computed / target.
       double score = 0.0;
       for (std::size_t j = 0; j < psa.size(); ++j) {
         if (!(psa[j] > 0.0) || !std::isfinite(psa[j]))

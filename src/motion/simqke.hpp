@@ -21,7 +21,7 @@
 // transform of the current motion (FFTW real-to-complex, zero-padded to nfft; phases kept;
 // complex-to-real back, first n samples), then the motion is baseline-corrected again.
 // Stop when every ratio is within the tolerance band or after max_iterations; the motion
-// with the smallest score max_j max(1 - q_j, (q_j - 1) / 2) (q = computed / target) is
+// with the smallest score max_j |q_j - 1| (q = computed / target) is
 // kept. A few phase sets do not converge at the longest periods (the correction of a
 // narrow band cannot move a late peak); when the best score exceeds accept_score the
 // phases are drawn again from the next Philox stream (deterministically) and the best
@@ -51,7 +51,7 @@ struct SimqkeSettings {
   int match_periods = 100;
   int match_extend = 5;
   int max_iterations = 35;  ///< correction iterations at most [-]
-  /// Stop when every q = computed / target satisfies 1 - tol <= q <= 1 + 2 tol [-].
+  /// Stop when every q = computed / target satisfies |q - 1| <= tol [-].
   double tolerance = 0.04;
   double max_frequency = 0.0;  ///< highest frequency with energy [Hz]; 0: 0.8 Nyquist
   int padding = 2;             ///< FFT length >= padding * samples [-]
@@ -60,7 +60,7 @@ struct SimqkeSettings {
   double relaxation = 1.6;
   /// A motion whose best score exceeds accept_score after the iterations is drawn again
   /// with the next phase set (stream 1, 2, ...), at most max_attempts sets in all; the best
-  /// motion over all attempts is returned. Score: max_j max(1 - q_j, (q_j - 1) / 2).
+  /// motion over all attempts is returned. Score: max_j |q_j - 1|.
   double accept_score = 0.095;
   int max_attempts = 4;
   /// An attempt ends early when its score has not improved for `stall` iterations and
