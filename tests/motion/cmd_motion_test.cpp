@@ -2,6 +2,7 @@
 // with one line on stderr.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -28,8 +29,11 @@ std::string slurp(const std::string& path) {
   return s.str();
 }
 
+// One directory per test process: ctest runs the tests of this file in parallel processes,
+// which must not share stdout.txt and stderr.txt.
 fs::path temp_dir() {
-  const fs::path d = fs::path(::testing::TempDir()) / "pound_cmd_motion";
+  const fs::path d = fs::path(::testing::TempDir()) /
+                     ("pound_cmd_motion_" + std::to_string(static_cast<long>(::getpid())));
   fs::create_directories(d);
   return d;
 }
