@@ -270,9 +270,12 @@ int main(int argc, char** argv) {
   if (argc > 2 && std::string(argv[2]) == "quick") {
     std::printf(
         "chapter 8, event: %.4f s cpu; pounding run %ld fine (%ld with a contact force) "
-        "+ %ld coarse; slab sleeps %ld, wakes %ld\n",
+        "+ %ld coarse; slab sleeps %ld, wakes %ld; dormant runs %ld, slab steps skipped %ld, "
+        "wakes %ld\n",
         t_se.cpu_s, se.counts_pounding.fine, se.counts_pounding.fine_in_contact,
-        se.counts_pounding.coarse, se.counts_pounding.slab_sleeps, se.counts_pounding.slab_wakes);
+        se.counts_pounding.coarse, se.counts_pounding.slab_sleeps, se.counts_pounding.slab_wakes,
+        se.counts_pounding.dormant_runs, se.counts_pounding.dormant_slab_steps,
+        se.counts_pounding.dormant_wakes);
     return 0;
   }
   const Timing t_sf = time_it([&] { sf = sears::simulate_sears_row(row, motion, fx); }, 1);
@@ -282,12 +285,14 @@ int main(int argc, char** argv) {
   std::printf(
       "\n1. chapter 8 example, sears N = 100, %s, %.2f s; event: fine %.3g s, coarse "
       "%.3g s; pounding run %ld fine (%ld with a contact force) + %ld coarse steps (bound "
-      "violations %ld; slabs put to sleep %ld times, %ld woken early), free run %ld fine + %ld "
-      "coarse\n",
+      "violations %ld; slabs put to sleep %ld times, %ld woken early; %ld of %ld slab coarse "
+      "steps skipped by dormant slabs), free run %ld fine + %ld coarse\n",
       motion.name.c_str(), motion.duration(), se.dt_s, se.coarse_dt_s, se.counts_pounding.fine,
       se.counts_pounding.fine_in_contact, se.counts_pounding.coarse,
       se.counts_pounding.bound_violations, se.counts_pounding.slab_sleeps,
-      se.counts_pounding.slab_wakes, se.counts_free.fine, se.counts_free.coarse);
+      se.counts_pounding.slab_wakes, se.counts_pounding.dormant_slab_steps,
+      se.counts_pounding.coarse * static_cast<long>(se.slabs.size()), se.counts_free.fine,
+      se.counts_free.coarse);
   header();
   line("sears ch8 (event)", t_se, t_sf, 1, compare(se.base, sf.base, ie, ifx));
   std::printf(

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <stdexcept>
 #include <unsupported/Eigen/MatrixFunctions>
 
 #include "core/error.hpp"
@@ -271,6 +272,53 @@ void ModalBank::set_free_step(double h) {
     const RecurrenceCoefficients c = recurrence_coefficients(omega_[i], xi_, h);
     Af_[i] = c.A, Bf_[i] = c.B, Avf_[i] = c.Av, Bvf_[i] = c.Bv;
   }
+  // Binary powers of the free recurrence [[A, B], [Av, Bv]] by repeated squaring, up to 2^40
+  // steps. A damped mode's powers decay (to zero for the high modes), so no entry overflows.
+  constexpr int kLevels = 41;
+  free_pow_.assign(kLevels, std::vector<double>(4 * static_cast<std::size_t>(modes_), 0.0));
+  for (int i = 0; i < modes_; ++i) {
+    double* m = &free_pow_[0][4 * i];
+    m[0] = Af_[i], m[1] = Bf_[i], m[2] = Avf_[i], m[3] = Bvf_[i];
+  }
+  for (int j = 1; j < kLevels; ++j)
+    for (int i = 0; i < modes_; ++i) {
+      const double* a = &free_pow_[j - 1][4 * i];
+      double* m = &free_pow_[j][4 * i];
+      m[0] = a[0] * a[0] + a[1] * a[2];
+      m[1] = a[0] * a[1] + a[1] * a[3];
+      m[2] = a[2] * a[0] + a[3] * a[2];
+      m[3] = a[2] * a[1] + a[3] * a[3];
+    }
+}
+
+void ModalBank::advance_free(long k, StepResult& out) {
+  if (k < 0 || h_free_ <= 0.0 || (k >> (free_pow_.size() - 1)) > 1)
+    throw std::logic_error("ModalBank::advance_free: no free step set, or k out of range");
+  for (std::size_t j = 0; k != 0; ++j, k >>= 1) {
+    if (!(k & 1)) continue;
+    const double* m = free_pow_[j].data();
+    for (int i = 0; i < modes_; ++i) {
+      const double q = q_[i], v = v_[i];
+      q_[i] = m[4 * i] * q + m[4 * i + 1] * v;
+      v_[i] = m[4 * i + 2] * q + m[4 * i + 3] * v;
+    }
+  }
+  double sq[4] = {0, 0, 0, 0}, sa[4] = {0, 0, 0, 0};
+  for (int i = 0; i < modes_; ++i) {
+    sq[i % 4] += q_[i];
+    sa[i % 4] -= c1_[i] * v_[i] + k1_[i] * q_[i];
+  }
+  lane_faces(sq, out.disp);
+  lane_faces(sa, out.accel);
+}
+
+double ModalBank::free_accel_bound() const {
+  double b = 0.0;
+  for (int i = 0; i < modes(); ++i) {
+    const double r = v_[i] / omega_[i];
+    b += omega_[i] * omega_[i] * std::sqrt(q_[i] * q_[i] + r * r);
+  }
+  return b * (1.0 + 2.0 * xi_);
 }
 
 void ModalBank::step_free() {

@@ -113,6 +113,14 @@ class ModalBank {
   /// since a free damped mode keeps |q_n| <= R_n and |q_n'| <= w_n R_n (its energy
   /// (q_n'^2 + w_n^2 q_n^2)/2 = w_n^2 R_n^2 / 2 cannot grow).
   double face_motion_bound(double h) const;
+  /// Bound on |internal acceleration| of any section for all later free motion [m/s^2]:
+  /// sum_n w_n^2 R_n (1 + 2 xi_s), since |q_n''| = |2 xi_s w_n q_n' + w_n^2 q_n|.
+  double free_accel_bound() const;
+  /// k free steps of free_step() at once (dormant slabs, docs/speed.md): the per-mode 2 x 2
+  /// free recurrence raised to the power k by its binary powers (formed by squaring in
+  /// set_free_step), so O(N log k). Equals k calls of step_free() up to round-off; fills `out`
+  /// as step_free(out) does. No allocation.
+  void advance_free(long k, StepResult& out);
 
  private:
   Slab slab_;
@@ -128,6 +136,8 @@ class ModalBank {
   Flexibility flex_;
   double h_free_ = 0.0;
   std::vector<double> Af_, Bf_, Avf_, Bvf_;  // free recurrence for h_free_
+  // Its binary powers: entry [j][4 i + (0..3)] = (A, B, Av, Bv) of mode i for 2^j free steps.
+  std::vector<std::vector<double>> free_pow_;
 };
 
 }  // namespace pound::sears

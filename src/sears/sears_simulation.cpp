@@ -337,6 +337,50 @@ SearsRowResult solve_sears_row(const SearsRowProblem& p, const SearsRowModel& mo
       pred_valid[k] = 1;
     }
   };
+  // Dormant slabs (event stepping, docs/speed.md): during a run of coarse steps a slab whose
+  // free vibration can raise neither its peak accelerations nor an overlap is not stepped. A
+  // free mode keeps R_n, so for all later free motion the faces stay within swing = 2 sum R_n
+  // of their values when the slab went dormant (dw0), and the internal accelerations within
+  // free_accel_bound(). A site with a dormant slab takes the upper bound of its overlap; the
+  // slab wakes (ModalBank::advance_free over the skipped coarse steps) as soon as a bound does
+  // not settle a question: the coarse-step test, a possible overlap, a possible new peak, or
+  // a fine step.
+  std::vector<char> dormant(nf, 0), try_dormant(nf, 0);
+  std::vector<long> dormant_steps(nf, 0);
+  std::vector<SectionValues> dw0(nf);
+  std::vector<double> swing(nf, 0.0), accel_bound(nf, 0.0);
+  int n_dormant = 0;
+  long coarse_in_run = 0;  // coarse steps since the last fine step
+  auto wake_dormant = [&](int k) {
+    L.banks[k].advance_free(dormant_steps[k], fused[k]);
+    disp[k] = fused[k].disp;
+    accel[k] = fused[k].accel;
+    pred_valid[k] = 0;
+    dormant[k] = 0;
+    dormant_steps[k] = 0;
+    --n_dormant;
+    ++out.counts.dormant_wakes;
+  };
+  auto wake_all_dormant = [&]() {
+    for (int k = 0; k < nf; ++k)
+      if (dormant[k]) wake_dormant(k);
+  };
+  auto site_dormant = [&](int s) {
+    return dormant[L.site_left_floor[s]] || dormant[L.site_right_floor[s]];
+  };
+  // Overlap now at site s; with a dormant slab, its upper bound.
+  auto overlap_bound = [&](int s) {
+    const int kl = L.site_left_floor[s], kr = L.site_right_floor[s];
+    const double wl = dormant[kl] ? dw0[kl].right + swing[kl] : disp[kl].right;
+    const double wr = dormant[kr] ? dw0[kr].left - swing[kr] : disp[kr].left;
+    return u(a.sites[s].dof_left) - u(a.sites[s].dof_right) + wl - wr - a.sites[s].gap;
+  };
+  auto wake_site = [&](int s) {  // both slabs of site s awake, delta(s) exact
+    if (dormant[L.site_left_floor[s]]) wake_dormant(L.site_left_floor[s]);
+    if (dormant[L.site_right_floor[s]]) wake_dormant(L.site_right_floor[s]);
+    delta(s) = overlap_now(s);
+  };
+
   auto coarse_step = [&](double t_next) {  // F = 0 at both ends
     newmark_predict(hc, nm_coarse, t_next);
     newmark_update(hc);
@@ -346,6 +390,11 @@ SearsRowResult solve_sears_row(const SearsRowProblem& p, const SearsRowModel& mo
     // acceleration, as initialised): nothing to step.
     if (p.contacts)
       for (int k = 0; k < nf; ++k) {
+        if (dormant[k]) {
+          ++dormant_steps[k];
+          ++out.counts.dormant_slab_steps;
+          continue;
+        }
         L.banks[k].step_free(fused[k]);
         disp[k] = fused[k].disp;
         accel[k] = fused[k].accel;
@@ -358,24 +407,35 @@ SearsRowResult solve_sears_row(const SearsRowProblem& p, const SearsRowModel& mo
   // internal vibration of both slabs), times kCoarseBoundSafety, stays below the gap.
   auto contact_free = [&]() {
     if (!p.contacts || ns == 0) return true;
-    for (int s = 0; s < ns; ++s)
-      if (in_contact[s] || F(s) != 0.0 || !(delta(s) < 0.0)) return false;
+    // A test that fails at a site with a dormant slab is repeated with the site's exact overlap.
+    auto holds = [&](auto&& test) {
+      for (int s = 0; s < ns; ++s) {
+        if (test(s)) continue;
+        if (!site_dormant(s)) return false;
+        wake_site(s);
+        if (!test(s)) return false;
+      }
+      return true;
+    };
+    if (!holds([&](int s) { return !in_contact[s] && F(s) == 0.0 && delta(s) < 0.0; }))
+      return false;
     bound.set_state(u, v);
-    for (int s = 0; s < ns; ++s)
-      if (!(kCoarseBoundSafety * bound.approach(a.sites[s].dof_left, a.sites[s].dof_right, v, hc) <
-            -delta(s)))
-        return false;
+    if (!holds([&](int s) {
+          return kCoarseBoundSafety *
+                     bound.approach(a.sites[s].dof_left, a.sites[s].dof_right, v, hc) <
+                 -delta(s);
+        }))
+      return false;
     // Free modes only lose energy, so the bound taken after the last fine step stays valid
-    // through every following coarse step.
+    // through every following coarse step (dormant or not).
     if (!modal_bound_valid)
       for (int k = 0; k < nf; ++k) modal_bound[k] = L.banks[k].face_motion_bound(hc);
     modal_bound_valid = true;
-    for (int s = 0; s < ns; ++s) {
+    return holds([&](int s) {
       const double b = bound.approach(a.sites[s].dof_left, a.sites[s].dof_right, v, hc) +
                        modal_bound[L.site_left_floor[s]] + modal_bound[L.site_right_floor[s]];
-      if (!(kCoarseBoundSafety * b < -delta(s))) return false;
-    }
-    return true;
+      return kCoarseBoundSafety * b < -delta(s);
+    });
   };
   const long steps = static_cast<long>(std::ceil(p.t_end / dt - 1e-9));
 
@@ -383,6 +443,8 @@ SearsRowResult solve_sears_row(const SearsRowProblem& p, const SearsRowModel& mo
   while (i < steps) {
     const bool on_grid = event && i % st.ratio == 0 && i + st.ratio <= steps;
     const bool coarse = on_grid && contact_free();
+    if (!coarse && n_dormant > 0) wake_all_dormant();
+    if (!coarse) coarse_in_run = 0;
     if (on_grid && !coarse && p.contacts && model.sleeping_slabs) fall_asleep();
     const double h = coarse ? hc : dt;
     i += coarse ? st.ratio : 1;
@@ -403,10 +465,12 @@ SearsRowResult solve_sears_row(const SearsRowProblem& p, const SearsRowModel& mo
 
     // Contact sites: events, peaks, impulse (force linear over the step).
     for (int s = 0; s < ns; ++s) {
-      if (guarded[s]) continue;  // no force and no contact (shown by guards_hold)
-      const double d = u(a.sites[s].dof_left) - u(a.sites[s].dof_right) +
-                       disp[L.site_left_floor[s]].right - disp[L.site_right_floor[s]].left -
-                       a.sites[s].gap;
+      if (guarded[s]) continue;     // no force and no contact (shown by guards_hold)
+      double d = overlap_bound(s);  // exact unless a slab is dormant
+      if (site_dormant(s) && !(d < 0.0)) {
+        wake_site(s);
+        d = delta(s);
+      }
       if (coarse && p.contacts && d > 0.0) ++out.counts.bound_violations;
       SiteResult& sr = r.sites[s];
       const double step_impulse = 0.5 * (F(s) + F_next(s)) * h;
@@ -447,15 +511,35 @@ SearsRowResult solve_sears_row(const SearsRowProblem& p, const SearsRowModel& mo
         r.peak_abs_accel(k) = std::max(r.peak_abs_accel(k), std::fabs(acc(k) + ag));
       }
     // Slab faces and centres: floor (rigid) + internal acceleration (Th. 7.5, 8.3).
+    if (coarse) ++coarse_in_run;
     for (int k = 0; k < nf; ++k) {
       if (asleep[k]) continue;  // sampled again when it wakes or the interval ends
-      const SectionValues& ai = accel[k];
       const double a0 = acc(L.floors[k].dof) + ag;
+      SlabPeaks& pk = out.slabs[k];
+      const double lowest_peak = std::min(pk.face_accel, pk.centre_accel);
+      if (dormant[k]) {
+        if (std::fabs(a0) + accel_bound[k] <= lowest_peak) continue;  // no new peak possible
+        wake_dormant(k);
+      }
+      const SectionValues& ai = accel[k];
       double face = 0.0;
       if (L.floors[k].site_left >= 0) face = std::max(face, std::fabs(a0 + ai.left));
       if (L.floors[k].site_right >= 0) face = std::max(face, std::fabs(a0 + ai.right));
-      out.slabs[k].face_accel = std::max(out.slabs[k].face_accel, face);
-      out.slabs[k].centre_accel = std::max(out.slabs[k].centre_accel, std::fabs(a0 + ai.centre));
+      pk.face_accel = std::max(pk.face_accel, face);
+      pk.centre_accel = std::max(pk.centre_accel, std::fabs(a0 + ai.centre));
+      // After a coarse step (and every kDormancyRetry coarse steps of a run), an awake slab
+      // whose free vibration cannot raise its peaks now goes dormant.
+      if (coarse && p.contacts && model.sleeping_slabs && coarse_in_run % kDormancyRetry == 1) {
+        accel_bound[k] = L.banks[k].free_accel_bound();
+        if (std::fabs(a0) + accel_bound[k] <= std::min(pk.face_accel, pk.centre_accel)) {
+          dormant[k] = 1;
+          dormant_steps[k] = 0;
+          dw0[k] = disp[k];
+          swing[k] = 2.0 * L.banks[k].free_face_bound();
+          ++n_dormant;
+          ++out.counts.dormant_runs;
+        }
+      }
     }
     if (p.record_history) {
       r.history.t.push_back(t_next);
@@ -464,6 +548,7 @@ SearsRowResult solve_sears_row(const SearsRowProblem& p, const SearsRowModel& mo
       r.history.force.push_back(F);
     }
   }
+  wake_all_dormant();
   for (auto& c : out.contacts) count_impacts(c, model.impact_force_fraction);
   r.u_end = u;
   r.v_end = v;

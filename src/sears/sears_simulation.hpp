@@ -60,6 +60,9 @@ inline constexpr double kCoarseBoundSafety = 2.0;
 /// A sleeping slab's site keeps F = 0 only while the bound of its overlap is below
 /// -kGuardRoundOff times the magnitudes that enter it (round-off of the awake path) [-].
 inline constexpr double kGuardRoundOff = 1e-9;
+/// An awake slab is considered for dormancy after the first coarse step of a run and then every
+/// kDormancyRetry coarse steps (its bounds cost about one free step) [-].
+inline constexpr long kDormancyRetry = 32;
 
 struct SearsRowModel {
   std::vector<FloorSlabProperties> slabs;  ///< one per building of the row
@@ -76,8 +79,10 @@ struct SearsRowModel {
   double dt_s = 0.0;                                             ///< (fine) step; 0 = automatic
   SearsStepping stepping = SearsStepping::event;
   /// Event stepping: slabs with no force at the start of a run of fine steps sleep (are not
-  /// stepped) while a bound shows their sites stay apart (docs/speed.md). false: every slab
-  /// takes every fine step (for comparison; the results agree to round-off).
+  /// stepped) while a bound shows their sites stay apart, and in runs of coarse steps slabs go
+  /// dormant while bounds show that their free vibration changes no decision and no peak
+  /// (docs/speed.md). false: every slab takes every step (for comparison; the results agree to
+  /// round-off).
   bool sleeping_slabs = true;
   /// Approach velocity used for the Hertz contact time scale of the step rule [m/s].
   double hertz_reference_velocity = 1.0;
@@ -131,12 +136,15 @@ struct SearsRowProblem {
 
 /// How a run was stepped.
 struct SearsStepCounts {
-  long fine = 0;              ///< steps of the fine (step rule) size
-  long fine_in_contact = 0;   ///< fine steps with a contact force at either end
-  long coarse = 0;            ///< coarse steps (event stepping)
-  long bound_violations = 0;  ///< coarse steps that ended with an overlap (must stay 0)
-  long slab_sleeps = 0;       ///< slabs put to sleep for a run of fine steps (event stepping)
-  long slab_wakes = 0;        ///< sleeping slabs woken before the end of their interval
+  long fine = 0;                ///< steps of the fine (step rule) size
+  long fine_in_contact = 0;     ///< fine steps with a contact force at either end
+  long coarse = 0;              ///< coarse steps (event stepping)
+  long bound_violations = 0;    ///< coarse steps that ended with an overlap (must stay 0)
+  long slab_sleeps = 0;         ///< slabs put to sleep for a run of fine steps (event stepping)
+  long slab_wakes = 0;          ///< sleeping slabs woken before the end of their interval
+  long dormant_runs = 0;        ///< slabs gone dormant in runs of coarse steps
+  long dormant_slab_steps = 0;  ///< coarse steps skipped by dormant slabs (per slab)
+  long dormant_wakes = 0;       ///< dormant slabs woken (a bound did not settle a question)
 };
 
 struct SearsRowResult {

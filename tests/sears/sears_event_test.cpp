@@ -67,6 +67,53 @@ TEST(SearsEvent, ModalFaceBoundHoldsForFreeVibrationAndFreeStepIsExact) {
   }
 }
 
+TEST(SearsEvent, DormantSlabBoundsHoldAndAdvanceFreeIsRepeatedFreeSteps) {
+  // After a random loaded history (as above), for 3000 free coarse steps: the faces stay within
+  // 2 sum R_n of where they were (free_face_bound), every section's internal acceleration
+  // within free_accel_bound(), and advance_free(k) equals k calls of step_free() (the binary
+  // powers of the recurrence), for k = 1, 37 and 3000.
+  const Slab slab{12.0, 21e9, 2500.0, 0.15, 29e3, 0.125};
+  const double dt = 2e-5, hc = 18 * dt;
+  std::mt19937 gen(11);
+  std::uniform_real_distribution<double> load(-5e5, 5e5);
+  for (int trial = 0; trial < 5; ++trial) {
+    ModalBank bank(slab, 100, 0.05, dt);
+    bank.set_free_step(hc);
+    EndLoads a{load(gen), load(gen)}, b;
+    for (int i = 0; i < 40 + 15 * trial; ++i) {
+      b = EndLoads{load(gen), load(gen)};
+      bank.step(a, b);
+      a = b;
+    }
+    bank.step(a, EndLoads{});
+    const ModalBank start = bank;
+    const SectionValues w0 = bank.displacement();
+    const double swing = 2.0 * bank.free_face_bound(), abound = bank.free_accel_bound();
+    double moved = 0.0, accel = 0.0;
+    ModalBank::StepResult r;
+    for (long k = 1; k <= 3000; ++k) {
+      bank.step_free(r);
+      moved =
+          std::max({moved, std::fabs(r.disp.left - w0.left), std::fabs(r.disp.right - w0.right)});
+      accel = std::max(
+          {accel, std::fabs(r.accel.left), std::fabs(r.accel.right), std::fabs(r.accel.centre)});
+      if (k == 1 || k == 37 || k == 3000) {
+        ModalBank jump = start;
+        ModalBank::StepResult rj;
+        jump.advance_free(k, rj);
+        const double scale = std::fabs(w0.left) + std::fabs(w0.right) + swing;
+        EXPECT_NEAR(rj.disp.left, r.disp.left, 1e-10 * scale) << trial << " " << k;
+        EXPECT_NEAR(rj.disp.right, r.disp.right, 1e-10 * scale) << trial << " " << k;
+        EXPECT_NEAR(rj.accel.centre, r.accel.centre, 1e-10 * abound) << trial << " " << k;
+      }
+    }
+    EXPECT_LE(moved, swing) << trial;
+    EXPECT_GT(moved, 0.05 * swing) << trial;  // not vacuous
+    EXPECT_LE(accel, abound) << trial;
+    EXPECT_GT(accel, 0.01 * abound) << trial;
+  }
+}
+
 TEST(SearsEvent, TranslationBoundHoldsUnderGroundMotion) {
   // The chapter 8 pair (no contacts), random states, a 2.5 Hz ground shaking of 3 m/s^2:
   // the increase of u_L - u_R at every site over one coarse step never exceeds the bound.
@@ -221,7 +268,8 @@ TEST(SearsEvent, SleepingSlabsGiveTheResultsOfSteppingEverySlab) {
   // The 8 s chapter 8 study with and without sleeping slabs (docs/speed.md): a slab with no
   // force at the start of a run of fine steps is not stepped until a site's overlap bound
   // reaches zero. The two paths differ only by round-off (the sleeping slab is brought forward
-  // by one exact free step instead of `ratio` unloaded fine steps).
+  // by one exact free step instead of `ratio` unloaded fine steps; a dormant slab by the binary
+  // powers of its free recurrence instead of one free step per coarse step).
   StudyRun s = read_study("ch8-five-three.ini");
   s.model.sleeping_slabs = false;
   const SearsRowSimulation all = simulate_sears_row(s.row, s.motion, s.model);
@@ -231,6 +279,11 @@ TEST(SearsEvent, SleepingSlabsGiveTheResultsOfSteppingEverySlab) {
   // Both branches ran: slabs slept, and guards woke some of them before their interval ended.
   EXPECT_GT(lazy.counts_pounding.slab_sleeps, 1000);
   EXPECT_GT(lazy.counts_pounding.slab_wakes, 100);
+  // Dormant slabs in runs of coarse steps: many skipped steps, and wakes.
+  EXPECT_EQ(all.counts_pounding.dormant_runs, 0);
+  EXPECT_GT(lazy.counts_pounding.dormant_runs, 100);
+  EXPECT_GT(lazy.counts_pounding.dormant_slab_steps, 10 * lazy.counts_pounding.dormant_runs);
+  EXPECT_GT(lazy.counts_pounding.dormant_wakes, 100);
   EXPECT_EQ(lazy.counts_pounding.fine, all.counts_pounding.fine);
   EXPECT_EQ(lazy.counts_pounding.coarse, all.counts_pounding.coarse);
   for (std::size_t i = 0; i < all.base.floors.size(); ++i) {
