@@ -345,7 +345,7 @@ SearsRowResult solve_sears_row(const SearsRowProblem& p, const SearsRowModel& mo
   // slab wakes (ModalBank::advance_free over the skipped coarse steps) as soon as a bound does
   // not settle a question: the coarse-step test, a possible overlap, a possible new peak, or
   // a fine step.
-  std::vector<char> dormant(nf, 0), try_dormant(nf, 0);
+  std::vector<char> dormant(nf, 0);
   std::vector<long> dormant_steps(nf, 0);
   std::vector<SectionValues> dw0(nf);
   std::vector<double> swing(nf, 0.0), accel_bound(nf, 0.0);
