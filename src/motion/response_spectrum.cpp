@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <string>
 
 #include "core/error.hpp"
+#include "core/vec4.hpp"
 
 namespace pound {
 namespace {
@@ -119,32 +119,13 @@ SpectrumCalculator::SpectrumCalculator(std::vector<double> periods, double dampi
 
 namespace {
 
-// Four doubles as one vector (GCC/Clang vector extension), as in src/sears/modal_bank.cpp:
-// four oscillators side by side. The helpers are always inlined into the kernel (a call would
-// pass the 32-byte vector with the default ABI into the AVX2 clone).
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic ignored "-Wpsabi"
-#endif
-typedef double V4 __attribute__((vector_size(32)));
+// Four oscillators side by side as one simd::V4 (core/vec4.hpp).
+using simd::load;
+using simd::store;
+using simd::V4;
+using simd::vabs;
+using simd::vmax;
 static_assert(kLanes == 4, "the kernel works on blocks of four oscillators");
-__attribute__((always_inline)) inline V4 load(const double* p) {
-  V4 r;
-  std::memcpy(&r, p, sizeof r);
-  return r;
-}
-__attribute__((always_inline)) inline void store(double* p, const V4& x) {
-  std::memcpy(p, &x, sizeof x);
-}
-typedef long long I4 __attribute__((vector_size(32)));
-__attribute__((always_inline)) inline V4 vabs(const V4& x) {  // clears the sign bits, like fabs
-  const I4 magnitude = {0x7fffffffffffffffLL, 0x7fffffffffffffffLL, 0x7fffffffffffffffLL,
-                        0x7fffffffffffffffLL};
-  return (V4)((I4)x & magnitude);
-}
-// std::max(m, x) lane by lane: (m < x) ? x : m.
-__attribute__((always_inline)) inline V4 vmax(const V4& m, const V4& x) {
-  return m < x ? x : m;
-}
 
 // The oscillators of one sub-step group: lanes [begin, end) of the flat arrays.
 struct KernelGroup {

@@ -3,11 +3,11 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <stdexcept>
 #include <unsupported/Eigen/MatrixFunctions>
 
 #include "core/error.hpp"
+#include "core/vec4.hpp"
 
 namespace pound::sears {
 namespace {
@@ -24,22 +24,10 @@ struct FusedArrays {
   const double *A, *B, *C, *D, *Av, *Bv, *Cv, *Dv, *c1, *k1;
   int padded;
 };
-// Four doubles as one vector (GCC/Clang vector extension): one block of four modes. The helpers
-// are always inlined into the kernel below (also at -O0, where a call would pass the 32-byte
-// vector with the default ABI into the AVX2 clone and crash), so GCC's note on the AVX
-// argument ABI does not apply.
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic ignored "-Wpsabi"
-#endif
-typedef double V4 __attribute__((vector_size(32)));
-__attribute__((always_inline)) inline V4 load(const double* p) {
-  V4 r;
-  std::memcpy(&r, p, sizeof r);
-  return r;
-}
-__attribute__((always_inline)) inline void store(double* p, V4 x) {
-  std::memcpy(p, &x, sizeof x);
-}
+// One block of four modes is one simd::V4 (core/vec4.hpp).
+using simd::load;
+using simd::store;
+using simd::V4;
 
 // One step of every mode with loads linear from f0 to f1 (per lane), and the lane sums of the
 // new q (s[0..3]), of -(2 xi w q' + w^2 q) (s[4..7]) and of the next prediction A q + B q' + C f1
