@@ -6,7 +6,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <string>
+
+#include "../support/scratch_dir.hpp"
 
 namespace {
 
@@ -18,8 +21,7 @@ struct CmdResult {
 };
 
 CmdResult run_pound(const std::string& args) {
-  const fs::path dir = fs::temp_directory_path() / ("pound_cli_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
+  const fs::path dir = pound::test::process_scratch_dir().path();
   const std::string out = (dir / "out.txt").string(), err = (dir / "err.txt").string();
   const std::string cmd = std::string(POUND_BINARY) + " " + args + " >" + out + " 2>" + err;
   const int status = std::system(cmd.c_str());
@@ -34,14 +36,11 @@ CmdResult run_pound(const std::string& args) {
 class Cli : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("pound_cli_case_" + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
+    scratch_ = std::make_unique<pound::test::ScratchDir>("pound_cli_case_");
+    dir_ = scratch_->path();
     motion_ = std::string(POUND_SOURCE_DIR) + "/motions/elcentro-1940-ns.dat";
   }
-  void TearDown() override { fs::remove_all(dir_); }
+  void TearDown() override { scratch_.reset(); }
 
   // A valid two-building study with one line replaced.
   std::string study(const std::string& replace_from = "", const std::string& replace_to = "") {
@@ -75,6 +74,7 @@ class Cli : public ::testing::Test {
       EXPECT_EQ(entry.path().filename().string().find("hist.h5"), std::string::npos);
   }
 
+  std::unique_ptr<pound::test::ScratchDir> scratch_;
   fs::path dir_;
   std::string motion_;
 };

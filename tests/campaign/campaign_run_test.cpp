@@ -14,19 +14,16 @@
 #include <thread>
 #include <vector>
 
+#include "../support/scratch_dir.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
 
 const std::string kStudy = std::string(POUND_SOURCE_DIR) + "/studies/campaign-smoke.ini";
 
-std::string dir() {
-  static const std::string d = [] {
-    const fs::path p = fs::temp_directory_path() / ("pound_campaign_" + std::to_string(::getpid()));
-    fs::create_directories(p);
-    return p.string();
-  }();
-  return d;
+const std::string& dir() {
+  return pound::test::process_scratch_dir().path();
 }
 
 int sh(const std::string& cmd) {

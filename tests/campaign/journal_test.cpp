@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <fstream>
 
+#include "../support/scratch_dir.hpp"
 #include "core/error.hpp"
 #include "io/options.hpp"
 
@@ -60,7 +61,7 @@ TEST(Journal, RecordsRoundTripAndATornTailIsDropped) {
   const CampaignStudy st = tiny_study();
   const RecordLayout layout(st);
   EXPECT_EQ(layout.values(), 2u + 1u + 6u * 2u * 2u + 2u * 1u * 1u + 2u);
-  const std::string path = testing::TempDir() + "/journal_" + std::to_string(::getpid());
+  const std::string path = test::process_scratch_dir() / "journal";
   {
     JournalWriter w(path, st, false);
     for (long id : {0L, 1L, 2L}) {
@@ -93,7 +94,7 @@ TEST(Journal, RecordsRoundTripAndATornTailIsDropped) {
 
 TEST(Journal, ADifferentStudyIsNotResumed) {
   const CampaignStudy st = tiny_study(5), other = tiny_study(6);
-  const std::string path = testing::TempDir() + "/journal2_" + std::to_string(::getpid());
+  const std::string path = test::process_scratch_dir() / "journal2";
   { JournalWriter w(path, st, false); }
   EXPECT_THROW(read_journal(path, other), InputError);
   std::remove(path.c_str());

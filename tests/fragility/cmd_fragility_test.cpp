@@ -10,18 +10,14 @@
 #include <sstream>
 #include <string>
 
+#include "../support/scratch_dir.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
 
-std::string dir() {
-  static const std::string d = [] {
-    const fs::path p =
-        fs::temp_directory_path() / ("pound_fragility_" + std::to_string(::getpid()));
-    fs::create_directories(p);
-    return p.string();
-  }();
-  return d;
+const std::string& dir() {
+  return pound::test::process_scratch_dir().path();
 }
 
 int sh(const std::string& cmd) {

@@ -10,6 +10,7 @@
 #include <sstream>
 #include <string>
 
+#include "../support/scratch_dir.hpp"
 #include "motion/motion_reader.hpp"
 
 namespace pound {
@@ -29,13 +30,10 @@ std::string slurp(const std::string& path) {
   return s.str();
 }
 
-// One directory per test process: ctest runs the tests of this file in parallel processes,
-// which must not share stdout.txt and stderr.txt.
+// One fresh directory per test process: ctest runs the tests of this file in parallel
+// processes, which must not share stdout.txt and stderr.txt.
 fs::path temp_dir() {
-  const fs::path d = fs::path(::testing::TempDir()) /
-                     ("pound_cmd_motion_" + std::to_string(static_cast<long>(::getpid())));
-  fs::create_directories(d);
-  return d;
+  return test::process_scratch_dir().path();
 }
 
 CmdResult run(const std::string& args) {

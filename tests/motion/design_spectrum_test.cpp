@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "../support/scratch_dir.hpp"
 #include "core/error.hpp"
 #include "motion/ground_motion.hpp"
 #include "motion/spectrum_asce7.hpp"
@@ -114,8 +115,7 @@ TEST(MotionDesignSpectrum, JapanBedrockAndSurface) {
 }
 
 TEST(MotionDesignSpectrum, TableLogLog) {
-  const auto dir = std::filesystem::path(::testing::TempDir());
-  const std::string p = (dir / "pound_table_spectrum.txt").string();
+  const std::string p = test::process_scratch_dir() / "pound_table_spectrum.txt";
   std::ofstream(p) << "# T [s]  Sa [g]\n0.1 1.0\n1.0 0.1\n2.0 0.1\n";
   const TableSpectrum s = read_spectrum_table(p);
   EXPECT_NEAR(s.sa(0.5) / g, 0.2, 1e-12);  // Sa ~ 1/T between the first two points

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <string>
 
+#include "../support/scratch_dir.hpp"
 #include "core/error.hpp"
 
 namespace pound {
@@ -17,9 +18,7 @@ namespace {
 const std::string kElCentro = std::string(POUND_SOURCE_DIR) + "/motions/elcentro-1940-ns.dat";
 
 std::string write_temp(const std::string& name, const std::string& text) {
-  const auto dir = std::filesystem::path(::testing::TempDir()) / "pound_motion_reader";
-  std::filesystem::create_directories(dir);
-  const std::string path = (dir / name).string();
+  const std::string path = test::process_scratch_dir() / name;
   std::ofstream(path) << text;
   return path;
 }
