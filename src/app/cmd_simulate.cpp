@@ -132,6 +132,16 @@ int run_simulate(int argc, const char* const* argv) {
   RowSimulationOptions so;
   so.extra_time = opt.get_nonnegative("simulation.extra_time");
   so.record_history = opt.given("histories");
+  if (is_sears) {
+    // The step limits need the motion: a too large --dt fails here, before any output.
+    const std::string dt_key = opt.given("dt") ? "dt" : "sears.dt";
+    try {
+      sears::sears_row_steps(row, &motion, sears_model);
+    } catch (const InputError& e) {
+      if (!opt.given(dt_key)) throw;
+      throw opt.invalid(dt_key, e.what());
+    }
+  }
   std::fprintf(stderr,
                "pound simulate: %zu buildings, contact model %s, motion %s (%zu samples at %g s, "
                "PGA %.4g g)\n",

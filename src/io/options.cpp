@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <boost/program_options.hpp>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -33,14 +34,19 @@ bool key_matches(const std::string& pattern, const std::string& key) {
   return i == pattern.size() && j == key.size();
 }
 
-// Expands a pattern for command-line registration (building1..building9).
-std::vector<std::string> expand(const std::string& pattern) {
-  const auto p = pattern.find('#');
-  if (p == std::string::npos) return {pattern};
+// The names to register on the command line for a pattern: the pattern itself when it has no
+// '#', else every "--name" or "--name=value" in argv that matches it (building12.masses too).
+std::vector<std::string> command_line_names(const std::string& pattern, int argc,
+                                            const char* const* argv) {
+  if (pattern.find('#') == std::string::npos) return {pattern};
   std::vector<std::string> out;
-  for (int n = 1; n <= 9; ++n) {
-    for (const auto& rest : expand(pattern.substr(p + 1)))
-      out.push_back(pattern.substr(0, p) + std::to_string(n) + rest);
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a.size() < 3 || a.compare(0, 2, "--") != 0) continue;
+    const std::string name =
+        a.substr(2, a.find('=') == std::string::npos ? std::string::npos : a.find('=') - 2);
+    if (key_matches(pattern, name) && std::find(out.begin(), out.end(), name) == out.end())
+      out.push_back(name);
   }
   return out;
 }
@@ -106,7 +112,7 @@ void Options::parse(int argc, const char* const* argv) {
   po::options_description desc;
   desc.add_options()("help,h", "")("config", po::value<std::string>(), "");
   for (const auto& s : specs_) {
-    for (const auto& name : expand(s.key)) {
+    for (const auto& name : command_line_names(s.key, argc, argv)) {
       if (s.flag)
         desc.add_options()(name.c_str(), po::bool_switch(), "");
       else
@@ -122,7 +128,7 @@ void Options::parse(int argc, const char* const* argv) {
             .run(),
         vm);
   } catch (const po::error& e) {
-    throw InputError(command_ + ": command line: " + e.what() + " (see 'pound " + command_ +
+    throw InputError(std::string("command line: ") + e.what() + " (see 'pound " + command_ +
                      " --help')");
   }
   help_ = vm.count("help") > 0;
@@ -185,13 +191,38 @@ InputError Options::invalid(const std::string& key, const std::string& valid) co
   return InputError(msg + ": " + valid);
 }
 
+std::string Options::meaning(const OptionSpec& s, const std::string& key) {
+  std::string help = s.help;
+  // The number standing for the pattern's only '#', read from the key.
+  const auto p = s.key.find('#');
+  if (p != std::string::npos && s.key.find('#', p + 1) == std::string::npos &&
+      key.compare(0, p, s.key, 0, p) == 0) {
+    std::size_t end = p;
+    while (end < key.size() && std::isdigit(static_cast<unsigned char>(key[end]))) ++end;
+    if (end > p && end - p < 9) {
+      const long n = std::stol(key.substr(p, end - p));
+      std::string out;
+      for (std::size_t i = 0; i < help.size(); ++i) {
+        if (help[i] != '#') {
+          out += help[i];
+        } else if (help.compare(i, 3, "#+1") == 0) {
+          out += std::to_string(n + 1);
+          i += 2;
+        } else {
+          out += std::to_string(n);
+        }
+      }
+      help = out;
+    }
+  }
+  return help + (s.unit.empty() || s.unit == "-" ? "" : " [" + s.unit + "]");
+}
+
 std::string Options::get_string(const std::string& key) const {
   if (const auto* v = lookup(key)) return v->text;
   const auto* s = find_spec(key);
   if (!s) throw std::logic_error("option '" + key + "' was never declared");
-  if (s->default_value.empty())
-    throw InputError(where(key) + ": missing; " + s->help +
-                     (s->unit.empty() ? "" : " [" + s->unit + "]"));
+  if (s->default_value.empty()) throw InputError(where(key) + ": missing; " + meaning(*s, key));
   return s->default_value;
 }
 
@@ -204,7 +235,8 @@ std::string Options::get_path(const std::string& key) const {
 }
 
 double Options::get_double(const std::string& key) const {
-  return with_expectation(key, [&] { return parse_number(get_string(key), where(key)); });
+  const std::string text = get_string(key);  // its own "missing" error already says what
+  return with_expectation(key, [&] { return parse_number(text, where(key)); });
 }
 
 long Options::get_int(const std::string& key) const {
@@ -214,7 +246,8 @@ long Options::get_int(const std::string& key) const {
 }
 
 std::vector<double> Options::get_doubles(const std::string& key) const {
-  return with_expectation(key, [&] { return parse_number_list(get_string(key), where(key)); });
+  const std::string text = get_string(key);
+  return with_expectation(key, [&] { return parse_number_list(text, where(key)); });
 }
 
 double Options::get_positive(const std::string& key) const {

@@ -86,11 +86,13 @@ class Options {
     } catch (const InputError& e) {
       const auto* s = find_spec(key);
       if (!s) throw;
-      throw InputError(std::string(e.what()) + "; expected " + s->help +
-                       (s->unit.empty() || s->unit == "-" ? "" : " [" + s->unit + "]"));
+      throw InputError(std::string(e.what()) + "; expected " + meaning(*s, key));
     }
   }
   std::string valid_keys_hint(const std::string& key) const;
+  /// The spec's help and unit for this key, '#' in the help replaced by the key's number
+  /// ("gap between building # and #+1" for pair2.gap reads "building 2 and 3").
+  static std::string meaning(const OptionSpec& s, const std::string& key);
 
   std::string command_, summary_, prefix_;
   std::vector<OptionSpec> specs_;

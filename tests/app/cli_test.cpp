@@ -124,6 +124,12 @@ TEST_F(Cli, MotionFileWithNonNumericLine) {
   expect_error(study(motion_, bad + "\nunits = g"), {"bad.txt:3"});
 }
 
+TEST_F(Cli, SearsStepTooLargeIsOneLineBeforeAnyOutput) {
+  // The largest allowed step of the chapter 8 pair is T_min / 2 = l / (N c), about 0.33 ms.
+  expect_error(std::string(POUND_SOURCE_DIR) + "/studies/ch8-five-three.ini --sears.dt 1e-2",
+               {"--sears.dt = '1e-2'", "largest allowed step is 0.000331"});
+}
+
 TEST_F(Cli, CommandLineOverridesStudyAndIsValidated) {
   const CmdResult r = run_pound("simulate --config " + study() + " --contact.e 2");
   EXPECT_EQ(r.code, 2);

@@ -1,0 +1,90 @@
+// Options from the command line and a study file: numbered keys, where a value came from, and
+// the "what is valid" part of every error.
+#include "io/options.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "../support/scratch_dir.hpp"
+
+namespace pound {
+namespace {
+
+std::vector<OptionSpec> specs() {
+  return {{"pair#.gap", "m", "0", "at-rest gap between building # and #+1"},
+          {"building#.masses", "kg", "", "floor masses of building #"},
+          {"contact.e", "-", "0.65", "coefficient of restitution, in (0, 1]"}};
+}
+
+// The InputError message of parsing `args` and reading `key` as a number.
+std::string error_of(std::vector<const char*> args, const std::string& key) {
+  args.insert(args.begin(), "simulate");  // argv[0], skipped by the parser
+  Options o("simulate", "", specs());
+  try {
+    o.parse(static_cast<int>(args.size()), args.data());
+    o.get_doubles(key);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(Options, NumberedKeyErrorsNameTheirOwnBuildings) {
+  EXPECT_EQ(error_of({"--pair2.gap", "abc"}, "pair2.gap"),
+            "command line: --pair2.gap: 'abc' is not a finite number; expected at-rest gap "
+            "between building 2 and 3 [m]");
+  EXPECT_EQ(error_of({"--building12.masses", "1e3,x"}, "building12.masses").substr(0, 40),
+            "command line: --building12.masses: 'x' i");
+  EXPECT_NE(error_of({"--building12.masses", "1e3,x"}, "building12.masses")
+                .find("expected floor masses of building 12 [kg]"),
+            std::string::npos);
+  // A dimensionless key shows no unit.
+  EXPECT_EQ(error_of({"--contact.e", "half"}, "contact.e"),
+            "command line: --contact.e: 'half' is not a finite number; expected coefficient of "
+            "restitution, in (0, 1]");
+}
+
+TEST(Options, MissingNumberedKeyNamesTheFileAndTheBuilding) {
+  const std::string ini = pound::test::process_scratch_dir() / "study.ini";
+  std::ofstream(ini) << "[building1]\nmasses = 1000\n";
+  const std::string msg = error_of({"--config", ini.c_str()}, "building3.masses");
+  EXPECT_EQ(msg, ini + ": key 'building3.masses': missing; floor masses of building 3 [kg]");
+}
+
+TEST(Options, FileValuesNameTheirLineAndTheCommandLineWins) {
+  const std::string ini = pound::test::process_scratch_dir() / "lines.ini";
+  std::ofstream(ini) << "# a study\n[pair1]\ngap = 0.02\n[contact]\ne = 2x\n";
+  Options o("simulate", "", specs());
+  const char* argv[] = {"simulate", "--config", ini.c_str(), "--pair1.gap", "0.03"};
+  o.parse(5, argv);
+  EXPECT_DOUBLE_EQ(o.get_double("pair1.gap"), 0.03);
+  EXPECT_EQ(o.where("pair1.gap"), "command line: --pair1.gap");
+  try {
+    o.get_double("contact.e");
+    FAIL() << "2x was read as a number";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind(ini + ":5: key 'contact.e': '2x'", 0), 0u) << e.what();
+  }
+}
+
+TEST(Options, UnknownKeySuggestsTheDeclaredOne) {
+  const std::string ini = pound::test::process_scratch_dir() / "typo.ini";
+  std::ofstream(ini) << "[pair1]\ngpa = 0.02\n";
+  Options o("simulate", "", specs());
+  const char* argv[] = {"simulate", "--config", ini.c_str()};
+  try {
+    o.parse(3, argv);
+    FAIL() << "an unknown key was accepted";
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find(ini + ":2"), std::string::npos) << m;
+    EXPECT_NE(m.find("pair1.gpa"), std::string::npos) << m;
+    EXPECT_NE(m.find("pair#.gap"), std::string::npos) << m;
+  }
+}
+
+}  // namespace
+}  // namespace pound
