@@ -2,7 +2,7 @@
 # Installs the Debian packages, builds pound (Release) and runs the default study end to end:
 # a Monte Carlo campaign on two MPI ranks (studies/fragility-default.ini), the fragility
 # analysis, and the figures.
-#   bash scripts/quickstart.sh               # the full default study (160 samples)
+#   bash scripts/quickstart.sh               # the full default study (960 samples)
 #   bash scripts/quickstart.sh --samples 24  # a smoke run
 set -euo pipefail
 cd "$(dirname "$0")/.."

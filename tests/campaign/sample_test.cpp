@@ -119,8 +119,10 @@ TEST(Sample, GrazingRecontactsOfTheDefaultStudyAreNotChatter) {
   // at once, over and over. It is now located after the dip (src/solver/row_solver.cpp).
   Options opt("campaign", "", campaign_option_specs());
   const std::string file = POUND_SOURCE_DIR "/studies/fragility-default.ini";
-  const char* argv[] = {"campaign", "--config", file.c_str()};
-  opt.parse(3, argv);
+  // The stripes the study had then (its stripes decide each sample's PGA).
+  const char* argv[] = {"campaign", "--config", file.c_str(), "--intensity.levels",
+                        "0.05,0.1,0.15,0.2,0.3,0.4,0.5,0.6"};
+  opt.parse(5, argv);
   const CampaignStudy st = campaign_from_options(opt, 640, -1);
   SampleRunner r(st);
   for (long id : {94L, 233L, 345L}) {
