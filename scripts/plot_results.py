@@ -58,6 +58,18 @@ def save(fig, out, name):
     print(path)
 
 
+def bound_text(bound):
+    """Where the data put theta without a finite estimate (theta_bound_lo/hi, m/s^2)."""
+    lo, hi = bound[0] / G, bound[1] / G
+    if np.isnan(lo) or np.isnan(hi) or (lo <= 0 and np.isinf(hi)):
+        return ""
+    if np.isinf(hi):
+        return f": θ > {lo:.3g} g"
+    if lo <= 0:
+        return f": θ < {hi:.3g} g"
+    return f": {lo:.3g} g < θ < {hi:.3g} g"
+
+
 def plot_fragility(frag_path, out):
     with h5py.File(frag_path, "r") as f:
         g = f["fragility"]
@@ -73,6 +85,8 @@ def plot_fragility(frag_path, out):
                 "limit": float(c.attrs["limit"]), "pounding": text(c.attrs["pounding"]) == "true",
                 "status": text(c.attrs["status"]), "theta": float(c.attrs["theta"]),
                 "beta": float(c.attrs["beta"]),
+                "bound": (float(c.attrs.get("theta_bound_lo", np.nan)),
+                          float(c.attrs.get("theta_bound_hi", np.nan))),
                 "im": c["observed_im"][:] / G, "n": c["observed_n"][:], "z": c["observed_z"][:],
                 "p": c["probability"][:], "lo": c["band_lo"][:], "hi": c["band_hi"][:]})
     groups = {}
@@ -93,7 +107,7 @@ def plot_fragility(frag_path, out):
                 ax.fill_between(grid[ok], c["lo"][ok], c["hi"][ok], color=col,
                                 alpha=0.18 if c["pounding"] else 0.08, lw=0)
             else:
-                lab += f": no estimate ({c['status'].replace('_', ' ')})"
+                lab += f": no estimate ({c['status'].replace('_', ' ')}{bound_text(c['bound'])})"
                 ax.plot([], [], style, color=col, lw=1.0, label=lab)
             frac = np.where(c["n"] > 0, c["z"] / np.maximum(c["n"], 1), np.nan)
             ax.plot(c["im"], frac, "o" if c["pounding"] else "s", color=col, ms=6,

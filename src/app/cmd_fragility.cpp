@@ -61,6 +61,17 @@ std::string limit_text(Edp e, double x) {
   return e == Edp::drift ? fmt("%.3g %%", 100 * x) : fmt("%.4g ", x) + unit_of(e);
 }
 
+// Where the data put theta when there is no finite estimate, in g: "> 1.5", "< 0.05",
+// "1.25-1.5", else "-".
+std::string bound_text(const LognormalFit& fit) {
+  if (!fit.bracketed()) return "-";
+  const double lo = fit.theta_lo / kGravity, hi = fit.theta_hi / kGravity;
+  if (!(lo > 0.0) && std::isinf(hi)) return "-";
+  if (std::isinf(hi)) return fmt("> %.3g", lo);
+  if (!(lo > 0.0)) return fmt("< %.3g", hi);
+  return fmt("%.3g", lo) + "-" + fmt("%.3g", hi);
+}
+
 void print_text(const CampaignData& c, const FragilityReport& r,
                 const std::vector<std::string>& files) {
   const std::string im = c.intensity_measure == "sa" ? "Sa(T1)" : "PGA";
@@ -95,15 +106,15 @@ void print_text(const CampaignData& c, const FragilityReport& r,
     long n = 0, z = 0;
     for (const auto& o : k.observed) n += o.n, z += o.z;
     const bool f = k.fit.finite();
-    std::printf("  %-12s %-6s %-10s %-5s %-16s %10s [%7s, %7s] %7s [%6s, %6s] %4ld/%-4ld\n",
-                c.building_names[k.building].c_str(), to_string(k.edp),
-                limit_text(k.edp, k.limit).c_str(), k.pounding ? "yes" : "no",
-                to_string(k.fit.status), f ? fmt("%.4f", k.fit.theta / kGravity).c_str() : "-",
-                f ? fmt("%.4f", k.theta_ci.lo / kGravity).c_str() : "-",
-                f ? fmt("%.4f", k.theta_ci.hi / kGravity).c_str() : "-",
-                f ? fmt("%.3f", k.fit.beta).c_str() : "-",
-                f ? fmt("%.3f", k.beta_ci.lo).c_str() : "-",
-                f ? fmt("%.3f", k.beta_ci.hi).c_str() : "-", z, n);
+    std::printf(
+        "  %-12s %-6s %-10s %-5s %-16s %10s [%7s, %7s] %7s [%6s, %6s] %4ld/%-4ld\n",
+        c.building_names[k.building].c_str(), to_string(k.edp), limit_text(k.edp, k.limit).c_str(),
+        k.pounding ? "yes" : "no", to_string(k.fit.status),
+        f ? fmt("%.4f", k.fit.theta / kGravity).c_str() : bound_text(k.fit).c_str(),
+        f ? fmt("%.4f", k.theta_ci.lo / kGravity).c_str() : "-",
+        f ? fmt("%.4f", k.theta_ci.hi / kGravity).c_str() : "-",
+        f ? fmt("%.3f", k.fit.beta).c_str() : "-", f ? fmt("%.3f", k.beta_ci.lo).c_str() : "-",
+        f ? fmt("%.3f", k.beta_ci.hi).c_str() : "-", z, n);
   }
   std::printf(
       "\nSensitivity of the amplification (pounding / free) to the sampled parameters, "
@@ -170,6 +181,11 @@ void print_json(const CampaignData& c, const FragilityReport& r, const Fragility
     interval(w, "beta_ci90", k.beta_ci.lo, k.beta_ci.hi, f);
     interval(w, "theta_asymptotic90", k.theta_asym_lo, k.theta_asym_hi, f);
     interval(w, "beta_asymptotic90", k.beta_asym_lo, k.beta_asym_hi, f);
+    // Without a finite estimate, the interval the data put theta in (null: no bound).
+    w.key("theta_bound_lo");
+    w.value(k.fit.bracketed() ? k.fit.theta_lo : NAN);
+    w.key("theta_bound_hi");
+    w.value(k.fit.bracketed() ? k.fit.theta_hi : NAN);
     w.field("bootstrap_finite", long(k.theta_ci.finite))
         .field("analyses", n)
         .field("exceedances", z);

@@ -99,6 +99,12 @@ LognormalFit fit_lognormal(const std::vector<Observation>& all) {
       z += o.z;
     }
   if (n == 0) return fit;
+  // The empirical bracket reported without a finite estimate.
+  fit.theta_lo = 0.0, fit.theta_hi = INFINITY;
+  for (const auto& o : obs) {
+    if (o.z == 0) fit.theta_lo = std::max(fit.theta_lo, o.im);
+    if (o.z == o.n) fit.theta_hi = std::min(fit.theta_hi, o.im);
+  }
   if (z == 0) return fit.status = FitStatus::none_exceed, fit;
   if (z == n) return fit.status = FitStatus::all_exceed, fit;
 

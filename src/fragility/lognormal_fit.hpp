@@ -54,7 +54,18 @@ struct LognormalFit {
   /// Asymptotic covariance of (ln theta, beta) from the inverse observed information
   /// (delta method from (a, b)): var_ln_theta, cov, var_beta.
   double var_ln_theta = 0.0, cov_ln_theta_beta = 0.0, var_beta = 0.0;
+  /// Without a finite estimate (none_exceed, all_exceed, separated), where the data put theta
+  /// [unit of im]: theta_lo is the highest intensity at which no analysis exceeds (0 when there
+  /// is none), theta_hi the lowest at which all exceed (inf when there is none). For complete
+  /// separation this is the gap in which the likelihood tends to its supremum as beta -> 0;
+  /// with one stripe holding both outcomes (quasi-complete) it is the stripes either side.
+  double theta_lo = 0.0, theta_hi = 0.0;
   bool finite() const { return status == FitStatus::ok; }
+  /// True when theta_lo and theta_hi bound theta (none_exceed, all_exceed, separated).
+  bool bracketed() const {
+    return status == FitStatus::none_exceed || status == FitStatus::all_exceed ||
+           status == FitStatus::separated;
+  }
   /// P(EDP > limit | IM = x); NaN without a finite estimate.
   double probability(double im) const;
 };

@@ -41,7 +41,8 @@ std::string curves_csv(const CampaignData& c, const FragilityReport& r) {
   std::string s =
       "building,building_name,edp,unit,limit,pounding,status,theta_mps2,beta,"
       "theta_ci90_lo,theta_ci90_hi,beta_ci90_lo,beta_ci90_hi,theta_asym90_lo,theta_asym90_hi,"
-      "beta_asym90_lo,beta_asym90_hi,bootstrap_finite,analyses,exceedances\n";
+      "beta_asym90_lo,beta_asym90_hi,bootstrap_finite,analyses,exceedances,theta_bound_lo_mps2,"
+      "theta_bound_hi_mps2\n";
   for (const auto& k : r.curves) {
     long n = 0, z = 0;
     for (const auto& o : k.observed) n += o.n, z += o.z;
@@ -54,7 +55,8 @@ std::string curves_csv(const CampaignData& c, const FragilityReport& r) {
          num(f ? k.beta_ci.hi : NAN) + "," + num(k.theta_asym_lo) + "," + num(k.theta_asym_hi) +
          "," + num(k.beta_asym_lo) + "," + num(k.beta_asym_hi) + "," +
          std::to_string(k.theta_ci.finite) + "," + std::to_string(n) + "," + std::to_string(z) +
-         "\n";
+         "," + num(k.fit.bracketed() ? k.fit.theta_lo : NAN) + "," +
+         num(k.fit.bracketed() ? k.fit.theta_hi : NAN) + "\n";
   }
   return s;
 }
@@ -140,6 +142,9 @@ void write_h5(const std::string& path, const CampaignData& c, const FragilityRep
       h5::attribute(id, g, "theta_ci90_hi", fin ? cv.theta_ci.hi : NAN);
       h5::attribute(id, g, "beta_ci90_lo", fin ? cv.beta_ci.lo : NAN);
       h5::attribute(id, g, "beta_ci90_hi", fin ? cv.beta_ci.hi : NAN);
+      // Without a finite estimate: the interval the data put theta in (inf: unbounded above).
+      h5::attribute(id, g, "theta_bound_lo", cv.fit.bracketed() ? cv.fit.theta_lo : NAN);
+      h5::attribute(id, g, "theta_bound_hi", cv.fit.bracketed() ? cv.fit.theta_hi : NAN);
       std::vector<double> im, n, z, p;
       for (const auto& o : cv.observed)
         im.push_back(o.im), n.push_back(double(o.n)), z.push_back(double(o.z));

@@ -83,6 +83,19 @@ TEST(CmdFragility, JsonCurvesFilesAndUntouchedCampaign) {
     const bool ok = j.compare(p + 10, 3, "ok\"") == 0;
     const auto t = j.find("\"theta\":", p);
     EXPECT_EQ(j.compare(t + 8, 4, "null") == 0, !ok) << j.substr(p, 80);
+    // The bracket is for curves without an estimate; "none_exceed" has no upper bound and
+    // "all_exceed" has one.
+    const auto lo = j.find("\"theta_bound_lo\":", p), hi = j.find("\"theta_bound_hi\":", p);
+    ASSERT_NE(hi, std::string::npos);
+    const bool lo_null = j.compare(lo + 17, 4, "null") == 0,
+               hi_null = j.compare(hi + 17, 4, "null") == 0;
+    EXPECT_EQ(lo_null, ok) << j.substr(p, 400);
+    if (ok || j.compare(p + 10, 12, "none_exceed\"") == 0) {
+      EXPECT_TRUE(hi_null);
+    }
+    if (j.compare(p + 10, 11, "all_exceed\"") == 0) {
+      EXPECT_FALSE(hi_null);
+    }
   }
   for (const char* f :
        {"curves.csv", "shift.csv", "observations.csv", "sensitivity.csv", "fragility.h5"})

@@ -85,13 +85,30 @@ TEST(LognormalFit, AllOrNoneExceedingHasNoFiniteEstimate) {
   EXPECT_FALSE(fit_lognormal(all).finite());
   EXPECT_TRUE(std::isnan(fit_lognormal(none).probability(2.0)));
   EXPECT_EQ(fit_lognormal({}).status, FitStatus::no_data);
+  // What the data do say: theta above 3, or below 1.
+  EXPECT_EQ(fit_lognormal(none).theta_lo, 3.0);
+  EXPECT_TRUE(std::isinf(fit_lognormal(none).theta_hi));
+  EXPECT_EQ(fit_lognormal(all).theta_lo, 0.0);
+  EXPECT_EQ(fit_lognormal(all).theta_hi, 1.0);
 }
 
 TEST(LognormalFit, SeparatedAndUnidentifiableCasesHaveNoFiniteEstimate) {
   // Complete separation: none exceed at 1 and 2, all at 3 -> beta -> 0.
-  EXPECT_EQ(fit_lognormal({{1, 20, 0}, {2, 20, 0}, {3, 20, 20}}).status, FitStatus::separated);
-  // Quasi-complete: one stripe with both outcomes, the others all or none.
-  EXPECT_EQ(fit_lognormal({{1, 20, 0}, {2, 20, 7}, {3, 20, 20}}).status, FitStatus::separated);
+  // Theta lies between 2 and 3: there the likelihood tends to 1 as beta -> 0.
+  const LognormalFit sep = fit_lognormal({{1, 20, 0}, {2, 20, 0}, {3, 20, 20}});
+  EXPECT_EQ(sep.status, FitStatus::separated);
+  EXPECT_NEAR(sep.theta_lo, 2.0, 1e-15);
+  EXPECT_NEAR(sep.theta_hi, 3.0, 1e-15);
+  // Quasi-complete: one stripe with both outcomes, the others all or none; theta between the
+  // stripes either side, and only below when nothing is all-exceeding.
+  const LognormalFit quasi = fit_lognormal({{1, 20, 0}, {2, 20, 7}, {3, 20, 20}});
+  EXPECT_EQ(quasi.status, FitStatus::separated);
+  EXPECT_EQ(quasi.theta_lo, 1.0);
+  EXPECT_EQ(quasi.theta_hi, 3.0);
+  const LognormalFit top = fit_lognormal({{1, 20, 0}, {2, 20, 0}, {3, 20, 2}});
+  EXPECT_EQ(top.status, FitStatus::separated);
+  EXPECT_EQ(top.theta_lo, 2.0);
+  EXPECT_TRUE(std::isinf(top.theta_hi));
   // One intensity only.
   EXPECT_EQ(fit_lognormal({{2, 20, 7}}).status, FitStatus::single_intensity);
   // Falling with intensity.
