@@ -1,0 +1,111 @@
+// Study keys into the library's structs: a row of three buildings with per-floor gaps, the
+// contact stiffness from k_factor, and errors that name the key and what is valid.
+#include "study/row_options.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "core/error.hpp"
+
+namespace pound {
+namespace {
+
+Options parsed(std::vector<const char*> args) {
+  args.insert(args.begin(), "simulate");
+  Options o("simulate", "", row_option_specs());
+  o.parse(static_cast<int>(args.size()), args.data());
+  return o;
+}
+
+const std::vector<const char*> kRow = {"--building1.masses",
+                                       "1e3,1e3,1e3",
+                                       "--building1.stiffnesses",
+                                       "2e6",
+                                       "--building2.masses",
+                                       "2e3,2e3",
+                                       "--building2.stiffnesses",
+                                       "3e6, 5e6",
+                                       "--building3.masses",
+                                       "1e3,1e3,1e3",
+                                       "--building3.stiffnesses",
+                                       "1e6",
+                                       "--pair1.gap",
+                                       "0.01, 0.02",
+                                       "--pair2.gap",
+                                       "0.03"};
+
+// The message of reading kRow with some "--key value" pairs replaced or added.
+std::string error_of(std::vector<const char*> extra) {
+  std::vector<const char*> args = kRow;
+  for (std::size_t i = 0; i + 1 < extra.size(); i += 2) {
+    auto it = std::find_if(args.begin(), args.end(),
+                           [&](const char* a) { return std::string(a) == extra[i]; });
+    if (it != args.end()) {
+      *(it + 1) = extra[i + 1];
+    } else {
+      args.push_back(extra[i]);
+      args.push_back(extra[i + 1]);
+    }
+  }
+  try {
+    const Options o = parsed(args);
+    contact_from_options(o, row_from_options(o));
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(RowOptions, ThreeBuildingsWithPerFloorAndSingleGaps) {
+  const Options o = parsed(kRow);
+  const BuildingRow row = row_from_options(o);
+  ASSERT_EQ(row.buildings.size(), 3u);
+  EXPECT_EQ(row.buildings[1].stiffnesses, (std::vector<double>{3e6, 5e6}));
+  // One stiffness for every storey; the default storey height 3 m.
+  EXPECT_EQ(row.buildings[0].stiffnesses, (std::vector<double>{2e6, 2e6, 2e6}));
+  EXPECT_EQ(row.buildings[2].storey_heights, (std::vector<double>{3.0, 3.0, 3.0}));
+  // Pair 1 collides at the two floors of the lower building; pair 2's one gap is repeated.
+  ASSERT_EQ(row.gaps.size(), 2u);
+  EXPECT_EQ(row.gaps[0], (std::vector<double>{0.01, 0.02}));
+  EXPECT_EQ(row.gaps[1], (std::vector<double>{0.03, 0.03}));
+  EXPECT_EQ(row.buildings[0].name, "building1");
+}
+
+TEST(RowOptions, KFactorMultipliesTheLargestStoreyStiffnessOfTheRow) {
+  std::vector<const char*> args = kRow;
+  for (const char* a : {"--contact.model", "hc-linear", "--contact.k_factor", "40"})
+    args.push_back(a);
+  const Options o = parsed(args);
+  const ContactSpec c = contact_from_options(o, row_from_options(o));
+  EXPECT_EQ(c.model, "hc-linear");
+  EXPECT_DOUBLE_EQ(c.params.k, 40 * 5e6);
+  EXPECT_DOUBLE_EQ(c.params.e, 0.65);  // the documented default
+}
+
+TEST(RowOptions, ErrorsNameTheKeyAndWhatIsValid) {
+  EXPECT_NE(error_of({"--pair1.gap", "0.01,0.02,0.03"})
+                .find("--pair1.gap = '0.01,0.02,0.03': expected one gap or 2"),
+            std::string::npos)
+      << error_of({"--pair1.gap", "0.01,0.02,0.03"});
+  EXPECT_NE(error_of({"--pair2.gap", "-0.01"}).find("gaps must be >= 0 m"), std::string::npos);
+  EXPECT_NE(error_of({"--pair3.gap", "0.01"}).find("there are only 3 buildings"),
+            std::string::npos);
+  EXPECT_NE(error_of({"--building2.stiffnesses", "1e6,2e6,3e6"})
+                .find("expected 2 values (one per floor), got 3"),
+            std::string::npos);
+  EXPECT_NE(error_of({"--building1.damping", "1"}).find("[0, 1)"), std::string::npos);
+  EXPECT_NE(error_of({"--contact.model", "hc-linear"}).find("k_factor"), std::string::npos);
+  EXPECT_NE(error_of({"--contact.model", "lve", "--contact.k", "1e8", "--contact.e", "0"})
+                .find("valid: e in (0, 1]"),
+            std::string::npos);
+  // A building left out of the numbering: building4 without the keys it needs.
+  EXPECT_NE(error_of({"--building5.masses", "1e3", "--building5.stiffnesses", "1e6"})
+                .find("building4.masses"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace pound
