@@ -211,8 +211,16 @@ CampaignSummary master_loop(const CampaignStudy& st, const CampaignRunOptions& o
         done[o.id] = 1;
         ++sum.done;
         if (o.status != SampleStatus::ok) {
-          ++sum.failed;
-          std::fprintf(stderr, "campaign: %s\n", o.message.c_str());
+          // The first failures are listed; a study failing by the thousand must not bury the
+          // progress lines. Every message stays in the result file.
+          constexpr long kListedFailures = 20;
+          if (++sum.failed <= kListedFailures)
+            std::fprintf(stderr, "campaign: %s\n", o.message.c_str());
+          if (sum.failed == kListedFailures + 1)
+            std::fprintf(stderr,
+                         "campaign: further failed samples are not listed here; every "
+                         "message is in %s (/samples/message)\n",
+                         opt.out.c_str());
         }
       }
     }

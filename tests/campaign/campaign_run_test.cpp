@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <thread>
 #include <vector>
@@ -168,6 +169,30 @@ TEST(CampaignRun, StudyErrorCreatesNoFile) {
   ASSERT_EQ(sh(pound("--samples 4 --out " + out)), 0);
   EXPECT_EQ(sh(pound("--samples 4 --out " + out)), 2);
   EXPECT_EQ(sh(pound("--samples 4 --out " + out + " --force")), 0);
+}
+
+TEST(CampaignRun, FailedSamplesAreListedUpToTwentyAndExitFour) {
+  // A fixed Sears step of 10 ms is above every sampled Sears sample's largest allowed step:
+  // the 30 Sears samples of 60 fail as input failures, the hc-linear ones run.
+  const std::string out = dir() + "/failing.h5", log = dir() + "/failing.log";
+  const std::string study = std::string(POUND_SOURCE_DIR) + "/studies/fragility-default.ini";
+  const int s = std::system((std::string(POUND_BINARY) + " campaign --config " + study +
+                             " --samples 60 --sears.dt 1e-2 --quiet --out " + out + " 2>" + log)
+                                .c_str());
+  ASSERT_TRUE(WIFEXITED(s));
+  EXPECT_EQ(WEXITSTATUS(s), 4);
+  std::ifstream in(log);
+  int listed = 0, notice = 0;
+  std::string done;
+  for (std::string line; std::getline(in, line);) {
+    if (line.find("too large; the largest allowed step") != std::string::npos) ++listed;
+    if (line.find("not listed here") != std::string::npos) ++notice;
+    if (line.rfind("campaign: done:", 0) == 0) done = line;
+  }
+  EXPECT_EQ(listed, 20);
+  EXPECT_EQ(notice, 1);
+  EXPECT_NE(done.find("60 samples, 30 failed"), std::string::npos) << done;
+  EXPECT_TRUE(fs::exists(out));  // the samples that ran are kept, the failures marked
 }
 
 }  // namespace
