@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 namespace pound {
 namespace {
@@ -18,6 +19,22 @@ Building sdof(double m, double k, double xi) {
   b.damping_ratio = xi;
   b.damping = DampingKind::modal;
   return b;
+}
+
+// Two SDOF buildings (10 t) with storey stiffnesses k1, k2 [N/m] and the gap [m] between them.
+BuildingRow sdof_pair(double k1, double k2, double gap) {
+  BuildingRow row;
+  row.buildings = {sdof(1e4, k1, 0.05), sdof(1e4, k2, 0.05)};
+  row.gaps = {{gap}};
+  return row;
+}
+
+ContactSpec contact_of(const std::string& model, double k, double e) {
+  ContactSpec c;
+  c.model = model;
+  c.params.k = k;
+  c.params.e = e;
+  return c;
 }
 
 // A ground acceleration step of a0 [m/s^2] held for `seconds`.
@@ -57,13 +74,8 @@ TEST(SimulateRow, FreeRunMatchesTheClosedFormStepResponse) {
 }
 
 TEST(SimulateRow, AGapNeverClosedLeavesThePoundingRunEqualToTheFreeOne) {
-  BuildingRow row;
-  row.buildings = {sdof(1e4, 4e6, 0.05), sdof(1e4, 1e6, 0.05)};
-  row.gaps = {{0.5}};
-  ContactSpec contact;
-  contact.model = "hc-linear";
-  contact.params.k = 1e8;
-  contact.params.e = 0.6;
+  const BuildingRow row = sdof_pair(4e6, 1e6, 0.5);
+  const ContactSpec contact = contact_of("hc-linear", 1e8, 0.6);
   const RowSimulation s = simulate_row(row, step_motion(2.0, 2.0), contact, IntegratorSettings{});
   ASSERT_EQ(s.sites.size(), 1u);
   EXPECT_EQ(s.sites[0].impacts, 0);
@@ -81,13 +93,8 @@ TEST(SimulateRow, ALinearContactAtZeroGapIsHomogeneousInTheRecord) {
   // Linear buildings, a linear spring-dashpot contact (lve) and a zero gap: the equations are
   // positively homogeneous of degree one, so doubling the record doubles every peak and force
   // and leaves amplifications, impact counts and contact times unchanged.
-  BuildingRow row;
-  row.buildings = {sdof(1e4, 1e6, 0.05), sdof(1e4, 4e6, 0.05)};
-  row.gaps = {{0.0}};
-  ContactSpec contact;
-  contact.model = "lve";
-  contact.params.k = 5e7;
-  contact.params.e = 0.7;
+  const BuildingRow row = sdof_pair(1e6, 4e6, 0.0);
+  const ContactSpec contact = contact_of("lve", 5e7, 0.7);
   GroundMotion g;
   g.dt = 0.01;
   for (int i = 0; i <= 300; ++i)
