@@ -282,6 +282,16 @@ Options Options::section(const std::string& prefix, std::vector<OptionSpec> spec
   return sub;
 }
 
+std::vector<std::string> Options::given_keys() const {
+  std::vector<std::string> keys;
+  for (const auto& kv : values_) keys.push_back(kv.first);
+  return keys;
+}
+
+bool Options::matches(const std::string& pattern, const std::string& key) {
+  return key_matches(pattern, key);
+}
+
 int Options::count_numbered(const std::string& prefix) const {
   int n = 0;
   for (const auto& kv : values_) {

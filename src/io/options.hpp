@@ -57,6 +57,11 @@ class Options {
   /// prefix that `specs` does not declare are an error.
   Options section(const std::string& prefix, std::vector<OptionSpec> specs) const;
 
+  /// The keys given by the user (command line or file), sorted.
+  std::vector<std::string> given_keys() const;
+  /// True when `key` is an instance of the declared pattern ("building2.E" of "building#.E").
+  static bool matches(const std::string& pattern, const std::string& key);
+
   /// Highest N for which any "prefix#." key was given (0 when none).
   int count_numbered(const std::string& prefix) const;
 

@@ -130,6 +130,25 @@ TEST_F(Cli, SearsStepTooLargeIsOneLineBeforeAnyOutput) {
                {"--sears.dt = '1e-2'", "largest allowed step is 0.000331"});
 }
 
+TEST_F(Cli, KeysTheChosenModelDoesNotReadAreNoted) {
+  // A lumped study given a Sears key, and a Sears study given a lumped contact key: each runs,
+  // with one note naming the key and where it came from.
+  const CmdResult lumped = run_pound("simulate --config " + study() + " --sears.chi 0.2");
+  EXPECT_EQ(lumped.code, 0) << lumped.err;
+  EXPECT_NE(lumped.err.find("note: command line: --sears.chi is not used by contact model"),
+            std::string::npos)
+      << lumped.err;
+  const CmdResult sears =
+      run_pound("simulate --config " + std::string(POUND_SOURCE_DIR) +
+                "/studies/ch8-five-three.ini --motion.duration 1 --contact.e 0.5");
+  EXPECT_EQ(sears.code, 0) << sears.err;
+  EXPECT_NE(sears.err.find("note: command line: --contact.e is not used by contact model sears"),
+            std::string::npos)
+      << sears.err;
+  EXPECT_EQ(sears.err.find("slab_length"), std::string::npos) << sears.err;  // used by sears
+  EXPECT_EQ(std::count(sears.err.begin(), sears.err.end(), '\n'), 3) << sears.err;
+}
+
 TEST_F(Cli, CommandLineOverridesStudyAndIsValidated) {
   const CmdResult r = run_pound("simulate --config " + study() + " --contact.e 2");
   EXPECT_EQ(r.code, 2);
