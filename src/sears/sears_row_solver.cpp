@@ -116,7 +116,8 @@ class SearsRowSolver {
   std::vector<ModalBank::StepResult> fused;
   std::vector<char> pred_valid;  // pred[k] holds predict(begin) of slab k for this step
   std::vector<double> modal_bound;
-  bool modal_bound_valid = false;  // modal_bound holds since the last fine step
+  std::vector<double> site_approach;  // TranslationBound::approach per site, contact_free() [m]
+  bool modal_bound_valid = false;     // modal_bound holds since the last fine step
 
   // Sleeping slabs (event stepping, docs/speed.md): during a run of fine steps, a slab none of
   // whose sites carries a force at the start of the coarse interval is not stepped. Its faces
@@ -211,6 +212,7 @@ SearsRowSolver::SearsRowSolver(const SearsRowProblem& p_in, const SearsRowModel&
   fused.resize(nf);
   pred_valid.assign(nf, 0);
   modal_bound.assign(nf, 0.0);
+  site_approach.assign(ns, 0.0);
   asleep.assign(nf, 0);
   guarded.assign(ns, 0);
   slept.assign(nf, 0);
@@ -447,10 +449,11 @@ bool SearsRowSolver::contact_free() {
   };
   if (!holds([&](int s) { return !in_contact[s] && F(s) == 0.0 && delta(s) < 0.0; })) return false;
   bound.set_state(u, v);
+  // The building translation alone first (cheap); each site's bound is kept for the full test
+  // below (waking a dormant slab changes the overlap, not the buildings' state).
   if (!holds([&](int s) {
-        return kCoarseBoundSafety *
-                   bound.approach(a.sites[s].dof_left, a.sites[s].dof_right, v, hc) <
-               -delta(s);
+        site_approach[s] = bound.approach(a.sites[s].dof_left, a.sites[s].dof_right, v, hc);
+        return kCoarseBoundSafety * site_approach[s] < -delta(s);
       }))
     return false;
   // Free modes only lose energy, so the bound taken after the last fine step stays valid
@@ -459,8 +462,8 @@ bool SearsRowSolver::contact_free() {
     for (int k = 0; k < nf; ++k) modal_bound[k] = L.banks[k].face_motion_bound(hc);
   modal_bound_valid = true;
   return holds([&](int s) {
-    const double b = bound.approach(a.sites[s].dof_left, a.sites[s].dof_right, v, hc) +
-                     modal_bound[L.site_left_floor[s]] + modal_bound[L.site_right_floor[s]];
+    const double b =
+        site_approach[s] + modal_bound[L.site_left_floor[s]] + modal_bound[L.site_right_floor[s]];
     return kCoarseBoundSafety * b < -delta(s);
   });
 }
