@@ -10,6 +10,7 @@
 #include <string>
 
 #include "../support/allocation_counter.hpp"
+#include "../support/buildings.hpp"
 #include "core/error.hpp"
 #include "io/options.hpp"
 #include "sears/modal_bank.hpp"
@@ -21,14 +22,7 @@
 namespace pound::sears {
 namespace {
 
-Building storeys(int n, double m, double k, double damping) {
-  Building b;
-  b.masses.assign(n, m);
-  b.stiffnesses.assign(n, k);
-  b.storey_heights.assign(n, 3.0);
-  b.damping_ratio = damping;
-  return b;
-}
+using test::uniform_building;
 
 TEST(SearsEvent, ModalFaceBoundHoldsForFreeVibrationAndFreeStepIsExact) {
   const Slab slab{12.0, 21e9, 2500.0, 0.15, 29e3, 0.125};
@@ -117,9 +111,7 @@ TEST(SearsEvent, DormantSlabBoundsHoldAndAdvanceFreeIsRepeatedFreeSteps) {
 TEST(SearsEvent, TranslationBoundHoldsUnderGroundMotion) {
   // The chapter 8 pair (no contacts), random states, a 2.5 Hz ground shaking of 3 m/s^2:
   // the increase of u_L - u_R at every site over one coarse step never exceeds the bound.
-  BuildingRow row;
-  row.buildings = {storeys(5, 48e3, 8.4e7, 0.05), storeys(3, 29e3, 6.7e7, 0.05)};
-  row.gaps = {{0.0, 0.0, 0.0}};
+  const BuildingRow row = test::chapter8_pair(0.0);
   GroundMotion gm;
   gm.dt = 0.02;
   for (int i = 0; i <= 100; ++i) gm.accel.push_back(3.0 * std::sin(2.0 * M_PI * 2.5 * i * gm.dt));
@@ -166,7 +158,7 @@ TEST(SearsEvent, BriefContactInsideOneCoarseStepIsNotMissed) {
   // apart at both of its ends, so sampling the gap at coarse steps would miss it.
   const double m = 1e4, k = m * M_PI * M_PI / 4.0;
   BuildingRow row;
-  row.buildings = {storeys(1, m, k, 0.0), storeys(1, m, k, 0.0)};
+  row.buildings = {uniform_building(1, m, k, 0.0), uniform_building(1, m, k, 0.0)};
   row.gaps = {{0.6e-3}};
   SearsRowModel model;
   model.slabs = {{1.0, 2e10, 2500.0, 0.15}, {1.0, 2e10, 2500.0, 0.15}};

@@ -7,6 +7,7 @@
 
 #include <cmath>
 
+#include "../support/buildings.hpp"
 #include "sears/contact_stiffness.hpp"
 #include "sears/sears_impact.hpp"
 #include "sears/sears_row_layout.hpp"
@@ -139,16 +140,7 @@ TEST(SearsRow, WithoutContactsNewmarkMatchesTheRowSolver) {
   // Two shear buildings (Table 8.2 storey stiffnesses and floor masses) far apart under a
   // sine ground motion: the Sears run's buildings (Newmark, small step) must match the
   // adaptive Dormand-Prince solver of the lumped models.
-  Building b5, b3;
-  b5.masses.assign(5, 48e3);
-  b5.stiffnesses.assign(5, 8.4e7);
-  b5.storey_heights.assign(5, 3.0);
-  b3.masses.assign(3, 29e3);
-  b3.stiffnesses.assign(3, 6.7e7);
-  b3.storey_heights.assign(3, 3.0);
-  BuildingRow row;
-  row.buildings = {b5, b3};
-  row.gaps = {{1.0, 1.0, 1.0}};
+  const BuildingRow row = test::chapter8_pair(1.0);
   GroundMotion gm;
   gm.dt = 0.01;
   for (int i = 0; i <= 150; ++i) gm.accel.push_back(2.0 * std::sin(2.0 * M_PI * 2.0 * i * gm.dt));
@@ -226,10 +218,7 @@ namespace {
 TEST(SearsRow, SlabPropertiesMayDifferPerFloor) {
   // Flat contact (Th. 8.1-8.2, D = 1): k_A = E A / l with A = m / (rho l), so
   // k_A = E m / (rho l^2); two slabs in series. Floor 2 of the left building has a 10 m slab.
-  Building b;
-  b.masses = {48e3, 48e3};
-  b.stiffnesses = {8.4e7, 8.4e7};
-  b.storey_heights = {3.0, 3.0};
+  const Building b = test::uniform_building(2, 48e3, 8.4e7);
   BuildingRow row;
   row.buildings = {b, b};
   row.gaps = {{0.0, 0.0}};

@@ -8,17 +8,13 @@
 #include <cmath>
 #include <string>
 
+#include "../support/buildings.hpp"
+
 namespace pound {
 namespace {
 
 Building sdof(double m, double k, double xi) {
-  Building b;
-  b.masses = {m};
-  b.stiffnesses = {k};
-  b.storey_heights = {3.0};
-  b.damping_ratio = xi;
-  b.damping = DampingKind::modal;
-  return b;
+  return test::uniform_building(1, m, k, xi, DampingKind::modal);
 }
 
 // Two SDOF buildings (10 t) with storey stiffnesses k1, k2 [N/m] and the gap [m] between them.

@@ -5,24 +5,18 @@
 #include <Eigen/Eigenvalues>
 #include <cmath>
 
+#include "../support/buildings.hpp"
 #include "core/error.hpp"
 
 namespace pound {
 namespace {
 
-Building uniform(int floors, double m, double k, double xi = 0.05) {
-  Building b;
-  b.masses.assign(floors, m);
-  b.stiffnesses.assign(floors, k);
-  b.storey_heights.assign(floors, 3.0);
-  b.damping_ratio = xi;
-  return b;
-}
+using test::uniform_building;
 
 TEST(Building, TwoStoreyPeriodsMatchClosedForm) {
   // Uniform 2-storey shear building: w^2 = (3 -/+ sqrt 5) / 2 k / m (Chopra example 10.1).
   const double m = 1000.0, k = 1e6;
-  const BuildingMatrices bm = assemble(uniform(2, m, k));
+  const BuildingMatrices bm = assemble(uniform_building(2, m, k));
   const double w1 = std::sqrt((3 - std::sqrt(5.0)) / 2 * k / m);
   const double w2 = std::sqrt((3 + std::sqrt(5.0)) / 2 * k / m);
   EXPECT_NEAR(bm.periods(0), 2 * M_PI / w1, 1e-12);
@@ -31,7 +25,7 @@ TEST(Building, TwoStoreyPeriodsMatchClosedForm) {
 
 TEST(Building, RayleighAndModalDampingGiveTheRatioOnTheirModes) {
   for (DampingKind kind : {DampingKind::rayleigh, DampingKind::modal}) {
-    Building b = uniform(4, 2000.0, 3e6, 0.05);
+    Building b = uniform_building(4, 2000.0, 3e6, 0.05);
     b.damping = kind;
     const BuildingMatrices bm = assemble(b);
     Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eig(bm.K, bm.M);
@@ -48,7 +42,8 @@ TEST(Building, RayleighAndModalDampingGiveTheRatioOnTheirModes) {
 TEST(BuildingRow, UnequalHeightsCollideUpToTheLowerRoof) {
   // A 5-storey building between a 3-storey and a 4-storey one (a row, thesis chapter 2).
   BuildingRow row;
-  row.buildings = {uniform(3, 1e3, 1e6), uniform(5, 1e3, 1e6), uniform(4, 1e3, 1e6)};
+  row.buildings = {uniform_building(3, 1e3, 1e6), uniform_building(5, 1e3, 1e6),
+                   uniform_building(4, 1e3, 1e6)};
   row.gaps = {{0.01, 0.02, 0.03}, {0.0, 0.0, 0.0, 0.0}};
   const AssembledRow a = assemble(row);
   ASSERT_EQ(a.dofs(), 12);
@@ -63,7 +58,7 @@ TEST(BuildingRow, UnequalHeightsCollideUpToTheLowerRoof) {
 }
 
 TEST(Building, ValidationNamesTheFloor) {
-  Building b = uniform(3, 1e3, 1e6);
+  Building b = uniform_building(3, 1e3, 1e6);
   b.masses[1] = -5;
   try {
     validate(b, "study.ini:4");
