@@ -100,15 +100,9 @@ void line(const char* name, Timing t, Timing ref, int samples, const Differences
 }
 
 Options row_study(const std::string& file, std::vector<std::string> extra) {
-  auto specs = row_option_specs();
-  const auto ss = sears_row_option_specs();
-  specs.insert(specs.end(), ss.begin(), ss.end());
-  Options opt("simulate", "speed benchmark", specs);
-  std::vector<std::string> args = {"simulate", "--config", file};
-  args.insert(args.end(), extra.begin(), extra.end());
-  std::vector<const char*> argv;
-  for (const auto& a : args) argv.push_back(a.c_str());
-  opt.parse(static_cast<int>(argv.size()), argv.data());
+  Options opt("simulate", "speed benchmark", row_and_sears_option_specs());
+  extra.insert(extra.begin(), {"--config", file});
+  opt.parse(extra);
   return opt;
 }
 
@@ -152,9 +146,7 @@ CampaignStudy load_campaign(const std::string& src, long samples) {
   const std::string frag = src + "/studies/fragility-default.ini";
   // A fixed workload: the eight stripes the study had when docs/speed.md was measured (the
   // study now has twelve, up to 1.5 g).
-  const char* cargv[] = {"campaign", "--config", frag.c_str(), "--intensity.levels",
-                         "0.05,0.1,0.15,0.2,0.3,0.4,0.5,0.6"};
-  oc.parse(5, cargv);
+  oc.parse({"--config", frag, "--intensity.levels", "0.05,0.1,0.15,0.2,0.3,0.4,0.5,0.6"});
   return campaign_from_options(oc, samples, -1);
 }
 

@@ -122,9 +122,7 @@ std::vector<std::string> keys_unused_by_model(const Options& opt, bool is_sears)
 }  // namespace
 
 int run_simulate(int argc, const char* const* argv) {
-  auto specs = row_option_specs();
-  const auto sears_specs = sears_row_option_specs();
-  specs.insert(specs.end(), sears_specs.begin(), sears_specs.end());
+  auto specs = row_and_sears_option_specs();
   specs.push_back({"json", "", "", "print one JSON object", true});
   specs.push_back({"histories", "", "", "write time histories to this HDF5 file"});
   Options opt("simulate",

@@ -65,9 +65,7 @@ int CampaignStudy::max_levels() const {
 }
 
 std::vector<OptionSpec> campaign_option_specs() {
-  std::vector<OptionSpec> s = row_option_specs();
-  const auto sears_specs = sears_row_option_specs();
-  s.insert(s.end(), sears_specs.begin(), sears_specs.end());
+  std::vector<OptionSpec> s = row_and_sears_option_specs();
   const std::vector<OptionSpec> own = {
       {"campaign.samples", "-", "100", "number of samples"},
       {"campaign.seed", "-", "1", "study seed (every draw derives from it and the sample id)"},

@@ -154,6 +154,12 @@ void Options::parse(int argc, const char* const* argv) {
   }
 }
 
+void Options::parse(const std::vector<std::string>& args) {
+  std::vector<const char*> argv = {command_.c_str()};
+  for (const auto& a : args) argv.push_back(a.c_str());
+  parse(static_cast<int>(argv.size()), argv.data());
+}
+
 const Options::Value* Options::lookup(const std::string& key) const {
   const auto it = values_.find(key);
   return it == values_.end() ? nullptr : &it->second;

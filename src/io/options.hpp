@@ -30,6 +30,8 @@ class Options {
   /// Parses argv (after the subcommand name). Reads --config FILE when given. Throws
   /// InputError on unknown options or keys, repeated keys and syntax errors.
   void parse(int argc, const char* const* argv);
+  /// The same from the arguments after the program name ({"--config", "study.ini", ...}).
+  void parse(const std::vector<std::string>& args);
 
   bool help_requested() const { return help_; }
   std::string help_text() const;

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "sears/contact_stiffness.hpp"
+#include "study/row_options.hpp"
 
 namespace pound {
 
@@ -28,6 +29,13 @@ std::vector<OptionSpec> sears_row_option_specs() {
       {"sears.integrator", "", "event",
        "sears: event (coarse steps while a bound excludes contact, docs/speed.md) or fixed"},
   };
+}
+
+std::vector<OptionSpec> row_and_sears_option_specs() {
+  std::vector<OptionSpec> s = row_option_specs();
+  const auto sears = sears_row_option_specs();
+  s.insert(s.end(), sears.begin(), sears.end());
+  return s;
 }
 
 sears::SearsRowModel sears_row_from_options(const Options& opt, const BuildingRow& row) {

@@ -10,6 +10,8 @@
 namespace pound {
 
 std::vector<OptionSpec> sears_row_option_specs();
+/// The keys of a row under any contact model: row_option_specs() and sears_row_option_specs().
+std::vector<OptionSpec> row_and_sears_option_specs();
 /// Reads and validates the slab of every building and the model options.
 sears::SearsRowModel sears_row_from_options(const Options& opt, const BuildingRow& row);
 

@@ -120,9 +120,7 @@ TEST(Sample, GrazingRecontactsOfTheDefaultStudyAreNotChatter) {
   Options opt("campaign", "", campaign_option_specs());
   const std::string file = POUND_SOURCE_DIR "/studies/fragility-default.ini";
   // The stripes the study had then (its stripes decide each sample's PGA).
-  const char* argv[] = {"campaign", "--config", file.c_str(), "--intensity.levels",
-                        "0.05,0.1,0.15,0.2,0.3,0.4,0.5,0.6"};
-  opt.parse(5, argv);
+  opt.parse({"--config", file, "--intensity.levels", "0.05,0.1,0.15,0.2,0.3,0.4,0.5,0.6"});
   const CampaignStudy st = campaign_from_options(opt, 640, -1);
   SampleRunner r(st);
   for (long id : {94L, 233L, 345L}) {

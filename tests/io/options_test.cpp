@@ -20,11 +20,10 @@ std::vector<OptionSpec> specs() {
 }
 
 // The InputError message of parsing `args` and reading `key` as a number.
-std::string error_of(std::vector<const char*> args, const std::string& key) {
-  args.insert(args.begin(), "simulate");  // argv[0], skipped by the parser
+std::string error_of(const std::vector<std::string>& args, const std::string& key) {
   Options o("simulate", "", specs());
   try {
-    o.parse(static_cast<int>(args.size()), args.data());
+    o.parse(args);
     o.get_doubles(key);
   } catch (const InputError& e) {
     return e.what();
@@ -50,7 +49,7 @@ TEST(Options, NumberedKeyErrorsNameTheirOwnBuildings) {
 TEST(Options, MissingNumberedKeyNamesTheFileAndTheBuilding) {
   const std::string ini = pound::test::process_scratch_dir() / "study.ini";
   std::ofstream(ini) << "[building1]\nmasses = 1000\n";
-  const std::string msg = error_of({"--config", ini.c_str()}, "building3.masses");
+  const std::string msg = error_of({"--config", ini}, "building3.masses");
   EXPECT_EQ(msg, ini + ": key 'building3.masses': missing; floor masses of building 3 [kg]");
 }
 
@@ -74,9 +73,8 @@ TEST(Options, UnknownKeySuggestsTheDeclaredOne) {
   const std::string ini = pound::test::process_scratch_dir() / "typo.ini";
   std::ofstream(ini) << "[pair1]\ngpa = 0.02\n";
   Options o("simulate", "", specs());
-  const char* argv[] = {"simulate", "--config", ini.c_str()};
   try {
-    o.parse(3, argv);
+    o.parse({"--config", ini});
     FAIL() << "an unknown key was accepted";
   } catch (const InputError& e) {
     const std::string m = e.what();

@@ -22,13 +22,8 @@ struct Chapter8Run {
 };
 
 Chapter8Run run_study(const std::string& file) {
-  auto specs = row_option_specs();
-  const auto sears_specs = sears_row_option_specs();
-  specs.insert(specs.end(), sears_specs.begin(), sears_specs.end());
-  Options opt("simulate", "chapter 8 golden run", specs);
-  const std::string path = std::string(POUND_SOURCE_DIR) + "/studies/" + file;
-  const char* argv[] = {"simulate", "--config", path.c_str()};
-  opt.parse(3, argv);
+  Options opt("simulate", "chapter 8 golden run", row_and_sears_option_specs());
+  opt.parse({"--config", std::string(POUND_SOURCE_DIR) + "/studies/" + file});
   Chapter8Run r;
   r.row = row_from_options(opt);
   const SearsRowModel model = sears_row_from_options(opt, r.row);

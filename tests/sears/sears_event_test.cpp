@@ -204,16 +204,10 @@ struct StudyRun {
 };
 
 StudyRun read_study(const std::string& file, std::vector<std::string> extra = {}) {
-  auto specs = row_option_specs();
-  const auto ss = sears_row_option_specs();
-  specs.insert(specs.end(), ss.begin(), ss.end());
-  Options opt("simulate", "event stepping test", specs);
-  const std::string path = std::string(POUND_SOURCE_DIR) + "/studies/" + file;
-  std::vector<std::string> args = {"simulate", "--config", path};
+  Options opt("simulate", "event stepping test", row_and_sears_option_specs());
+  std::vector<std::string> args = {"--config", std::string(POUND_SOURCE_DIR) + "/studies/" + file};
   args.insert(args.end(), extra.begin(), extra.end());
-  std::vector<const char*> argv;
-  for (const auto& x : args) argv.push_back(x.c_str());
-  opt.parse(static_cast<int>(argv.size()), argv.data());
+  opt.parse(args);
   StudyRun r;
   r.row = row_from_options(opt);
   r.model = sears_row_from_options(opt, r.row);

@@ -16,7 +16,7 @@ namespace {
 
 // The common options of `pound impact` that the sears options rely on (declared by the caller
 // in src/app/cmd_impact.cpp; repeated here so that the glue is tested alone).
-Options impact_options(std::vector<std::string> args) {
+Options impact_options(const std::vector<std::string>& args) {
   std::vector<OptionSpec> specs = sears_impact_option_specs();
   specs.push_back({"model", "", "sears", "contact model"});
   specs.push_back({"m1", "kg", "1", "mass of body 1"});
@@ -25,10 +25,7 @@ Options impact_options(std::vector<std::string> args) {
   specs.push_back({"dt", "s", "", "step"});
   specs.push_back({"k", "N/m or N/m^1.5", "", "contact stiffness"});
   Options opt("impact", "test", specs);
-  args.insert(args.begin(), "impact");
-  std::vector<const char*> argv;
-  for (const auto& a : args) argv.push_back(a.c_str());
-  opt.parse(static_cast<int>(argv.size()), argv.data());
+  opt.parse(args);
   return opt;
 }
 

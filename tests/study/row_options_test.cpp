@@ -13,14 +13,13 @@
 namespace pound {
 namespace {
 
-Options parsed(std::vector<const char*> args) {
-  args.insert(args.begin(), "simulate");
+Options parsed(const std::vector<std::string>& args) {
   Options o("simulate", "", row_option_specs());
-  o.parse(static_cast<int>(args.size()), args.data());
+  o.parse(args);
   return o;
 }
 
-const std::vector<const char*> kRow = {"--building1.masses",
+const std::vector<std::string> kRow = {"--building1.masses",
                                        "1e3,1e3,1e3",
                                        "--building1.stiffnesses",
                                        "2e6",
@@ -38,11 +37,11 @@ const std::vector<const char*> kRow = {"--building1.masses",
                                        "0.03"};
 
 // The message of reading kRow with some "--key value" pairs replaced or added.
-std::string error_of(std::vector<const char*> extra) {
-  std::vector<const char*> args = kRow;
+std::string error_of(const std::vector<std::string>& extra) {
+  std::vector<std::string> args = kRow;
   for (std::size_t i = 0; i + 1 < extra.size(); i += 2) {
-    auto it = std::find_if(args.begin(), args.end(),
-                           [&](const char* a) { return std::string(a) == extra[i]; });
+    auto it =
+        std::find_if(args.begin(), args.end(), [&](const std::string& a) { return a == extra[i]; });
     if (it != args.end()) {
       *(it + 1) = extra[i + 1];
     } else {
@@ -75,9 +74,8 @@ TEST(RowOptions, ThreeBuildingsWithPerFloorAndSingleGaps) {
 }
 
 TEST(RowOptions, KFactorMultipliesTheLargestStoreyStiffnessOfTheRow) {
-  std::vector<const char*> args = kRow;
-  for (const char* a : {"--contact.model", "hc-linear", "--contact.k_factor", "40"})
-    args.push_back(a);
+  std::vector<std::string> args = kRow;
+  args.insert(args.end(), {"--contact.model", "hc-linear", "--contact.k_factor", "40"});
   const Options o = parsed(args);
   const ContactSpec c = contact_from_options(o, row_from_options(o));
   EXPECT_EQ(c.model, "hc-linear");
