@@ -2,9 +2,11 @@
 #include <mpi.h>
 #include <sys/stat.h>
 
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <string>
+#include <utility>
 
 #include "app/commands.hpp"
 #include "campaign/campaign_study.hpp"
@@ -20,6 +22,25 @@ bool exists(const std::string& p) {
 }
 
 // Checks of the output file made by rank 0 before anything runs. Returns "" or an error.
+// "A<sep>B" of two whole numbers (--sample-range LO:HI, --chunk K/C); {-1, -1} when the text
+// has no separator or a part is not a whole number, which the callers' range checks reject
+// with the message saying what is valid.
+std::pair<long, long> whole_number_pair(const Options& opt, const std::string& key, char sep) {
+  const std::string r = opt.get_string(key);
+  const auto at = r.find(sep);
+  if (at == std::string::npos) return {-1, -1};
+  double a = 0.0, b = 0.0;
+  try {
+    a = parse_number(r.substr(0, at), opt.where(key));
+    b = parse_number(r.substr(at + 1), opt.where(key));
+  } catch (const InputError&) {
+    return {-1, -1};
+  }
+  if (a != std::floor(a) || b != std::floor(b) || std::fabs(a) > 1e15 || std::fabs(b) > 1e15)
+    return {-1, -1};
+  return {static_cast<long>(a), static_cast<long>(b)};
+}
+
 std::string check_output(const std::string& out, bool resume, bool force, bool* complete) {
   const std::string journal = out + ".journal";
   *complete = false;
@@ -88,13 +109,7 @@ int run_campaign(int argc, const char* const* argv) {
       if (opt.given("seed") && seed < 0) throw opt.invalid("seed", "valid: >= 0");
       study = campaign_from_options(opt, samples, seed);
       if (opt.given("sample-range")) {
-        const std::string r = opt.get_string("sample-range");
-        const auto colon = r.find(':');
-        long lo = -1, hi = -1;
-        if (colon != std::string::npos) {
-          lo = static_cast<long>(parse_number(r.substr(0, colon), opt.where("sample-range")));
-          hi = static_cast<long>(parse_number(r.substr(colon + 1), opt.where("sample-range")));
-        }
+        const auto [lo, hi] = whole_number_pair(opt, "sample-range", ':');
         if (!(lo >= 0 && hi > lo && hi <= study.samples))
           throw opt.invalid("sample-range",
                             "valid: LO:HI with 0 <= LO < HI <= " + std::to_string(study.samples) +
@@ -104,13 +119,7 @@ int run_campaign(int argc, const char* const* argv) {
       }
       if (opt.given("chunk")) {
         if (opt.given("sample-range")) throw opt.invalid("chunk", "give --chunk or --sample-range");
-        const std::string r = opt.get_string("chunk");
-        const auto slash = r.find('/');
-        long k = -1, c = -1;
-        if (slash != std::string::npos) {
-          k = static_cast<long>(parse_number(r.substr(0, slash), opt.where("chunk")));
-          c = static_cast<long>(parse_number(r.substr(slash + 1), opt.where("chunk")));
-        }
+        const auto [k, c] = whole_number_pair(opt, "chunk", '/');
         if (!(c >= 1 && c <= study.samples && k >= 0 && k < c))
           throw opt.invalid("chunk", "valid: K/C with C chunks, 1 <= C <= samples, 0 <= K < C");
         study.range_lo = k * study.samples / c;

@@ -7,10 +7,12 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <thread>
 #include <vector>
@@ -171,9 +173,29 @@ TEST(CampaignRun, StudyErrorCreatesNoFile) {
   EXPECT_EQ(sh(pound("--samples 4 --out " + out + " --force")), 0);
 }
 
+TEST(CampaignRun, BadSampleRangeOrChunkSaysWhatIsValid) {
+  ::setenv("ASAN_OPTIONS", "detect_leaks=0", 0);  // as in sh()
+  const std::string out = dir() + "/range.h5", log = dir() + "/range.log";
+  for (const std::string arg : {"--sample-range 1.5:3", "--sample-range a:3", "--sample-range 5",
+                                "--sample-range 0:21", "--chunk 2/2", "--chunk 0.5/2"}) {
+    const int s =
+        std::system((pound("--samples 20 --out " + out + " " + arg) + " 2>" + log).c_str());
+    ASSERT_TRUE(WIFEXITED(s));
+    EXPECT_EQ(WEXITSTATUS(s), 2) << arg;
+    std::ifstream in(log);
+    const std::string msg((std::istreambuf_iterator<char>(in)), {});
+    EXPECT_NE(msg.find(arg.find("chunk") != std::string::npos ? "valid: K/C" : "valid: LO:HI"),
+              std::string::npos)
+        << arg << ": " << msg;
+    EXPECT_EQ(std::count(msg.begin(), msg.end(), '\n'), 1) << msg;
+    EXPECT_FALSE(fs::exists(out)) << arg;
+  }
+}
+
 TEST(CampaignRun, FailedSamplesAreListedUpToTwentyAndExitFour) {
   // A fixed Sears step of 10 ms is above every sampled Sears sample's largest allowed step:
   // the 30 Sears samples of 60 fail as input failures, the hc-linear ones run.
+  ::setenv("ASAN_OPTIONS", "detect_leaks=0", 0);  // as in sh()
   const std::string out = dir() + "/failing.h5", log = dir() + "/failing.log";
   const std::string study = std::string(POUND_SOURCE_DIR) + "/studies/fragility-default.ini";
   const int s = std::system((std::string(POUND_BINARY) + " campaign --config " + study +
