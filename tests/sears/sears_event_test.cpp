@@ -11,6 +11,7 @@
 
 #include "../support/allocation_counter.hpp"
 #include "../support/buildings.hpp"
+#include "../support/ground_motions.hpp"
 #include "core/error.hpp"
 #include "io/options.hpp"
 #include "sears/modal_bank.hpp"
@@ -112,9 +113,7 @@ TEST(SearsEvent, TranslationBoundHoldsUnderGroundMotion) {
   // The chapter 8 pair (no contacts), random states, a 2.5 Hz ground shaking of 3 m/s^2:
   // the increase of u_L - u_R at every site over one coarse step never exceeds the bound.
   const BuildingRow row = test::chapter8_pair(0.0);
-  GroundMotion gm;
-  gm.dt = 0.02;
-  for (int i = 0; i <= 100; ++i) gm.accel.push_back(3.0 * std::sin(2.0 * M_PI * 2.5 * i * gm.dt));
+  const GroundMotion gm = test::sine_motion(3.0, 2.5, 0.02, 101);
   SearsRowModel model;
   model.slabs = {{20.0, 21e9, 2500.0, 0.15}, {12.0, 21e9, 2500.0, 0.15}};
   model.modes = 10;

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "../support/buildings.hpp"
+#include "../support/ground_motions.hpp"
 #include "sears/contact_stiffness.hpp"
 #include "sears/sears_impact.hpp"
 #include "sears/sears_row_layout.hpp"
@@ -141,9 +142,7 @@ TEST(SearsRow, WithoutContactsNewmarkMatchesTheRowSolver) {
   // sine ground motion: the Sears run's buildings (Newmark, small step) must match the
   // adaptive Dormand-Prince solver of the lumped models.
   const BuildingRow row = test::chapter8_pair(1.0);
-  GroundMotion gm;
-  gm.dt = 0.01;
-  for (int i = 0; i <= 150; ++i) gm.accel.push_back(2.0 * std::sin(2.0 * M_PI * 2.0 * i * gm.dt));
+  const GroundMotion gm = test::sine_motion(2.0, 2.0, 0.01, 151);
   SearsRowModel model;
   model.slabs = {{20.0, 21e9, 2500.0, 0.15}, {12.0, 21e9, 2500.0, 0.15}};
   model.modes = 10;
