@@ -3,6 +3,8 @@
 #include <hdf5.h>
 
 #include <algorithm>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "core/error.hpp"
@@ -11,25 +13,11 @@
 namespace pound {
 namespace {
 
-std::string read_string_attribute(hid_t obj, const char* name, const std::string& file) {
-  if (H5Aexists(obj, name) <= 0)
-    throw InputError(file + ": not a campaign result (no '" + std::string(name) + "' attribute)");
-  const hid_t a = H5Aopen(obj, name, H5P_DEFAULT);
-  const hid_t t = H5Aget_type(a);
-  std::string out;
-  if (H5Tis_variable_str(t) > 0) {
-    char* p = nullptr;
-    H5Aread(a, t, &p);
-    out = p ? p : "";
-    H5free_memory(p);
-  } else {
-    std::vector<char> buf(H5Tget_size(t) + 1, '\0');
-    H5Aread(a, t, buf.data());
-    out = buf.data();
-  }
-  H5Tclose(t);
-  H5Aclose(a);
-  return out;
+// A root attribute the merge needs; its absence means the file is no campaign result.
+std::string required_attribute(hid_t file, const char* name, const std::string& path) {
+  if (H5Aexists(file, name) <= 0)
+    throw InputError(path + ": not a campaign result (no '" + std::string(name) + "' attribute)");
+  return h5::root_attribute_text(file, name);
 }
 
 struct Part {
@@ -37,22 +25,6 @@ struct Part {
   hid_t file = -1;
   long lo = 0, hi = 0;
 };
-
-// Names of the datasets under a group (one level).
-std::vector<std::string> datasets_in(hid_t file, const std::string& group) {
-  std::vector<std::string> names;
-  if (H5Lexists(file, group.c_str(), H5P_DEFAULT) <= 0) return names;
-  const hid_t g = H5Gopen2(file, group.c_str(), H5P_DEFAULT);
-  hsize_t n = 0;
-  H5Gget_num_objs(g, &n);
-  for (hsize_t i = 0; i < n; ++i) {
-    char name[512];
-    H5Gget_objname_by_idx(g, i, name, sizeof name);
-    names.push_back(group + "/" + name);
-  }
-  H5Gclose(g);
-  return names;
-}
 
 herr_t copy_attribute(hid_t src, const char* name, const H5A_info_t*, void* dst_ptr) {
   const hid_t dst = *static_cast<hid_t*>(dst_ptr);
@@ -95,9 +67,9 @@ void merge_campaign_parts(const std::vector<std::string>& paths, const std::stri
     if (p.file < 0) throw InputError(path + ": cannot open (not an HDF5 file?)");
     parts.push_back(p);
     Part& q = parts.back();
-    const std::string st = read_string_attribute(q.file, "study", path);
-    const std::string sd = read_string_attribute(q.file, "seed", path);
-    const std::string range = read_string_attribute(q.file, "sample_range", path);
+    const std::string st = required_attribute(q.file, "study", path);
+    const std::string sd = required_attribute(q.file, "seed", path);
+    const std::string range = required_attribute(q.file, "sample_range", path);
     const hid_t a = H5Aopen(q.file, "samples", H5P_DEFAULT);
     double n = -1;
     if (a >= 0) {
@@ -105,9 +77,13 @@ void merge_campaign_parts(const std::vector<std::string>& paths, const std::stri
       H5Aclose(a);
     }
     const auto colon = range.find(':');
-    if (colon == std::string::npos) throw InputError(path + ": bad sample_range '" + range + "'");
-    q.lo = std::stol(range.substr(0, colon));
-    q.hi = std::stol(range.substr(colon + 1));
+    try {
+      if (colon == std::string::npos) throw std::invalid_argument("no colon");
+      q.lo = std::stol(range.substr(0, colon));
+      q.hi = std::stol(range.substr(colon + 1));
+    } catch (const std::logic_error&) {  // std::stol's invalid_argument and out_of_range
+      throw InputError(path + ": bad sample_range '" + range + "' (expected LO:HI)");
+    }
     if (parts.size() == 1) {
       study = st;
       seed = sd;
@@ -136,7 +112,8 @@ void merge_campaign_parts(const std::vector<std::string>& paths, const std::stri
   h5::File f(out);
   const hsize_t total = static_cast<hsize_t>(samples);
   for (const char* group : {"/samples", "/response", "/run"}) {
-    for (const auto& name : datasets_in(parts.front().file, group)) {
+    for (const auto& member : h5::group_members(parts.front().file, group)) {
+      const std::string name = std::string(group) + "/" + member;
       const hid_t d0 = H5Dopen2(parts.front().file, name.c_str(), H5P_DEFAULT);
       const hid_t type = H5Dget_type(d0);
       const hid_t s0 = H5Dget_space(d0);

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "io/h5.hpp"
 #include "io/options.hpp"
 
 namespace pound {
@@ -62,41 +63,12 @@ class Reader {
 
   // A string attribute of the root ("" when absent), or a number written as text.
   std::string text_attribute(const std::string& name) const {
-    if (H5Aexists(file_, name.c_str()) <= 0) return "";
-    Handle a{H5Aopen(file_, name.c_str(), H5P_DEFAULT), H5Aclose};
-    Handle ty{H5Aget_type(a.id), H5Tclose};
-    if (H5Tget_class(ty.id) != H5T_STRING) {
-      double x = 0;
-      H5Aread(a.id, H5T_NATIVE_DOUBLE, &x);
-      std::ostringstream s;
-      s << x;
-      return s.str();
-    }
-    Handle mem{H5Tcopy(H5T_C_S1), H5Tclose};
-    H5Tset_size(mem.id, H5T_VARIABLE);
-    H5Tset_cset(mem.id, H5Tget_cset(ty.id));  // ASCII and UTF-8 do not convert into each other
-    if (!H5Tis_variable_str(ty.id)) return "";
-    char* p = nullptr;
-    if (H5Aread(a.id, mem.id, &p) < 0 || !p) return "";
-    std::string s(p);
-    H5free_memory(p);
-    return s;
+    return h5::root_attribute_text(file_, name);
   }
 
   std::vector<std::string> members(const std::string& group) const {
-    std::vector<std::string> out;
-    Handle g{H5Gopen2(file_, group.c_str(), H5P_DEFAULT), H5Gclose};
-    H5G_info_t info;
-    if (g.id < 0 || H5Gget_info(g.id, &info) < 0) throw missing(group);
-    for (hsize_t i = 0; i < info.nlinks; ++i) {
-      const ssize_t len =
-          H5Lget_name_by_idx(g.id, ".", H5_INDEX_NAME, H5_ITER_INC, i, nullptr, 0, H5P_DEFAULT);
-      std::string name(std::size_t(len), '\0');
-      H5Lget_name_by_idx(g.id, ".", H5_INDEX_NAME, H5_ITER_INC, i, name.data(),
-                         std::size_t(len) + 1, H5P_DEFAULT);
-      out.push_back(name);
-    }
-    return out;
+    if (!exists(group)) throw missing(group);
+    return h5::group_members(file_, group);
   }
 
   InputError missing(const std::string& what) const {

@@ -1,5 +1,7 @@
 #include "io/h5.hpp"
 
+#include <sstream>
+
 #include "core/error.hpp"
 
 namespace pound::h5 {
@@ -93,6 +95,54 @@ void attribute(hid_t file, const std::string& object, const std::string& name, d
   check(H5Awrite(attr, H5T_NATIVE_DOUBLE, &value), "attribute " + name);
   H5Aclose(attr);
   H5Sclose(space);
+}
+
+std::string root_attribute_text(hid_t file, const std::string& name) {
+  if (H5Aexists(file, name.c_str()) <= 0) return "";
+  const hid_t a = H5Aopen(file, name.c_str(), H5P_DEFAULT);
+  const hid_t t = H5Aget_type(a);
+  std::string out;
+  if (H5Tget_class(t) != H5T_STRING) {
+    double x = 0.0;
+    if (H5Aread(a, H5T_NATIVE_DOUBLE, &x) >= 0) {
+      std::ostringstream s;
+      s << x;
+      out = s.str();
+    }
+  } else if (H5Tis_variable_str(t) > 0) {
+    const hid_t mem = H5Tcopy(H5T_C_S1);
+    H5Tset_size(mem, H5T_VARIABLE);
+    H5Tset_cset(mem, H5Tget_cset(t));  // ASCII and UTF-8 do not convert into each other
+    char* p = nullptr;
+    if (H5Aread(a, mem, &p) >= 0 && p) out = p;
+    H5free_memory(p);
+    H5Tclose(mem);
+  } else {
+    std::vector<char> buf(H5Tget_size(t) + 1, '\0');
+    if (H5Aread(a, t, buf.data()) >= 0) out = buf.data();
+  }
+  H5Tclose(t);
+  H5Aclose(a);
+  return out;
+}
+
+std::vector<std::string> group_members(hid_t file, const std::string& group) {
+  std::vector<std::string> out;
+  if (H5Lexists(file, group.c_str(), H5P_DEFAULT) <= 0) return out;
+  const hid_t g = H5Gopen2(file, group.c_str(), H5P_DEFAULT);
+  H5G_info_t info;
+  if (g >= 0 && H5Gget_info(g, &info) >= 0) {
+    for (hsize_t i = 0; i < info.nlinks; ++i) {
+      const ssize_t len =
+          H5Lget_name_by_idx(g, ".", H5_INDEX_NAME, H5_ITER_INC, i, nullptr, 0, H5P_DEFAULT);
+      std::string name(std::size_t(len), '\0');
+      H5Lget_name_by_idx(g, ".", H5_INDEX_NAME, H5_ITER_INC, i, name.data(), std::size_t(len) + 1,
+                         H5P_DEFAULT);
+      out.push_back(name);
+    }
+  }
+  if (g >= 0) H5Gclose(g);
+  return out;
 }
 
 }  // namespace pound::h5

@@ -1,7 +1,8 @@
 #pragma once
 // Small RAII helpers over the serial HDF5 C API: create a file, named groups and datasets of
-// doubles or ints (1-D and 2-D, row-major), string attributes. Used by the programs' writers
-// only; kernels never touch files.
+// doubles or ints (1-D and 2-D, row-major), string attributes, and the two reads the result
+// files' readers share. Used by the programs' writers and readers only; kernels never touch
+// files.
 #include <hdf5.h>
 
 #include <string>
@@ -35,5 +36,11 @@ void write(hid_t file, const std::string& path, const std::vector<int>& data);
 void attribute(hid_t file, const std::string& object, const std::string& name,
                const std::string& value);
 void attribute(hid_t file, const std::string& object, const std::string& name, double value);
+
+/// An attribute of the file's root group as text: a string (variable or fixed length) as it
+/// is, a number as the shortest text that reads back the same. "" when absent or unreadable.
+std::string root_attribute_text(hid_t file, const std::string& name);
+/// The names of the links directly under a group, in name order; empty when it is absent.
+std::vector<std::string> group_members(hid_t file, const std::string& group);
 
 }  // namespace pound::h5
