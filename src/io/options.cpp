@@ -127,6 +127,12 @@ void Options::parse(int argc, const char* const* argv) {
             .style(po::command_line_style::unix_style ^ po::command_line_style::allow_guessing)
             .run(),
         vm);
+  } catch (const po::unknown_option& e) {
+    // Name the keys that would be valid there, as for an unknown key in a study file.
+    std::string key = e.get_option_name();
+    key.erase(0, key.find_first_not_of('-'));
+    throw InputError("command line: unknown option '--" + key + "' for 'pound " + command_ +
+                     "'; valid keys: " + valid_keys_hint(key));
   } catch (const po::error& e) {
     throw InputError(std::string("command line: ") + e.what() + " (see 'pound " + command_ +
                      " --help')");

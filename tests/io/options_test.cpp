@@ -84,5 +84,17 @@ TEST(Options, UnknownKeySuggestsTheDeclaredOne) {
   }
 }
 
+TEST(Options, UnknownCommandLineKeyListsItsSection) {
+  Options o("simulate", "", specs());
+  try {
+    o.parse({"--pair1.gpa", "0.02"});
+    FAIL() << "an unknown option was accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "command line: unknown option '--pair1.gpa' for 'pound simulate'; valid keys: "
+              "pair#.gap");
+  }
+}
+
 }  // namespace
 }  // namespace pound
