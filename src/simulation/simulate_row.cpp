@@ -1,5 +1,8 @@
 #include "simulation/simulate_row.hpp"
 
+#include <cmath>
+#include <limits>
+
 namespace pound {
 
 RowSimulation summarize_runs(const BuildingRow& row, RowResult free, RowResult pounding) {
@@ -24,6 +27,21 @@ RowSimulation summarize_runs(const BuildingRow& row, RowResult free, RowResult p
       f.drift_amplification = ratio(f.drift_ratio_pounding, f.drift_ratio_free);
       f.accel_pounding = out.pounding.peak_abs_accel(i);
       f.accel_free = out.free.peak_abs_accel(i);
+      auto residual = [&](const RowResult& r) {
+        if (r.u_end.size() <= i) return std::numeric_limits<double>::quiet_NaN();
+        return std::fabs(r.u_end(i) - (j > 0 ? r.u_end(i - 1) : 0.0)) / bd.storey_heights[j];
+      };
+      f.residual_drift_ratio_pounding = residual(out.pounding);
+      f.residual_drift_ratio_free = residual(out.free);
+      const double uy = bd.storey(j).uy();  // infinite without yield shears
+      const double nan = std::numeric_limits<double>::quiet_NaN();
+      f.ductility_pounding = bd.yield_shears.empty() ? nan : out.pounding.peak_drift(i) / uy;
+      f.ductility_free = bd.yield_shears.empty() ? nan : out.free.peak_drift(i) / uy;
+      auto energy = [&](const RowResult& r) {
+        return r.hysteretic_energy.size() > i ? r.hysteretic_energy(i) : 0.0;
+      };
+      f.hysteretic_energy_pounding = energy(out.pounding);
+      f.hysteretic_energy_free = energy(out.free);
       out.floors.push_back(f);
     }
   }
@@ -51,6 +69,7 @@ RowSimulation simulate_row(const BuildingRow& row, const GroundMotion& motion,
   p.motion = &motion;
   p.t_end = motion.duration() + opt.extra_time;
   p.record_history = opt.record_history;
+  p.track_energy = opt.track_energy;
   RowResult free = solve(p, integ);  // no laws: contacts off
   for (const auto& l : laws) p.laws.push_back(l.get());
   RowResult pounding = solve(p, integ);

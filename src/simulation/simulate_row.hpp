@@ -20,6 +20,13 @@ struct FloorResponse {
   double drift_ratio_pounding = 0.0, drift_ratio_free = 0.0;  ///< peak storey drift / height [-]
   double drift_amplification = 0.0;                           ///< [-]
   double accel_pounding = 0.0, accel_free = 0.0;  ///< peak absolute acceleration [m/s^2]
+  /// |storey drift| at the end of the run (record plus extra_time) / storey height [-]
+  double residual_drift_ratio_pounding = 0.0, residual_drift_ratio_free = 0.0;
+  /// Ductility demand: peak storey drift / yield drift Fy / k0 [-]; NaN when the building has
+  /// no yield shears.
+  double ductility_pounding = 0.0, ductility_free = 0.0;
+  /// Hysteretic energy dissipated by the storey below the floor [J].
+  double hysteretic_energy_pounding = 0.0, hysteretic_energy_free = 0.0;
 };
 
 struct SiteResponse {
@@ -40,6 +47,7 @@ struct RowSimulation {
 struct RowSimulationOptions {
   double extra_time = 0.0;      ///< free vibration after the record ends [s]
   bool record_history = false;  ///< keep time histories of both runs
+  bool track_energy = false;    ///< energy balance of both runs (RowResult::energy)
 };
 
 /// The response measures of physics.md section 4 from a free and a pounding run of the same

@@ -31,6 +31,21 @@ struct History {
   std::vector<Eigen::VectorXd> u;      ///< floor displacements relative to the ground [m]
   std::vector<Eigen::VectorXd> a_abs;  ///< absolute floor accelerations [m/s^2]
   std::vector<Eigen::VectorXd> force;  ///< contact force per site [N]
+  std::vector<Eigen::VectorXd> shear;  ///< shear of the storey below each floor DOF [N]
+};
+
+/// Energy balance of a run, relative to the ground (Uang & Bertero 1990, "relative" energy
+/// equation) [J]: input = kinetic + strain + damping + hysteretic + contact, where input is the
+/// work of the effective earthquake forces -M 1 ag on the floors' motion, kinetic and strain
+/// are the values at the end, and contact is the work the floors did on the contacts (what a
+/// contact dissipated, plus what is still stored in a closed contact or, for the damped Sears
+/// model, in the slabs' axial vibration at the end).
+struct EnergyBalance {
+  double input = 0.0, kinetic = 0.0, strain = 0.0, damping = 0.0, hysteretic = 0.0,
+         contact = 0.0;
+  /// input - (kinetic + strain + damping + hysteretic + contact): zero up to the integration
+  /// error [J].
+  double residual() const { return input - (kinetic + strain + damping + hysteretic + contact); }
 };
 
 struct RowResult {
@@ -38,7 +53,9 @@ struct RowResult {
   Eigen::VectorXd peak_drift;      ///< max |u_j - u_{j-1}| per floor DOF (its storey) [m]
   Eigen::VectorXd peak_abs_accel;  ///< max |u'' + ag| per floor DOF [m/s^2]
   std::vector<SiteResult> sites;
-  Eigen::VectorXd u_end, v_end;  ///< state at the end [m], [m/s]
+  Eigen::VectorXd hysteretic_energy;  ///< per floor DOF: dissipated by its storey [J]
+  EnergyBalance energy;               ///< when RowProblem::track_energy (else zeros)
+  Eigen::VectorXd u_end, v_end;       ///< state at the end [m], [m/s]
   double t_end = 0.0;            ///< time reached [s]
   long steps = 0, rejected = 0, events = 0;
   History history;
@@ -52,6 +69,7 @@ struct RowProblem {
   Eigen::VectorXd u0, v0;  ///< initial state (empty: at rest) [m], [m/s]
   double t_end = 0.0;      ///< [s]
   bool record_history = false;
+  bool track_energy = false;  ///< integrate the energy balance (RowResult::energy)
   /// Stop as soon as every contact has ended and all sites separate (free impacts).
   bool stop_after_separation = false;
 };

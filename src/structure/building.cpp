@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "hysteresis/registry.hpp"
 
 namespace pound {
 
@@ -28,6 +29,38 @@ void validate(const Building& b, const std::string& where) {
   }
   if (!(b.damping_ratio >= 0.0 && b.damping_ratio < 1.0))
     throw InputError(where + ": damping ratio must be in [0, 1)");
+  find_storey_law(b.hysteresis, where);
+  auto per_storey = [&](const std::vector<double>& v, const char* what) {
+    if (!v.empty() && v.size() != n)
+      throw InputError(where + ": " + std::to_string(n) + " storeys but " +
+                       std::to_string(v.size()) + " values of " + what +
+                       "; give one value or one per storey");
+  };
+  per_storey(b.yield_shears, "yield_shears");
+  per_storey(b.hardening, "hardening");
+  per_storey(b.bw_n, "bw_n");
+  if (b.inelastic() && b.yield_shears.empty())
+    throw InputError(where + ": hysteresis '" + b.hysteresis +
+                     "' needs yield_shears (the storey yield shears Fy > 0 in N, one value or one "
+                     "per storey)");
+  for (std::size_t j = 0; j < n; ++j) {
+    const std::string f = " of storey " + std::to_string(j + 1);
+    if (!b.yield_shears.empty() && !(b.yield_shears[j] > 0.0 && !std::isnan(b.yield_shears[j])))
+      throw InputError(where + ": yield shear" + f + " must be a number > 0 N");
+    if (!b.hardening.empty() && !(b.hardening[j] >= 0.0 && b.hardening[j] < 1.0))
+      throw InputError(where + ": hardening" + f + " must be in [0, 1) (b = k_post / k0)");
+    if (!b.bw_n.empty() && !(b.bw_n[j] > 0.0 && std::isfinite(b.bw_n[j])))
+      throw InputError(where + ": bw_n" + f + " must be a finite number > 0");
+  }
+}
+
+StoreyParameters Building::storey(int j) const {
+  StoreyParameters p;
+  p.k0 = stiffnesses[j];
+  if (!yield_shears.empty()) p.Fy = yield_shears[j];
+  if (!hardening.empty()) p.b = hardening[j];
+  if (!bw_n.empty()) p.n = bw_n[j];
+  return p;
 }
 
 BuildingMatrices assemble(const Building& b) {

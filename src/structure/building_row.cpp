@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "hysteresis/registry.hpp"
+
 namespace pound {
 
 int colliding_levels(const BuildingRow& row, int pair) {
@@ -25,6 +27,17 @@ AssembledRow assemble(const BuildingRow& row) {
     out.C.block(o, o, nb, nb) = m.C;
     out.K.block(o, o, nb, nb) = m.K;
     out.periods.push_back(m.periods);
+    const StoreyLaw& law = find_storey_law(row.buildings[b].hysteresis, row.buildings[b].name);
+    out.linear = out.linear && law.linear();
+    for (int j = 0; j < nb; ++j) {
+      RowStorey s;
+      s.law = &law;
+      s.p = row.buildings[b].storey(j);
+      s.below = j > 0 ? o + j - 1 : -1;
+      s.above = j + 1 < nb ? o + j + 1 : -1;
+      s.building = static_cast<int>(b);
+      out.storeys.push_back(s);
+    }
   }
   out.inv_mass = out.M.diagonal().cwiseInverse();
   for (int p = 0; p + 1 < static_cast<int>(row.buildings.size()); ++p) {

@@ -6,6 +6,7 @@
 #include <Eigen/Dense>
 #include <vector>
 
+#include "hysteresis/storey_law.hpp"
 #include "structure/building.hpp"
 
 namespace pound {
@@ -26,13 +27,26 @@ struct ContactSite {
   double gap = 0.0;   ///< at-rest gap [m]
 };
 
+/// The storey below one floor DOF (storey j joins floor j-1, or the ground, to floor j).
+struct RowStorey {
+  const StoreyLaw* law = nullptr;  ///< hysteresis/registry.hpp
+  StoreyParameters p;              ///< k0 = the storey stiffness of K
+  int below = -1;                  ///< global DOF of the floor below, -1 for the ground
+  int above = -1;                  ///< global DOF of the floor above, -1 for the roof
+  int building = 0;                ///< 0-based
+};
+
 /// The assembled row: block-diagonal matrices over all floors, building after building.
+/// K is built from the initial storey stiffnesses (and C from it and M); a storey whose law is
+/// not linear replaces its K contribution by its shear (see storeys).
 struct AssembledRow {
   Eigen::MatrixXd M, C, K;
   Eigen::VectorXd inv_mass;              ///< 1 / M_ii [1/kg]
   std::vector<int> offset;               ///< first global DOF of each building
   std::vector<Eigen::VectorXd> periods;  ///< per building [s]
   std::vector<ContactSite> sites;
+  std::vector<RowStorey> storeys;        ///< one per floor DOF
+  bool linear = true;                    ///< every storey law linear (elastic)
   int dofs() const { return static_cast<int>(inv_mass.size()); }
 };
 

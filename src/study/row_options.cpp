@@ -5,6 +5,7 @@
 
 #include "contact/registry.hpp"
 #include "contact/restitution.hpp"
+#include "hysteresis/registry.hpp"
 #include "motion/motion_processing.hpp"
 #include "motion/motion_reader.hpp"
 
@@ -20,6 +21,13 @@ std::vector<OptionSpec> row_option_specs() {
       {"building#.damping", "-", "0.05", "inherent damping ratio, in [0, 1)"},
       {"building#.damping_type", "", "rayleigh",
        "rayleigh (ratio on modes 1 and 2) or modal (ratio on every mode)"},
+      {"building#.hysteresis", "", "elastic", "storey law: " + storey_law_names()},
+      {"building#.yield_shears", "N", "",
+       "storey yield shears Fy > 0 (one value for all storeys, or a list); required by the "
+       "inelastic laws"},
+      {"building#.hardening", "-", "0.02",
+       "post-yield stiffness ratio b = k_post / k0 in [0, 1) (one value or a list)"},
+      {"building#.bw_n", "-", "2", "Bouc-Wen sharpness n > 0 (one value or a list)"},
       {"pair#.gap", "m", "0",
        "at-rest gap between building # and #+1 (one value, or one per colliding floor)"},
       {"contact.model", "", "lve", "contact model: " + contact_model_names()},
@@ -63,16 +71,40 @@ bool parse_bool(const Options& opt, const std::string& key) {
   throw opt.invalid(key, "valid: true or false");
 }
 
-std::vector<double> positive_list(const Options& opt, const std::string& key, std::size_t n,
-                                  const std::string& what) {
+// One value for every storey or one per storey; `valid` checks a value.
+template <class Valid>
+std::vector<double> storey_list(const Options& opt, const std::string& key, std::size_t n,
+                                const std::string& what, Valid valid) {
   std::vector<double> v = opt.get_doubles(key);
   if (v.size() == 1 && n > 1) v.assign(n, v[0]);
   if (v.size() != n)
     throw opt.invalid(key, "expected " + std::to_string(n) + " values (one per floor), got " +
                                std::to_string(v.size()));
   for (double x : v)
-    if (!(x > 0)) throw opt.invalid(key, what + " must be > 0");
+    if (!valid(x)) throw opt.invalid(key, what);
   return v;
+}
+
+std::vector<double> positive_list(const Options& opt, const std::string& key, std::size_t n,
+                                  const std::string& what) {
+  return storey_list(opt, key, n, what + " must be > 0", [](double x) { return x > 0; });
+}
+
+// [buildingN] hysteresis, yield_shears, hardening, bw_n.
+void read_hysteresis(const Options& opt, const std::string& pre, Building& bd) {
+  const std::size_t n = bd.masses.size();
+  bd.hysteresis = opt.get_string(pre + "hysteresis");
+  find_storey_law(bd.hysteresis, opt.where(pre + "hysteresis"));
+  if (opt.given(pre + "yield_shears"))
+    bd.yield_shears = positive_list(opt, pre + "yield_shears", n, "every storey yield shear");
+  else if (bd.inelastic())
+    throw InputError(opt.where(pre + "yield_shears") + ": missing; hysteresis '" +
+                     bd.hysteresis +
+                     "' needs the storey yield shears Fy > 0 in N (one value or one per storey)");
+  bd.hardening = storey_list(opt, pre + "hardening", n, "valid: b = k_post / k0 in [0, 1)",
+                             [](double x) { return x >= 0 && x < 1; });
+  bd.bw_n = storey_list(opt, pre + "bw_n", n, "valid: a Bouc-Wen exponent n > 0",
+                        [](double x) { return x > 0; });
 }
 
 }  // namespace
@@ -106,6 +138,7 @@ BuildingRow row_from_options(const Options& opt) {
       bd.damping = DampingKind::modal;
     else
       throw opt.invalid(pre + "damping_type", "valid: rayleigh or modal");
+    read_hysteresis(opt, pre, bd);
     validate(bd, opt.where(pre + "masses"));
     row.buildings.push_back(bd);
   }

@@ -1,0 +1,73 @@
+#include "hysteresis/bilinear.hpp"
+
+#include <cmath>
+
+namespace pound {
+
+double BilinearStorey::z_of(const StoreyParameters& p, const StoreyState& s, double d) {
+  return s.branch == 0 ? s.z_anchor + (d - s.d_anchor) : s.branch * p.uy();
+}
+
+double BilinearStorey::shear(const StoreyParameters& p, const StoreyState& s, double d,
+                             const double*) const {
+  return p.k0 * (p.b * d + (1.0 - p.b) * z_of(p, s, d));
+}
+
+SwitchValue BilinearStorey::switch_value(int, const StoreyParameters& p, const StoreyState& s,
+                                         double d, double dd, double ddd) const {
+  if (s.branch == 0) {
+    // |z| reaches uy: (z^2 - uy^2) / (2 uy) is smooth and ~ |z| - uy near the yield drift.
+    const double uy = p.uy(), z = z_of(p, s, d);
+    return {(z - uy) * (z + uy) / (2.0 * uy), z * dd / uy};
+  }
+  return {-s.branch * dd, -s.branch * ddd};  // the drift rate reverses: unloading
+}
+
+void BilinearStorey::on_switch(int, const StoreyParameters& p, StoreyState& s, double d,
+                               const double*) const {
+  const double uy = p.uy();
+  if (s.branch == 0) {
+    s.branch = z_of(p, s, d) > 0.0 ? 1 : -1;
+  } else {
+    s.dissipated += (1.0 - p.b) * p.Fy * std::fabs(d - s.d_anchor);
+    s.branch = 0;
+  }
+  // Both branches start from z = +-uy: yielding at the yield drift, unloading from it.
+  s.z_anchor = (s.branch != 0 ? s.branch : (s.z_anchor > 0.0 ? 1 : -1)) * uy;
+  s.d_anchor = d;
+}
+
+double BilinearStorey::dissipated(const StoreyParameters& p, const StoreyState& s, double d,
+                                  const double*) const {
+  return s.branch == 0 ? s.dissipated
+                       : s.dissipated + (1.0 - p.b) * p.Fy * std::fabs(d - s.d_anchor);
+}
+
+double BilinearStorey::stored(const StoreyParameters& p, const StoreyState& s, double d,
+                              const double*) const {
+  const double z = z_of(p, s, d);
+  return 0.5 * p.k0 * (p.b * d * d + (1.0 - p.b) * z * z);
+}
+
+double BilinearStorey::advance(const StoreyParameters& p, const StoreyState& committed, double d0,
+                               double d1, StoreyState& trial) const {
+  // Return map of the elastic-perfectly-plastic part (Simo & Hughes, Computational
+  // Inelasticity, sec. 1.4): elastic trial, then back onto |z| <= uy; its plastic work at the
+  // constant force (1 - b) Fy is the step's hysteretic energy.
+  const double uy = p.uy();
+  const double z_trial = z_of(p, committed, d0) + (d1 - d0);
+  trial = committed;
+  trial.d_anchor = d1;
+  if (std::fabs(z_trial) <= uy) {
+    trial.branch = 0;
+    trial.z_anchor = z_trial;
+  } else {
+    const int sign = z_trial > 0.0 ? 1 : -1;
+    trial.dissipated += (1.0 - p.b) * p.Fy * (std::fabs(z_trial) - uy);
+    trial.branch = sign;
+    trial.z_anchor = sign * uy;
+  }
+  return shear(p, trial, d1, nullptr);
+}
+
+}  // namespace pound
