@@ -27,11 +27,11 @@ namespace pound {
 
 /// Parameters of one storey [SI].
 struct StoreyParameters {
-  double k0 = 0.0;                                         ///< initial stiffness [N/m]
-  double Fy = std::numeric_limits<double>::infinity();    ///< yield shear [N]
-  double b = 0.02;                                         ///< hardening k_post / k0 [-]
-  double n = 2.0;                                          ///< Bouc-Wen sharpness [-]
-  double uy() const { return Fy / k0; }                    ///< yield drift [m]
+  double k0 = 0.0;                                      ///< initial stiffness [N/m]
+  double Fy = std::numeric_limits<double>::infinity();  ///< yield shear [N]
+  double b = 0.02;                                      ///< hardening k_post / k0 [-]
+  double n = 2.0;                                       ///< Bouc-Wen sharpness [-]
+  double uy() const { return Fy / k0; }                 ///< yield drift [m]
 };
 
 /// History variables of one storey; a law uses the members it documents.

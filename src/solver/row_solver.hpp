@@ -41,8 +41,7 @@ struct History {
 /// contact dissipated, plus what is still stored in a closed contact or, for the damped Sears
 /// model, in the slabs' axial vibration at the end).
 struct EnergyBalance {
-  double input = 0.0, kinetic = 0.0, strain = 0.0, damping = 0.0, hysteretic = 0.0,
-         contact = 0.0;
+  double input = 0.0, kinetic = 0.0, strain = 0.0, damping = 0.0, hysteretic = 0.0, contact = 0.0;
   /// input - (kinetic + strain + damping + hysteretic + contact): zero up to the integration
   /// error [J].
   double residual() const { return input - (kinetic + strain + damping + hysteretic + contact); }
@@ -56,7 +55,7 @@ struct RowResult {
   Eigen::VectorXd hysteretic_energy;  ///< per floor DOF: dissipated by its storey [J]
   EnergyBalance energy;               ///< when RowProblem::track_energy (else zeros)
   Eigen::VectorXd u_end, v_end;       ///< state at the end [m], [m/s]
-  double t_end = 0.0;            ///< time reached [s]
+  double t_end = 0.0;                 ///< time reached [s]
   long steps = 0, rejected = 0, events = 0;
   History history;
 };

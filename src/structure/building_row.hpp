@@ -45,8 +45,8 @@ struct AssembledRow {
   std::vector<int> offset;               ///< first global DOF of each building
   std::vector<Eigen::VectorXd> periods;  ///< per building [s]
   std::vector<ContactSite> sites;
-  std::vector<RowStorey> storeys;        ///< one per floor DOF
-  bool linear = true;                    ///< every storey law linear (elastic)
+  std::vector<RowStorey> storeys;  ///< one per floor DOF
+  bool linear = true;              ///< every storey law linear (elastic)
   int dofs() const { return static_cast<int>(inv_mass.size()); }
 };
 

@@ -98,8 +98,7 @@ void read_hysteresis(const Options& opt, const std::string& pre, Building& bd) {
   if (opt.given(pre + "yield_shears"))
     bd.yield_shears = positive_list(opt, pre + "yield_shears", n, "every storey yield shear");
   else if (bd.inelastic())
-    throw InputError(opt.where(pre + "yield_shears") + ": missing; hysteresis '" +
-                     bd.hysteresis +
+    throw InputError(opt.where(pre + "yield_shears") + ": missing; hysteresis '" + bd.hysteresis +
                      "' needs the storey yield shears Fy > 0 in N (one value or one per storey)");
   bd.hardening = storey_list(opt, pre + "hardening", n, "valid: b = k_post / k0 in [0, 1)",
                              [](double x) { return x >= 0 && x < 1; });
