@@ -35,6 +35,12 @@ void print_json(const RowSimulation& s, const BuildingRow& row,
           .field("drift_amplification", f.drift_amplification)
           .field("peak_abs_accel_pounding_mps2", f.accel_pounding)
           .field("peak_abs_accel_free_mps2", f.accel_free)
+          .field("residual_drift_ratio_pounding", f.residual_drift_ratio_pounding)
+          .field("residual_drift_ratio_free", f.residual_drift_ratio_free)
+          .field("ductility_pounding", f.ductility_pounding)
+          .field("ductility_free", f.ductility_free)
+          .field("hysteretic_energy_pounding_J", f.hysteretic_energy_pounding)
+          .field("hysteretic_energy_free_J", f.hysteretic_energy_free)
           .end_object();
     }
     w.end_array().end_object();
@@ -67,6 +73,20 @@ void print_json(const RowSimulation& s, const BuildingRow& row,
           .end_object();
     w.end_array();
   }
+  // Energy balance of each run [J] (RowResult::energy).
+  for (const auto* run : {&s.pounding, &s.free}) {
+    const EnergyBalance& e = run->energy;
+    w.key(run == &s.pounding ? "energy_pounding" : "energy_free")
+        .begin_object()
+        .field("input_J", e.input)
+        .field("kinetic_J", e.kinetic)
+        .field("strain_J", e.strain)
+        .field("damping_J", e.damping)
+        .field("hysteretic_J", e.hysteretic)
+        .field("contact_J", e.contact)
+        .field("residual_J", e.residual())
+        .end_object();
+  }
   w.end_object();
   std::cout << w.str() << "\n";
 }
@@ -82,6 +102,27 @@ void print_table(const RowSimulation& s, const BuildingRow& row,
                 row.buildings[f.building].name.c_str(), f.floor, f.disp_pounding, f.disp_free,
                 f.disp_amplification, f.drift_ratio_pounding, f.drift_ratio_free,
                 f.drift_amplification, f.accel_pounding / kGravity, f.accel_free / kGravity);
+  // Yielding storeys (hysteresis other than elastic, or yield shears given).
+  bool yielding = false;
+  for (const auto& b : row.buildings)
+    yielding = yielding || b.inelastic() || !b.yield_shears.empty();
+  if (yielding) {
+    std::printf("\n%-12s %5s %14s %14s %10s %10s %14s %14s\n", "building", "storey", "resid_pnd[-]",
+                "resid_free[-]", "duct_pnd", "duct_free", "E_hyst_pnd[J]", "E_hyst_free[J]");
+    for (const auto& f : s.floors)
+      std::printf("%-12s %5d %14.5g %14.5g %10.4g %10.4g %14.6g %14.6g\n",
+                  row.buildings[f.building].name.c_str(), f.floor, f.residual_drift_ratio_pounding,
+                  f.residual_drift_ratio_free, f.ductility_pounding, f.ductility_free,
+                  f.hysteretic_energy_pounding, f.hysteretic_energy_free);
+  }
+  std::printf("\n%-10s %12s %12s %12s %12s %12s %12s %12s\n", "energy[J]", "input", "kinetic",
+              "strain", "damping", "hysteretic", "contact", "residual");
+  for (const auto* run : {&s.pounding, &s.free}) {
+    const EnergyBalance& e = run->energy;
+    std::printf("%-10s %12.6g %12.6g %12.6g %12.6g %12.6g %12.6g %12.3g\n",
+                run == &s.pounding ? "pounding" : "free", e.input, e.kinetic, e.strain, e.damping,
+                e.hysteretic, e.contact, e.residual());
+  }
   std::printf("\n%-6s %5s %8s %14s %16s %14s\n", "pair", "floor", "impacts", "peak_force[N]",
               "peak_penetr[m]", "first_contact[s]");
   for (const auto& c : s.sites)
@@ -148,6 +189,7 @@ int run_simulate(int argc, const char* const* argv) {
   RowSimulationOptions so;
   so.extra_time = opt.get_nonnegative("simulation.extra_time");
   so.record_history = opt.given("histories");
+  so.track_energy = true;
   if (is_sears) {
     // The step limits need the motion: a too large --dt fails here, before any output.
     const std::string dt_key = opt.given("dt") ? "dt" : "sears.dt";

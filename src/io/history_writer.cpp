@@ -1,5 +1,7 @@
 #include "io/history_writer.hpp"
 
+#include <cmath>
+
 #include "io/atomic_file.hpp"
 #include "io/h5.hpp"
 #include "pound/version.hpp"
@@ -11,11 +13,12 @@ void write_run(hid_t f, const std::string& group, const History& h) {
   const std::size_t steps = h.t.size();
   const std::size_t dofs = steps ? static_cast<std::size_t>(h.u[0].size()) : 0;
   const std::size_t sites = steps ? static_cast<std::size_t>(h.force[0].size()) : 0;
-  std::vector<double> u(steps * dofs), a(steps * dofs), force(steps * sites);
+  std::vector<double> u(steps * dofs), a(steps * dofs), force(steps * sites), shear(steps * dofs);
   for (std::size_t s = 0; s < steps; ++s) {
     for (std::size_t i = 0; i < dofs; ++i) {
       u[s * dofs + i] = h.u[s](i);
       a[s * dofs + i] = h.a_abs[s](i);
+      shear[s * dofs + i] = s < h.shear.size() ? h.shear[s](i) : std::nan("");
     }
     for (std::size_t i = 0; i < sites; ++i) force[s * sites + i] = h.force[s](i);
   }
@@ -23,6 +26,9 @@ void write_run(hid_t f, const std::string& group, const History& h) {
   h5::write(f, group + "/displacement", u, steps, dofs, "m");
   h5::write(f, group + "/abs_acceleration", a, steps, dofs, "m/s^2");
   h5::write(f, group + "/contact_force", force, steps, sites, "N");
+  // Shear of the storey below each floor (storey j joins floor j-1 and floor j): plotted
+  // against the storey drift it gives the hysteresis loops.
+  h5::write(f, group + "/storey_shear", shear, steps, dofs, "N");
 }
 
 }  // namespace

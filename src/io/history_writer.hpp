@@ -8,6 +8,8 @@
 //   /pounding/displacement [steps, dofs]   m, relative to the ground
 //   /pounding/abs_acceleration [steps, dofs]  m/s^2
 //   /pounding/contact_force [steps, sites] N
+//   /pounding/storey_shear [steps, dofs]   N, shear of the storey below each floor (against the
+//                                          storey drift u_dof - u_below: hysteresis loops)
 //   /free/...                              the same without pounding
 //   /motion/time, /motion/acceleration     s, m/s^2
 // Root attributes: config (resolved study), engine_version, git_revision.

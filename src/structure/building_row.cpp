@@ -10,6 +10,24 @@ int colliding_levels(const BuildingRow& row, int pair) {
   return std::min(row.buildings[pair].floors(), row.buildings[pair + 1].floors());
 }
 
+std::vector<RowStorey> elastic_storeys(const AssembledRow& a) {
+  const StoreyLaw& law = find_storey_law("elastic", "elastic_storeys");
+  const int n = a.dofs(), nb = static_cast<int>(a.offset.size());
+  std::vector<RowStorey> out(static_cast<std::size_t>(n));
+  for (int b = 0; b < nb; ++b) {
+    const int o = a.offset[b], end = b + 1 < nb ? a.offset[b + 1] : n;
+    for (int i = o; i < end; ++i) {
+      RowStorey& s = out[static_cast<std::size_t>(i)];
+      s.law = &law;
+      s.below = i > o ? i - 1 : -1;
+      s.above = i + 1 < end ? i + 1 : -1;
+      s.building = b;
+      s.p.k0 = a.K(i, i) + (s.above >= 0 ? a.K(i, s.above) : 0.0);
+    }
+  }
+  return out;
+}
+
 AssembledRow assemble(const BuildingRow& row) {
   AssembledRow out;
   int n = 0;

@@ -50,6 +50,10 @@ struct AssembledRow {
   int dofs() const { return static_cast<int>(inv_mass.size()); }
 };
 
+/// Linear elastic storeys for an assembled row built by hand (free bodies, tests): the storey
+/// stiffness k_i = K(i, i) + K(i, i+1) and the floors below from the building offsets.
+std::vector<RowStorey> elastic_storeys(const AssembledRow& a);
+
 /// Number of colliding levels of pair p (min floor count).
 int colliding_levels(const BuildingRow& row, int pair);
 AssembledRow assemble(const BuildingRow& row);
