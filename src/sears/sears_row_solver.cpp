@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "sears/newmark_storeys.hpp"
 #include "sears/sears_row_layout.hpp"
 #include "sears/sears_simulation.hpp"
 #include "sears/translation_bound.hpp"
@@ -84,6 +85,8 @@ class SearsRowSolver {
   void newmark_update(double h);
   void fine_step(double t_next);
   void coarse_step(double t_next);
+  void storey_pass(double h, const Eigen::MatrixXd& R, bool contacts);
+  void add_energy(double h, double t_next);
   bool contact_free();
   // Results after a step.
   void record_sites(bool coarse, double h, double t_next);
@@ -106,6 +109,16 @@ class SearsRowSolver {
   const NewmarkOperator nm_coarse;  // coarse steps carry no contact force (event stepping)
   Eigen::MatrixXd H, S;
   TranslationBound bound;
+
+  // Yielding storeys (sears/newmark_storeys.hpp): a_i+1 = a_hat + R r_i+1 - H F, R = Mt^-1 B
+  // for each step size; r iterated with the storeys' return maps.
+  NewmarkStoreys storeys;
+  Eigen::MatrixXd R_fine, R_coarse;
+  Eigen::VectorXd r_next, a_base, u_end;
+  // Energy balance (p.track_energy): the work terms of each step, trapezoidal in the step's
+  // end values, which Newmark's average-acceleration scheme balances exactly for linear storeys.
+  Eigen::VectorXd u_prev, v_prev, cv;
+  double e_input = 0.0, e_damping = 0.0, e_contact = 0.0;
 
   // Floor state [m], [m/s], [m/s^2]; contact forces [N] and overlaps [m] per site.
   Eigen::VectorXd u, v, acc, F, F_next, delta_pred, delta, u_hat, a_next, work2;
@@ -167,7 +180,8 @@ SearsRowSolver::SearsRowSolver(const SearsRowProblem& p_in, const SearsRowModel&
       mt(newmark_matrix(a, dt)),
       nm_fine(a, mt),
       nm_coarse(a, Eigen::LLT<Eigen::MatrixXd>(newmark_matrix(a, hc))),
-      bound(a, p.motion ? p.motion->pga() : 0.0) {
+      bound(a, p.motion ? p.motion->pga() : 0.0),
+      storeys(a, p.u0.size() ? p.u0 : Eigen::VectorXd::Zero(a.dofs())) {
   build_banks(L, row, model, dt);
   if (event)
     for (auto& b : L.banks) b.set_free_step(hc);
@@ -182,7 +196,18 @@ SearsRowSolver::SearsRowSolver(const SearsRowProblem& p_in, const SearsRowModel&
   const Eigen::VectorXd m_ones = a.M * Eigen::VectorXd::Ones(n);
   u = p.u0.size() ? p.u0 : Eigen::VectorXd::Zero(n);
   v = p.v0.size() ? p.v0 : Eigen::VectorXd::Zero(n);
-  acc = a.M.ldlt().solve(-m_ones * ag_at(0.0) - a.C * v - a.K * u);
+  if (storeys.linear()) {
+    acc = a.M.ldlt().solve(-m_ones * ag_at(0.0) - a.C * v - a.K * u);
+  } else {
+    // f = K u - B r (sears/newmark_storeys.hpp).
+    R_fine = storeys.influence(mt);
+    R_coarse = storeys.influence(Eigen::LLT<Eigen::MatrixXd>(newmark_matrix(a, hc)));
+    Eigen::VectorXd Br = storeys.correction();
+    for (int j = 0; j < n; ++j)
+      if (a.storeys[j].below >= 0) Br(a.storeys[j].below) -= storeys.correction()(j);
+    acc = a.M.ldlt().solve(-m_ones * ag_at(0.0) - a.C * v - a.K * u + Br);
+    r_next = storeys.correction();
+  }
   F = Eigen::VectorXd::Zero(ns);
   F_next = F;
   delta_pred.resize(ns);
@@ -385,18 +410,23 @@ void SearsRowSolver::newmark_update(double h) {
 // One step of Th. 8.8 made implicit in the contact forces (sears_simulation.hpp).
 void SearsRowSolver::fine_step(double t_next) {
   newmark_predict(dt, nm_fine, t_next);
-  u_hat = u + dt * v + (0.25 * dt * dt) * (acc + a_next);
   loads(F, begin);
-  F_next.setZero();
-  if (p.contacts && ns > 0) {
-    F_next = F;  // warm start (zero at guarded sites)
-    do {
-      predict_overlaps();
-      solve_forces(L.laws, S, delta_pred, guarded, F_next);
-    } while (n_asleep > 0 && !guards_hold());
+  if (storeys.linear()) {
+    u_hat = u + dt * v + (0.25 * dt * dt) * (acc + a_next);
+    F_next.setZero();
+    if (p.contacts && ns > 0) {
+      F_next = F;  // warm start (zero at guarded sites)
+      do {
+        predict_overlaps();
+        solve_forces(L.laws, S, delta_pred, guarded, F_next);
+      } while (n_asleep > 0 && !guards_hold());
+    }
+  } else {
+    storey_pass(dt, R_fine, true);
   }
   if (ns > 0) a_next.noalias() -= H * F_next;
   newmark_update(dt);
+  if (!storeys.linear()) storeys.commit();
   loads(F_next, end);
   for (int k = 0; k < nf; ++k) {
     if (asleep[k]) {
@@ -411,9 +441,41 @@ void SearsRowSolver::fine_step(double t_next) {
   }
 }
 
+// The step with yielding storeys: a_next = a_hat + R r_next (and - H F_next), r_next from the
+// storeys' return maps at the end-of-step displacements, iterated to a fixed point; with
+// `contacts` the contact forces are solved again in every pass (warm started).
+void SearsRowSolver::storey_pass(double h, const Eigen::MatrixXd& R, bool contacts) {
+  a_base = a_next;
+  r_next = storeys.correction();
+  F_next.setZero();
+  if (contacts && p.contacts && ns > 0) F_next = F;  // warm start (zero at guarded sites)
+  for (int pass = 0;; ++pass) {
+    a_next = a_base;
+    a_next.noalias() += R * r_next;
+    u_hat = u + h * v + (0.25 * h * h) * (acc + a_next);
+    if (contacts && p.contacts && ns > 0) {
+      do {
+        predict_overlaps();
+        solve_forces(L.laws, S, delta_pred, guarded, F_next);
+      } while (n_asleep > 0 && !guards_hold());
+      u_end = u_hat;
+      u_end.noalias() -= (0.25 * h * h) * (H * F_next);
+    } else {
+      u_end = u_hat;
+    }
+    if (storeys.trial(u, u_end, r_next)) return;
+    ++out.counts.storey_iterations;
+    if (pass == 50)
+      throw NumericalError(
+          "damped Sears model: the yielding storeys did not converge in 50 passes of a step");
+  }
+}
+
 void SearsRowSolver::coarse_step(double t_next) {  // F = 0 at both ends
   newmark_predict(hc, nm_coarse, t_next);
+  if (!storeys.linear()) storey_pass(hc, R_coarse, false);
   newmark_update(hc);
+  if (!storeys.linear()) storeys.commit();
   F_next.setZero();
   loads(F_next, end);
   // Without contacts the modes are never loaded and stay at rest (zero displacement and
@@ -448,7 +510,10 @@ bool SearsRowSolver::contact_free() {
     return true;
   };
   if (!holds([&](int s) { return !in_contact[s] && F(s) == 0.0 && delta(s) < 0.0; })) return false;
-  bound.set_state(u, v);
+  if (storeys.linear())
+    bound.set_state(u, v);
+  else
+    bound.set_state(u, v, storeys.strain_by_building(u));
   // The building translation alone first (cheap); each site's bound is kept for the full test
   // below (waking a dormant slab changes the overlap, not the buildings' state).
   if (!holds([&](int s) {
@@ -565,6 +630,10 @@ SearsRowResult SearsRowSolver::run() {
     const double h = coarse ? hc : dt;
     i += coarse ? st.ratio : 1;
     const double t_next = i * dt;
+    if (p.track_energy) {
+      u_prev = u;
+      v_prev = v;
+    }
     if (coarse) {
       coarse_step(t_next);
       ++out.counts.coarse;
@@ -578,6 +647,7 @@ SearsRowResult SearsRowSolver::run() {
       throw NumericalError("damped Sears model: non-finite state at t = " + std::to_string(t_next) +
                            " s");
     const double ag = ag_at(t_next);
+    if (p.track_energy) add_energy(h, t_next);
     record_sites(coarse, h, t_next);
     F = F_next;
     record_peaks(coarse, ag);
@@ -586,6 +656,9 @@ SearsRowResult SearsRowSolver::run() {
       r.history.u.push_back(u);
       r.history.a_abs.push_back(acc + Eigen::VectorXd::Constant(n, ag));
       r.history.force.push_back(F);
+      Eigen::VectorXd shear(n);
+      for (int k = 0; k < n; ++k) shear(k) = storeys.shear(u, k);
+      r.history.shear.push_back(shear);
     }
   }
   wake_all_dormant();
@@ -594,7 +667,36 @@ SearsRowResult SearsRowSolver::run() {
   r.v_end = v;
   r.t_end = steps * dt;
   r.steps = out.counts.fine + out.counts.coarse;
+  r.hysteretic_energy.resize(n);
+  for (int k = 0; k < n; ++k) r.hysteretic_energy(k) = storeys.dissipated(u, k);
+  if (p.track_energy) {
+    EnergyBalance& e = r.energy;
+    e.input = e_input;
+    e.damping = e_damping;
+    e.contact = e_contact;
+    e.kinetic = 0.5 * v.dot(a.M * v);
+    e.strain = storeys.stored(u);
+    e.hysteretic = r.hysteretic_energy.sum();
+  }
   return std::move(out);
+}
+
+// The step's work terms (Newmark average acceleration: u_i+1 - u_i = h (v_i + v_i+1) / 2 and
+// M (v_i+1 - v_i) = h (p - C v - f) averaged over the step's ends, so that the kinetic energy
+// changes by exactly the work of the averaged forces on the displacement increment):
+// input -du^T M 1 (ag_i + ag_i+1) / 2, damping h v_avg^T C v_avg, contact
+// sum_s (F_i + F_i+1) / 2 (du_L - du_R).
+void SearsRowSolver::add_energy(double h, double t_next) {
+  const double ag_avg = 0.5 * (ag_at(t_next - h) + ag_at(t_next));
+  double mdu = 0.0;
+  for (int k = 0; k < n; ++k) mdu += a.M(k, k) * (u(k) - u_prev(k));
+  e_input -= ag_avg * mdu;
+  const Eigen::VectorXd v_avg = 0.5 * (v + v_prev);
+  e_damping += h * v_avg.dot(a.C * v_avg);
+  for (int k = 0; k < ns; ++k) {
+    const int l = a.sites[k].dof_left, rr = a.sites[k].dof_right;
+    e_contact += 0.5 * (F(k) + F_next(k)) * ((u(l) - u_prev(l)) - (u(rr) - u_prev(rr)));
+  }
 }
 
 }  // namespace

@@ -131,6 +131,7 @@ struct SearsRowProblem {
   double t_end = 0.0;                    ///< [s]
   bool contacts = true;                  ///< false: the buildings vibrate independently
   bool record_history = false;           ///< one History entry per step
+  bool track_energy = false;             ///< the energy balance (RowResult::energy)
   Eigen::VectorXd u0, v0;                ///< initial floor state (empty: at rest) [m], [m/s]
 };
 
@@ -145,6 +146,7 @@ struct SearsStepCounts {
   long dormant_runs = 0;        ///< slabs gone dormant in runs of coarse steps
   long dormant_slab_steps = 0;  ///< coarse steps skipped by dormant slabs (per slab)
   long dormant_wakes = 0;       ///< dormant slabs woken (a bound did not settle a question)
+  long storey_iterations = 0;   ///< extra passes for yielding storeys (inelastic buildings)
 };
 
 struct SearsRowResult {

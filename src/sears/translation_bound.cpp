@@ -33,13 +33,16 @@ TranslationBound::TranslationBound(const AssembledRow& a, double ag_max)
   }
 }
 
-void TranslationBound::set_state(const Eigen::VectorXd& u, const Eigen::VectorXd& v) {
+void TranslationBound::set_state(const Eigen::VectorXd& u, const Eigen::VectorXd& v,
+                                 const std::vector<double>& strain) {
   for (std::size_t b = 0; b < begin_.size(); ++b) {
     const int o = begin_[b], m = size_[b];
-    double twoE = 0.0;
+    const bool own = !strain.empty() && strain[b] >= 0.0;
+    double twoE = own ? 2.0 * strain[b] : 0.0;
     for (int i = o; i < o + m; ++i) {
       twoE += M_(i, i) * v(i) * v(i);
-      for (int j = o; j < o + m; ++j) twoE += u(i) * K_(i, j) * u(j);
+      if (!own)
+        for (int j = o; j < o + m; ++j) twoE += u(i) * K_(i, j) * u(j);
     }
     sqrt2E_[b] = std::sqrt(std::max(0.0, twoE));
   }

@@ -13,6 +13,11 @@
 // two buildings the ground term cancels in u_L'' - u_R'', and Taylor's theorem gives
 //     (u_L - u_R)(t + tau) - (u_L - u_R)(t) <= max(0, v_L - v_R) h + h^2/2 (A_L + A_R)
 // for 0 <= tau <= h, A_k the acceleration bound above at the largest energy in the step.
+// Yielding storeys (hysteresis/storey_law.hpp): with u^T K u / 2 replaced by the storeys'
+// recoverable energy U = sum U_j, both steps still hold, because every law keeps
+// dE_h/dt >= 0 (E_b can only grow by the ground's work) and V_j^2 <= 2 k0_j U_j, so that
+// |(M^-1 f)_k| <= (|V_k| + |V_k+1|) / m_k <= sqrt(k0_k + k0_k+1) sqrt(2 U) / m_k = alpha_k sqrt(2
+// U).
 #include <Eigen/Dense>
 #include <vector>
 
@@ -26,7 +31,10 @@ class TranslationBound {
   TranslationBound(const AssembledRow& a, double ag_max);
 
   /// Updates the energies of every building from the state (u, v) [m], [m/s]. No allocation.
-  void set_state(const Eigen::VectorXd& u, const Eigen::VectorXd& v);
+  /// `strain` [J], when not empty, holds each building's recoverable strain energy (yielding
+  /// storeys); a negative entry means u^T K u / 2 of that building.
+  void set_state(const Eigen::VectorXd& u, const Eigen::VectorXd& v,
+                 const std::vector<double>& strain = {});
   /// Upper bound on the increase of u(dof_left) - u(dof_right) within h [s] of contact-free
   /// motion from the state given to set_state() [m]. The two DOFs must be in different buildings.
   double approach(int dof_left, int dof_right, const Eigen::VectorXd& v, double h) const;

@@ -1,0 +1,64 @@
+#pragma once
+// Yielding storeys in the Newmark steps of the damped Sears row solver (issue 16;
+// hysteresis/storey_law.hpp). The storey forces are written as
+//     f(u) = K u - B r,    r_j = k0_j d_j - V_j,
+// K the initial-stiffness matrix the Newmark operators were built with, V_j the shear of storey
+// j's law and r_j the part of the linear spring's shear the law removes ((B r)_j = r_j - r_j+1).
+// A step then solves Mt a_i+1 = p_i+1 - C (v + h/2 a) - K (u + h v + h^2/4 a) + B r_i+1 - D F,
+// i.e. a_i+1 = a_hat + R r_i+1 - H F with R = Mt^-1 B, and r_i+1 follows from the return map of
+// every storey at the end-of-step drifts. The fixed point is iterated with the constant Mt
+// (modified Newton with the initial stiffness, Chopra, Dynamics of Structures, sec. 5.7;
+// OpenSees' ModifiedNewton -initial): each pass contracts the error by about
+// (1 - b) (w h)^2 / 4, so two or three passes suffice; a step in which no storey leaves its
+// linear branch needs none. Kernel only: no files, no printing.
+#include <Eigen/Dense>
+#include <vector>
+
+#include "structure/building_row.hpp"
+
+namespace pound::sears {
+
+class NewmarkStoreys {
+ public:
+  /// The storeys of `a`, loaded monotonically from rest to the initial displacements u0 [m].
+  NewmarkStoreys(const AssembledRow& a, const Eigen::VectorXd& u0);
+
+  /// True when every storey is linear (r stays 0 and nothing here is needed).
+  bool linear() const { return linear_; }
+  /// The committed correction r per floor DOF [N].
+  const Eigen::VectorXd& correction() const { return r_; }
+  /// R = Mt^-1 B for a Newmark matrix Mt [1/kg].
+  Eigen::MatrixXd influence(const Eigen::LLT<Eigen::MatrixXd>& mt) const;
+
+  /// Trial states for the step from the committed displacements u to u_end [m]. Writes their
+  /// correction into `guess` and returns true when it differs from the guess given by no more
+  /// than a relative 1e-12 (converged).
+  bool trial(const Eigen::VectorXd& u, const Eigen::VectorXd& u_end, Eigen::VectorXd& guess);
+  /// Makes the last trial the committed state.
+  void commit();
+
+  /// Recoverable strain energy per building at the committed state and displacements u [J];
+  /// -1 for a building whose storeys are all linear (TranslationBound then uses u^T K u / 2).
+  const std::vector<double>& strain_by_building(const Eigen::VectorXd& u);
+  /// Storey shear of floor DOF i's storey at the committed state and displacements u [N].
+  double shear(const Eigen::VectorXd& u, int i) const;
+  /// Hysteretic energy dissipated by floor DOF i's storey (committed) [J].
+  double dissipated(const Eigen::VectorXd& u, int i) const;
+  /// Recoverable strain energy of all storeys (committed) [J].
+  double stored(const Eigen::VectorXd& u) const;
+
+ private:
+  double drift(const Eigen::VectorXd& u, int i) const {
+    const int b = storeys_[i].below;
+    return u(i) - (b >= 0 ? u(b) : 0.0);
+  }
+
+  std::vector<RowStorey> storeys_;
+  std::vector<StoreyState> committed_, trial_;
+  std::vector<char> building_linear_;
+  std::vector<double> strain_;
+  Eigen::VectorXd r_, r_trial_;
+  bool linear_ = true;
+};
+
+}  // namespace pound::sears
