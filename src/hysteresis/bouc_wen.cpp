@@ -51,7 +51,7 @@ double BoucWenStorey::advance(const StoreyParameters& p, const StoreyState& comm
   const double delta = d1 - d0;
   if (delta != 0.0) {
     const double sign = delta > 0.0 ? 1.0 : -1.0;
-    const double max_sub = p.uy() / (20.0 * std::max(1.0, p.n));
+    const double max_sub = p.uy() / (50.0 * std::max(1.0, p.n));
     const int m = std::max(1, static_cast<int>(std::ceil(std::fabs(delta) / max_sub)));
     const double h = delta / m, c = (1.0 - p.b) * p.k0;
     // dz/dd = slope(z), dE/dd = c z (1 - slope(z)) (energy per unit drift along the path).

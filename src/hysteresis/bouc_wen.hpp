@@ -9,7 +9,7 @@
 //     dE_h/dt = (1 - b) k0 z (dd - dz/dt) = (1 - b) k0 |z|^n (gamma z dd + beta |z dd|) >= 0,
 // with the recoverable energy U = k0 (b d^2 + (1 - b) z^2) / 2.
 // Incremental form: dz/dd along the drift path, by classical Runge-Kutta in d with sub-steps
-// of at most uy / (20 n) (the loading slope is -n / uy at saturation), energy alongside.
+// of at most uy / (50 n) (the loading slope is -n / uy at saturation), energy alongside.
 #include "hysteresis/storey_law.hpp"
 
 namespace pound {

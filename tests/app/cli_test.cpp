@@ -130,6 +130,39 @@ TEST_F(Cli, SearsStepTooLargeIsOneLineBeforeAnyOutput) {
                {"--sears.dt = '1e-2'", "largest allowed step is 0.000331"});
 }
 
+TEST_F(Cli, YieldingStoreyKeysAreValidated) {
+  // Issue 16: a missing yield_shears for an inelastic law, Fy <= 0, b outside [0, 1), n <= 0
+  // and an unknown law each give one line naming the key and what is valid.
+  const std::string b1 = "stiffnesses = 1e6, 1e6\n";
+  expect_error(study(b1, b1 + "hysteresis = bilinear\n"),
+               {"study.ini", "building1.yield_shears", "missing", "Fy > 0"});
+  expect_error(study(b1, b1 + "hysteresis = bouc-wen\nyield_shears = 2e4, 0\n"),
+               {"study.ini:5", "building1.yield_shears", "> 0"});
+  expect_error(study(b1, b1 + "hysteresis = bilinear\nyield_shears = 2e4\nhardening = 1\n"),
+               {"study.ini:6", "building1.hardening", "[0, 1)"});
+  expect_error(study(b1, b1 + "hardening = -0.1\n"), {"building1.hardening", "[0, 1)"});
+  expect_error(study(b1, b1 + "hysteresis = bouc-wen\nyield_shears = 2e4\nbw_n = 0\n"),
+               {"study.ini:6", "building1.bw_n", "n > 0"});
+  expect_error(study(b1, b1 + "hysteresis = takeda\n"),
+               {"study.ini:4", "building1.hysteresis", "elastic, bilinear, bouc-wen"});
+  expect_error(study(b1, b1 + "yield_shears = 1e4, 2e4, 3e4\n"),
+               {"building1.yield_shears", "expected 2 values"});
+}
+
+TEST_F(Cli, YieldingStoreysAreReportedWithTheEnergyBalance) {
+  const std::string b1 = "stiffnesses = 1e6, 1e6\n";
+  const CmdResult r =
+      run_pound("simulate --config " +
+                study(b1, b1 + "hysteresis = bilinear\nyield_shears = 8e3\nhardening = 0.05\n") +
+                " --motion.scale 3 --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  for (const char* f : {"residual_drift_ratio_pounding", "ductility_free",
+                        "hysteretic_energy_pounding_J", "energy_pounding", "residual_J"})
+    EXPECT_NE(r.out.find(std::string("\"") + f + "\""), std::string::npos) << f;
+  const auto p = r.out.find("\"ductility_free\":");
+  EXPECT_GT(std::stod(r.out.substr(p + 17)), 1.0) << r.out;  // the first storey yields
+}
+
 TEST_F(Cli, KeysTheChosenModelDoesNotReadAreNoted) {
   // A lumped study given a Sears key, and a Sears study given a lumped contact key: each runs,
   // with one note naming the key and where it came from.

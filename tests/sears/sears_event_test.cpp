@@ -12,6 +12,7 @@
 #include "../support/allocation_counter.hpp"
 #include "../support/buildings.hpp"
 #include "../support/ground_motions.hpp"
+#include "../support/studies.hpp"
 #include "core/error.hpp"
 #include "io/options.hpp"
 #include "sears/modal_bank.hpp"
@@ -196,23 +197,8 @@ TEST(SearsEvent, BriefContactInsideOneCoarseStepIsNotMissed) {
   EXPECT_NEAR(event.row.v_end(1), fixed.row.v_end(1), 1e-4 * 0.1);
 }
 
-struct StudyRun {
-  BuildingRow row;
-  SearsRowModel model;
-  GroundMotion motion;
-};
-
-StudyRun read_study(const std::string& file, std::vector<std::string> extra = {}) {
-  Options opt("simulate", "event stepping test", row_and_sears_option_specs());
-  std::vector<std::string> args = {"--config", std::string(POUND_SOURCE_DIR) + "/studies/" + file};
-  args.insert(args.end(), extra.begin(), extra.end());
-  opt.parse(args);
-  StudyRun r;
-  r.row = row_from_options(opt);
-  r.model = sears_row_from_options(opt, r.row);
-  r.motion = motion_from_options(opt);
-  return r;
-}
+using test::read_study;
+using test::StudyRun;
 
 TEST(SearsEvent, StudyKeySelectsTheStepping) {
   EXPECT_EQ(read_study("ch8-five-three.ini").model.stepping, SearsStepping::event);
