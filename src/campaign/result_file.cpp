@@ -76,7 +76,7 @@ void write_result_file(const std::string& path, const CampaignStudy& st,
     std::vector<std::unique_ptr<RowDataset>> params;
     for (const auto& p : st.parameters)
       params.push_back(std::make_unique<RowDataset>(fid, "/samples/" + p.key, n, 0, 0,
-                                                    p.key == "model" ? str : H5T_NATIVE_DOUBLE));
+                                                    p.is_label() ? str : H5T_NATIVE_DOUBLE));
     const char* names[] = {"peak_disp_pounding", "peak_disp_free",      "peak_drift_pounding",
                            "peak_drift_free",    "peak_accel_pounding", "peak_accel_free"};
     const char* units[] = {"m", "m", "-", "-", "m/s^2", "m/s^2"};
@@ -104,7 +104,7 @@ void write_result_file(const std::string& path, const CampaignStudy& st,
       im.write(r, &o.im);
       scale.write(r, &o.scale);
       for (std::size_t i = 0; i < st.parameters.size(); ++i) {
-        if (st.parameters[i].key == "model") {
+        if (st.parameters[i].is_label()) {
           const char* label =
               st.parameters[i].distribution.labels()[static_cast<std::size_t>(o.values[i])].c_str();
           params[i]->write(r, &label);

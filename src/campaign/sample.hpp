@@ -55,6 +55,9 @@ class SampleRunner {
   explicit SampleRunner(const CampaignStudy& study);
   ~SampleRunner();
   SampleDraw draw(long id);
+  /// The row, contact and Sears model of a drawn sample: the study's with the sample's values
+  /// applied (sampled_parameters.hpp).
+  SampleModel model(const SampleDraw& d) const;
   /// Never throws for a failing simulation: the failure is the outcome's status and message.
   SampleOutcome run(long id);
 

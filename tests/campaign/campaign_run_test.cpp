@@ -173,6 +173,34 @@ TEST(CampaignRun, StudyErrorCreatesNoFile) {
   EXPECT_EQ(sh(pound("--samples 4 --out " + out + " --force")), 0);
 }
 
+// Runs `pound campaign` on the smoke study with these arguments; returns the exit code and
+// stderr.
+std::pair<int, std::string> run_with_log(const std::string& args) {
+  ::setenv("ASAN_OPTIONS", "detect_leaks=0", 0);  // as in sh()
+  const std::string log = dir() + "/run.log";
+  const int s = std::system((pound(args) + " >/dev/null 2>" + log).c_str());
+  std::ifstream in(log);
+  return {WIFEXITED(s) ? WEXITSTATUS(s) : -1, std::string(std::istreambuf_iterator<char>(in), {})};
+}
+
+TEST(CampaignRun, BadStrengthOrHardeningIsOneLineExitTwoAndNoFile) {
+  const std::string out = dir() + "/bad-sample.h5";
+  const std::pair<std::string, std::vector<std::string>> cases[] = {
+      // Building 1 of the smoke study has no yield shears.
+      {"--sample.building1.strength_scale 'uniform(0.8,1.2)'",
+       {"--sample.building1.strength_scale", "no yield_shears", "hysteresis"}},
+      {"--sample.hardening 'uniform(0.5, 1.5)'", {"--sample.hardening", "[0, 1)"}},
+  };
+  for (const auto& [arg, parts] : cases) {
+    const auto [code, msg] = run_with_log("--out " + out + " " + arg);
+    EXPECT_EQ(code, 2) << arg;
+    EXPECT_EQ(std::count(msg.begin(), msg.end(), '\n'), 1) << msg;
+    for (const auto& p : parts) EXPECT_NE(msg.find(p), std::string::npos) << p << " in: " << msg;
+    EXPECT_FALSE(fs::exists(out)) << arg;
+    EXPECT_FALSE(fs::exists(out + ".journal")) << arg;
+  }
+}
+
 TEST(CampaignRun, BadSampleRangeOrChunkSaysWhatIsValid) {
   ::setenv("ASAN_OPTIONS", "detect_leaks=0", 0);  // as in sh()
   const std::string out = dir() + "/range.h5", log = dir() + "/range.log";
