@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "campaign/floor_arrays.hpp"
 #include "core/error.hpp"
 #include "motion/motion_processing.hpp"
 #include "motion/response_spectrum.hpp"
@@ -72,9 +73,8 @@ SampleOutcome SampleRunner::run(long id) {
   out.id = id;
   out.values = d.values;
   const int nb = st_.buildings(), nf = st_.max_floors(), np = st_.pairs(), nl = st_.max_levels();
-  for (auto* v : {&out.disp_pounding, &out.disp_free, &out.drift_pounding, &out.drift_free,
-                  &out.accel_pounding, &out.accel_free})
-    v->assign(static_cast<std::size_t>(nb * nf), kNaN);
+  for (const auto& a : floor_array_fields())
+    (out.*a.member).assign(static_cast<std::size_t>(nb * nf), kNaN);
   out.peak_force.assign(static_cast<std::size_t>(np * nl), kNaN);
   out.impacts.assign(static_cast<std::size_t>(np * nl), kNaN);
   try {
@@ -109,12 +109,7 @@ SampleOutcome SampleRunner::run(long id) {
     }
     for (const auto& f : sim.floors) {
       const std::size_t i = static_cast<std::size_t>(f.building * nf + f.floor - 1);
-      out.disp_pounding[i] = f.disp_pounding;
-      out.disp_free[i] = f.disp_free;
-      out.drift_pounding[i] = f.drift_ratio_pounding;
-      out.drift_free[i] = f.drift_ratio_free;
-      out.accel_pounding[i] = f.accel_pounding;
-      out.accel_free[i] = f.accel_free;
+      for (const auto& a : floor_array_fields()) (out.*a.member)[i] = f.*a.source;
       if (!std::isfinite(f.disp_pounding) || !std::isfinite(f.accel_pounding) ||
           !std::isfinite(f.disp_free))
         throw NumericalError("non-finite peak response");
@@ -133,9 +128,8 @@ SampleOutcome SampleRunner::run(long id) {
   }
   if (out.status != SampleStatus::ok) {
     // A failed sample carries no response numbers.
-    for (auto* v : {&out.disp_pounding, &out.disp_free, &out.drift_pounding, &out.drift_free,
-                    &out.accel_pounding, &out.accel_free, &out.peak_force, &out.impacts})
-      v->assign(v->size(), kNaN);
+    for (const auto& a : floor_array_fields()) (out.*a.member).assign((out.*a.member).size(), kNaN);
+    for (auto* v : {&out.peak_force, &out.impacts}) v->assign(v->size(), kNaN);
   }
   out.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
