@@ -65,6 +65,10 @@ std::vector<OptionSpec> campaign_option_specs() {
       {"fragility.disp_limits", "m", "", "limits of the peak floor displacement (list)"},
       {"fragility.accel_limits", "m/s^2", "", "limits of the peak absolute floor acceleration"},
       {"fragility.force_limits", "N", "", "limits of the peak pounding force (list)"},
+      {"fragility.residual_drift_limits", "-", "",
+       "limits of the residual inter-storey drift ratio at the end of the run (list)"},
+      {"fragility.ductility_limits", "-", "",
+       "limits of the storey ductility demand, peak drift / yield drift (list)"},
       {"intensity.scale", "-", "",
        "sampled scale factor on the motion instead of levels (distribution)"},
   };
