@@ -15,6 +15,9 @@ Figures (one PNG each, units on every axis):
                                   the generated motions, their mean and the target
   history.png                     (--histories, from 'pound simulate --histories') top-floor
                                   displacement of each building and the pounding force
+  hysteresis.png                  (--histories holding /pounding/storey_shear) shear of the
+                                  first storey of each building against its drift, with and
+                                  without pounding (skipped when the file has no storey shears)
 Inputs: the campaign file (schema src/campaign/result_file.hpp), fragility.h5 of
 'pound fragility' (src/fragility/report_files.hpp); both are opened read-only.
 """
@@ -37,7 +40,14 @@ EDP_LABEL = {
     "disp": ("peak floor displacement", lambda x: f"{1000 * x:g} mm"),
     "accel": ("peak floor acceleration", lambda x: f"{x / G:.3g} g"),
     "force": ("peak pounding force", lambda x: f"{x / 1000:g} kN"),
+    "residual_drift": ("residual inter-storey drift ratio", lambda x: f"{100 * x:g} %"),
+    "ductility": ("storey ductility demand (peak drift / yield drift)", lambda x: f"μ = {x:g}"),
 }
+
+
+def edp_label(edp):
+    """(title, limit formatter) of an EDP; a name this script does not know is shown as is."""
+    return EDP_LABEL.get(edp, (edp.replace("_", " "), lambda x: f"{x:g}"))
 SKIP_SAMPLES = {"id", "status", "message", "im", "scale"}
 PARAM_UNITS = {"gap": "m", "e": "-", "k_factor": "-", "k": "N/m", "damping": "-", "chi": "-",
                "D": "-"}
@@ -93,13 +103,15 @@ def plot_fragility(frag_path, out):
     for c in curves:
         groups.setdefault((c["building"], c["edp"]), []).append(c)
     for (b, edp), cs in groups.items():
+        if all(c["status"] == "no_data" for c in cs):
+            continue  # e.g. the ductility of a building without yield shears: nothing to show
         limits = sorted({c["limit"] for c in cs})
         colors = plt.cm.viridis(np.linspace(0.0, 0.85, len(limits)))
         fig, ax = plt.subplots(figsize=(11, 5))
         for c in cs:
             col = colors[limits.index(c["limit"])]
             style = "-" if c["pounding"] else "--"
-            lab = EDP_LABEL[edp][1](c["limit"]) + (", pounding" if c["pounding"] else ", no pounding")
+            lab = edp_label(edp)[1](c["limit"]) + (", pounding" if c["pounding"] else ", no pounding")
             if c["status"] == "ok":
                 lab += f": θ = {c['theta'] / G:.3f} g, β = {c['beta']:.2f}"
                 ax.plot(grid, c["p"], style, color=col, lw=1.8, label=lab)
@@ -114,6 +126,8 @@ def plot_fragility(frag_path, out):
                     mfc=col if c["pounding"] else "none", mew=1.3, ls="none")
         ax.set_xscale("log")
         seen = np.concatenate([c["im"] for c in cs])
+        if not seen.size:  # every analysis left out (continuous IM): the whole grid
+            seen = grid[[0, -1]] * np.array([1.6, 1 / 1.6])
         ax.set_xlim(max(grid[0], seen.min() / 1.6), min(grid[-1], seen.max() * 1.6))
         ax.xaxis.set_major_formatter(ticker.FormatStrFormatter("%g"))
         ax.xaxis.set_minor_formatter(ticker.FuncFormatter(
@@ -123,7 +137,7 @@ def plot_fragility(frag_path, out):
         ax.set_ylabel("P(EDP > limit) [-]")
         bname = names[b] if b < len(names) else f"building {b + 1}"
         pts = "stripes" if design == "stripes" else "IM bins"
-        ax.set_title(f"Fragility of {bname}: {EDP_LABEL[edp][0]}\n"
+        ax.set_title(f"Fragility of {bname}: {edp_label(edp)[0]}\n"
                      f"solid/filled: with pounding, dashed/open: without; "
                      f"points: observed ({pts}), shading: 90 % bootstrap band", fontsize=10)
         ax.grid(True, which="both", alpha=0.3)
@@ -253,6 +267,51 @@ def plot_history(hist_path, out, names):
     save(fig, out, "history.png")
 
 
+def storey_drift(u, bld, floor, dof):
+    """Drift of the storey below floor `dof` [steps]: u of the floor minus u of the floor below
+    in the same building (the ground, 0, below floor 1)."""
+    below = np.where((bld == bld[dof]) & (floor == floor[dof] - 1))[0]
+    return u[:, dof] - (u[:, below[0]] if floor[dof] > 1 and below.size else 0.0)
+
+
+def plot_hysteresis(hist_path, out, names):
+    """Storey shear against storey drift of the first storey of each building, with and without
+    pounding; nothing when the file holds no storey shears."""
+    with h5py.File(hist_path, "r") as f:
+        if "pounding/storey_shear" not in f:
+            return
+        bld = f["row/dof_building"][:]
+        floor = f["row/dof_floor"][:]
+        runs = [(case, f[f"{case}/displacement"][:], f[f"{case}/storey_shear"][:])
+                for case in ("pounding", "free")
+                if f"{case}/storey_shear" in f and f"{case}/displacement" in f]
+    buildings = np.unique(bld)
+    fig, axes = plt.subplots(1, len(buildings), figsize=(5.2 * len(buildings), 4.6), squeeze=False)
+    for ax, b in zip(axes[0], buildings):
+        first = np.where((bld == b) & (floor == 1))[0]
+        if not first.size:
+            continue
+        dof = first[0]
+        for case, u, shear in runs:
+            pounding = case == "pounding"
+            ax.plot(1000 * storey_drift(u, bld, floor, dof), shear[:, dof] / 1000,
+                    color="tab:red" if pounding else "tab:blue", lw=1.0 if pounding else 0.9,
+                    ls="-" if pounding else "--", alpha=0.9 if pounding else 0.7,
+                    label="pounding" if pounding else "no pounding")
+        nm = names[b] if b < len(names) else f"building {b + 1}"
+        ax.set_title(f"{nm}, storey 1", fontsize=10)
+        ax.set_xlabel("storey drift [mm]")
+        ax.set_ylabel("storey shear [kN]")
+        ax.axhline(0.0, color="k", lw=0.5)
+        ax.axvline(0.0, color="k", lw=0.5)
+        ax.grid(True, alpha=0.3)
+        ax.legend(fontsize=8)
+    fig.suptitle("Hysteresis of the first storey of each building with (solid) and without "
+                 "(dashed) pounding", fontsize=11)
+    fig.tight_layout()
+    save(fig, out, "hysteresis.png")
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     p.add_argument("--campaign", required=True, help="campaign result file (HDF5)")
@@ -279,6 +338,7 @@ def main():
         hn = [l.split("=", 1)[1].strip() for l in cfg.splitlines()
               if l.strip().startswith("building") and ".name" in l.split("=")[0]]
         plot_history(a.histories, a.out, hn or names)
+        plot_hysteresis(a.histories, a.out, hn or names)
 
 
 if __name__ == "__main__":

@@ -3,6 +3,7 @@
 // capacity by pounding (printed first) and the rank sensitivity of the amplification. Parses
 // options, calls src/fragility, reports; the campaign file is opened read-only and the results
 // go to DIR (default RUN-fragility/ beside the input), each file written atomically.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -35,6 +36,12 @@ std::vector<OptionSpec> specs() {
       {"accel-limits", "m/s^2", "",
        "limits of the peak absolute floor acceleration (none: no curves)"},
       {"force-limits", "N", "", "limits of the peak pounding force (none: no curves)"},
+      {"residual-drift-limits", "-", "",
+       "limits of the residual inter-storey drift ratio at the end of the run (0.005 = 0.5 %; "
+       "none: no curves)"},
+      {"ductility-limits", "-", "",
+       "limits of the storey ductility demand, peak drift / yield drift (none: no curves; "
+       "buildings without yield_shears have none and are left out)"},
       {"replicates", "-", "1000", "bootstrap replicates of the 90 % bands"},
       {"seed", "-", "1", "seed of the bootstrap draws"},
       {"json", "", "", "print one JSON object instead of the tables", true},
@@ -56,9 +63,18 @@ std::string fmt(const char* f, double x) {
   return b;
 }
 
-// A limit for people: drift in %, the others in their SI unit.
+// A limit for people: drift ratios in %, ductility as a number, the others in their SI unit.
 std::string limit_text(Edp e, double x) {
-  return e == Edp::drift ? fmt("%.3g %%", 100 * x) : fmt("%.4g ", x) + unit_of(e);
+  if (e == Edp::drift || e == Edp::residual_drift) return fmt("%.3g %%", 100 * x);
+  if (e == Edp::ductility) return fmt("%.4g", x);
+  return fmt("%.4g ", x) + unit_of(e);
+}
+
+// Width of the edp column: the longest name shown (at least that of "drift" and "disp").
+int edp_width(const FragilityReport& r) {
+  std::size_t w = 6;
+  for (const auto& k : r.curves) w = std::max(w, std::string(to_string(k.edp)).size());
+  return int(w);
 }
 
 // Where the data put theta when there is no finite estimate, in g: "> 1.5", "< 0.05",
@@ -79,7 +95,8 @@ void print_text(const CampaignData& c, const FragilityReport& r,
       "Shift of the median capacity by pounding: theta_pounding / theta_free (%s, 90 %% bootstrap "
       "band)\n",
       im.c_str());
-  std::printf("  %-12s %-6s %-10s %8s  %-17s %12s %12s\n", "building", "edp", "limit", "ratio",
+  const int we = edp_width(r);
+  std::printf("  %-12s %-*s %-10s %8s  %-17s %12s %12s\n", "building", we, "edp", "limit", "ratio",
               "band", "pounding [g]", "free [g]");
   for (std::size_t k = 0, j = 0; k < r.shifts.size(); ++k) {
     const auto& s = r.shifts[k];
@@ -89,8 +106,8 @@ void print_text(const CampaignData& c, const FragilityReport& r,
       ++j;
     const auto& p = r.curves[j].fit;
     const auto& f = r.curves[j + 1].fit;
-    std::printf("  %-12s %-6s %-10s %8s  [%6s, %6s] %12s %12s\n",
-                c.building_names[s.building].c_str(), to_string(s.edp),
+    std::printf("  %-12s %-*s %-10s %8s  [%6s, %6s] %12s %12s\n",
+                c.building_names[s.building].c_str(), we, to_string(s.edp),
                 limit_text(s.edp, s.limit).c_str(), fmt("%.3f", s.ratio).c_str(),
                 fmt("%.3f", s.ci.lo).c_str(), fmt("%.3f", s.ci.hi).c_str(),
                 p.finite() ? fmt("%.4f", p.theta / kGravity).c_str() : to_string(p.status),
@@ -100,22 +117,29 @@ void print_text(const CampaignData& c, const FragilityReport& r,
       "\nCurves: P(EDP > limit | %s = x) = Phi(ln(x / theta) / beta), maximum likelihood "
       "(Baker 2015)\n",
       im.c_str());
-  std::printf("  %-12s %-6s %-10s %-5s %-16s %10s %19s %7s %17s %9s\n", "building", "edp", "limit",
-              "pound", "status", "theta [g]", "90 % band [g]", "beta", "90 % band", "exceed");
+  std::printf("  %-12s %-*s %-10s %-5s %-16s %10s %19s %7s %17s %9s\n", "building", we, "edp",
+              "limit", "pound", "status", "theta [g]", "90 % band [g]", "beta", "90 % band",
+              "exceed");
   for (const auto& k : r.curves) {
     long n = 0, z = 0;
     for (const auto& o : k.observed) n += o.n, z += o.z;
     const bool f = k.fit.finite();
     std::printf(
-        "  %-12s %-6s %-10s %-5s %-16s %10s [%7s, %7s] %7s [%6s, %6s] %4ld/%-4ld\n",
-        c.building_names[k.building].c_str(), to_string(k.edp), limit_text(k.edp, k.limit).c_str(),
-        k.pounding ? "yes" : "no", to_string(k.fit.status),
+        "  %-12s %-*s %-10s %-5s %-16s %10s [%7s, %7s] %7s [%6s, %6s] %4ld/%-4ld\n",
+        c.building_names[k.building].c_str(), we, to_string(k.edp),
+        limit_text(k.edp, k.limit).c_str(), k.pounding ? "yes" : "no", to_string(k.fit.status),
         f ? fmt("%.4f", k.fit.theta / kGravity).c_str() : bound_text(k.fit).c_str(),
         f ? fmt("%.4f", k.theta_ci.lo / kGravity).c_str() : "-",
         f ? fmt("%.4f", k.theta_ci.hi / kGravity).c_str() : "-",
         f ? fmt("%.3f", k.fit.beta).c_str() : "-", f ? fmt("%.3f", k.beta_ci.lo).c_str() : "-",
         f ? fmt("%.3f", k.beta_ci.hi).c_str() : "-", z, n);
   }
+  for (const auto& k : r.curves)
+    if (k.left_out)
+      std::printf("  (%s %s %s, %s: %zu analyses left out, their value is not finite%s)\n",
+                  c.building_names[k.building].c_str(), to_string(k.edp),
+                  limit_text(k.edp, k.limit).c_str(), k.pounding ? "pounding" : "no pounding",
+                  k.left_out, k.edp == Edp::ductility ? ": the building has no yield_shears" : "");
   std::printf(
       "\nSensitivity of the amplification (pounding / free) to the sampled parameters, "
       "ranked by |PRCC|\n");
@@ -188,7 +212,8 @@ void print_json(const CampaignData& c, const FragilityReport& r, const Fragility
     w.value(k.fit.bracketed() ? k.fit.theta_hi : NAN);
     w.field("bootstrap_finite", long(k.theta_ci.finite))
         .field("analyses", n)
-        .field("exceedances", z);
+        .field("exceedances", z)
+        .field("left_out", long(k.left_out));
     w.end_object();
   }
   w.end_array();
@@ -251,6 +276,8 @@ int run_fragility(int argc, const char* const* argv) {
   s.disp_limits = limits_of("disp-limits", "disp_limits");
   s.accel_limits = limits_of("accel-limits", "accel_limits");
   s.force_limits = limits_of("force-limits", "force_limits");
+  s.residual_drift_limits = limits_of("residual-drift-limits", "residual_drift_limits");
+  s.ductility_limits = limits_of("ductility-limits", "ductility_limits");
   const long reps = opt.get_int("replicates");
   if (reps < 10 || reps > 100000) throw opt.invalid("replicates", "valid: 10 to 100000");
   const long seed = opt.get_int("seed");
@@ -258,7 +285,7 @@ int run_fragility(int argc, const char* const* argv) {
   s.bootstrap.replicates = int(reps);
   s.bootstrap.seed = std::uint64_t(seed);
   if (s.drift_limits.empty() && s.disp_limits.empty() && s.accel_limits.empty() &&
-      s.force_limits.empty())
+      s.force_limits.empty() && s.residual_drift_limits.empty() && s.ductility_limits.empty())
     throw opt.invalid("drift-limits", "give at least one list of limits");
 
   std::string dir;

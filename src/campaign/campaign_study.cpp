@@ -1,7 +1,6 @@
 #include "campaign/campaign_study.hpp"
 
 #include <algorithm>
-#include <set>
 #include <sstream>
 
 #include "contact/registry.hpp"
@@ -16,24 +15,6 @@ namespace {
 
 std::vector<OptionSpec> prefixed(const std::string& prefix, std::vector<OptionSpec> specs) {
   for (auto& s : specs) s.key = prefix + "." + s.key;
-  return specs;
-}
-
-// Keys that may be sampled, with what they mean (the unit is the fixed key's unit).
-const std::vector<OptionSpec>& sampled_specs() {
-  static const std::vector<OptionSpec> specs = {
-      {"e", "-", "", "coefficient of restitution (distribution)"},
-      {"k", "N/m or N/m^1.5", "", "contact stiffness (distribution)"},
-      {"k_factor", "-", "", "contact stiffness / larger storey stiffness (distribution)"},
-      {"gap", "m", "", "gap at every colliding floor of every pair (distribution)"},
-      {"damping", "-", "", "damping ratio of every building (distribution)"},
-      {"model", "", "", "contact model: discrete(name: weight, ...)"},
-      {"chi", "-", "", "wave-speed factor of the damped Sears model (distribution)"},
-      {"D", "-", "", "fraction factor of the Sears flat contact (distribution)"},
-      {"building#.mass_scale", "-", "", "factor on the building's floor masses (distribution)"},
-      {"building#.stiffness_scale", "-", "",
-       "factor on the building's storey stiffnesses (distribution)"},
-  };
   return specs;
 }
 
@@ -84,13 +65,17 @@ std::vector<OptionSpec> campaign_option_specs() {
       {"fragility.disp_limits", "m", "", "limits of the peak floor displacement (list)"},
       {"fragility.accel_limits", "m/s^2", "", "limits of the peak absolute floor acceleration"},
       {"fragility.force_limits", "N", "", "limits of the peak pounding force (list)"},
+      {"fragility.residual_drift_limits", "-", "",
+       "limits of the residual inter-storey drift ratio at the end of the run (list)"},
+      {"fragility.ductility_limits", "-", "",
+       "limits of the storey ductility demand, peak drift / yield drift (list)"},
       {"intensity.scale", "-", "",
        "sampled scale factor on the motion instead of levels (distribution)"},
   };
   s.insert(s.end(), own.begin(), own.end());
   auto spec = prefixed("generator", generator_specs());
   s.insert(s.end(), spec.begin(), spec.end());
-  auto smp = prefixed("sample", sampled_specs());
+  auto smp = prefixed("sample", sampled_option_specs());
   s.insert(s.end(), smp.begin(), smp.end());
   return s;
 }
@@ -122,44 +107,8 @@ CampaignStudy campaign_from_options(const Options& opt, long samples_override, l
   st.batch = static_cast<int>(opt.get_int("campaign.batch"));
   if (st.batch < 1) throw opt.invalid("campaign.batch", "valid: a whole number >= 1");
 
-  // Sampled parameters, in a fixed (sorted) order.
-  const Options smp = opt.section("sample", sampled_specs());
-  std::set<std::string> keys;
-  for (int b = 1; b <= st.buildings(); ++b)
-    for (const char* what : {".mass_scale", ".stiffness_scale"})
-      if (smp.given("building" + std::to_string(b) + what))
-        keys.insert("building" + std::to_string(b) + what);
-  for (const char* k : {"e", "k", "k_factor", "gap", "damping", "model", "chi", "D"})
-    if (smp.given(k)) keys.insert(k);
-  if (smp.count_numbered("building") > st.buildings())
-    throw InputError(opt.where("sample.building" + std::to_string(smp.count_numbered("building")) +
-                               ".mass_scale") +
-                     ": the study has only " + std::to_string(st.buildings()) + " buildings");
-  for (const auto& k : keys) {
-    SampledParameter p{k, Distribution::parse(smp.get_string(k), smp.where(k))};
-    if (k == "model") {
-      if (p.distribution.kind() != DistributionKind::discrete)
-        throw smp.invalid(
-            k, "valid: discrete(name: weight, ...) with names from " + contact_model_names());
-      for (const auto& l : p.distribution.labels())
-        if (l != "sears") find_contact_model(l, smp.where(k));
-    } else {
-      if (p.distribution.kind() == DistributionKind::discrete)
-        p.distribution.lower();  // numeric check
-      const double lo = p.distribution.lower(), hi = p.distribution.upper();
-      const bool positive = k != "gap" && k != "damping";
-      if (positive && !(lo > 0))
-        throw smp.invalid(
-            k, "its values must be > 0; truncate the distribution (e.g. normal(m, s, lo, hi))");
-      if (!positive && !(lo >= 0))
-        throw smp.invalid(k, "its values must be >= 0; truncate the distribution");
-      if (k == "e" && !(hi <= 1)) throw smp.invalid(k, "e must stay in (0, 1]; truncate at 1");
-      if (k == "damping" && !(hi < 1)) throw smp.invalid(k, "damping must stay below 1");
-      if (k == "chi" && !(hi <= 1)) throw smp.invalid(k, "chi must stay in (0, 1]; truncate at 1");
-      if (k == "D" && !(lo >= 1)) throw smp.invalid(k, "D must be >= 1; truncate at 1");
-    }
-    st.parameters.push_back(std::move(p));
-  }
+  // Sampled parameters, in a fixed (sorted) order (sampled_parameters.hpp).
+  st.parameters = read_sampled_parameters(opt, st.row);
 
   // The contact model: fixed keys, with sampled ones checked for what each model needs.
   bool uses_sears = opt.get_string("contact.model") == "sears";
@@ -175,7 +124,7 @@ CampaignStudy campaign_from_options(const Options& opt, long samples_override, l
     st.sears = sears_row_from_options(opt, st.row);
   }
   bool k_sampled = false;
-  for (const auto& p : st.parameters) k_sampled |= p.key == "k" || p.key == "k_factor";
+  for (const auto& p : st.parameters) k_sampled |= p.spec->sets_contact_k;
   st.contact.model = opt.get_string("contact.model");
   if (uses_lumped && !k_sampled && st.contact.model != "sears") {
     st.contact = contact_from_options(opt, st.row);

@@ -7,11 +7,11 @@
 #include <string>
 #include <vector>
 
+#include "campaign/sampled_parameters.hpp"
 #include "io/options.hpp"
 #include "motion/design_spectrum.hpp"
 #include "motion/ground_motion.hpp"
 #include "motion/simqke.hpp"
-#include "sampling/distribution.hpp"
 #include "sears/sears_simulation.hpp"
 #include "simulation/contact_spec.hpp"
 #include "solver/integrator_settings.hpp"
@@ -22,13 +22,6 @@ namespace pound {
 enum class SamplingMethod { monte_carlo, latin_hypercube };
 enum class IntensityMeasure { pga, sa };
 enum class MotionSource { generated, records };
-
-/// One sampled study parameter: its key as written under [sample] and its distribution.
-struct SampledParameter {
-  std::string key;  ///< e, k, k_factor, gap, damping, model, chi, D, building#.mass_scale, ...
-                    ///< (chi and D act on the damped Sears model only)
-  Distribution distribution;
-};
 
 struct CampaignStudy {
   // What is simulated (the fixed values; sampled parameters override them per sample).

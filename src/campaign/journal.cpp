@@ -5,13 +5,16 @@
 #include <cerrno>
 #include <cstring>
 
+#include "campaign/floor_arrays.hpp"
 #include "core/error.hpp"
 #include "sampling/counter_rng.hpp"
 
 namespace pound {
 namespace {
 
-constexpr char kMagic[8] = {'P', 'O', 'U', 'N', 'D', 'J', '0', '1'};
+constexpr char kMagic[8] = {'P', 'O', 'U', 'N', 'D', 'J', '0', '2'};
+// Journals of earlier formats: recognised to say so (their records are laid out differently).
+constexpr char kOldMagic[8] = {'P', 'O', 'U', 'N', 'D', 'J', '0', '1'};
 constexpr std::size_t kHeaderBytes = 8 + 4 * 8;
 
 std::uint64_t fnv(const char* p, std::size_t n) {
@@ -56,8 +59,8 @@ RecordLayout::RecordLayout(const CampaignStudy& st)
       levels(st.max_levels()) {}
 
 std::size_t RecordLayout::values() const {
-  // im, scale, parameters, 6 floor arrays, 2 contact arrays, wall seconds, rank
-  return 2 + parameters + 6 * buildings * floors + 2 * pairs * levels + 2;
+  // im, scale, parameters, the floor arrays, 2 contact arrays, wall seconds, rank
+  return 2 + parameters + floor_array_fields().size() * buildings * floors + 2 * pairs * levels + 2;
 }
 
 std::size_t RecordLayout::record_bytes() const {
@@ -80,8 +83,9 @@ std::vector<char> encode_record(const SampleOutcome& o, const RecordLayout& l) {
   put(b, o.im);
   put(b, o.scale);
   for (int i = 0; i < l.parameters; ++i) put(b, o.values.at(i));
-  for (const auto* v : {&o.disp_pounding, &o.disp_free, &o.drift_pounding, &o.drift_free,
-                        &o.accel_pounding, &o.accel_free, &o.peak_force, &o.impacts})
+  for (const auto& a : floor_array_fields())
+    for (double x : o.*a.member) put(b, x);
+  for (const auto* v : {&o.peak_force, &o.impacts})
     for (double x : *v) put(b, x);
   put(b, o.wall_seconds);
   put(b, static_cast<double>(o.rank));
@@ -107,10 +111,10 @@ bool decode_record(const char* bytes, const RecordLayout& l, SampleOutcome& o) {
   for (auto& v : o.values) v = get<double>(p);
   const std::size_t bf = static_cast<std::size_t>(l.buildings * l.floors);
   const std::size_t pl = static_cast<std::size_t>(l.pairs * l.levels);
-  for (auto* v : {&o.disp_pounding, &o.disp_free, &o.drift_pounding, &o.drift_free,
-                  &o.accel_pounding, &o.accel_free}) {
-    v->resize(bf);
-    for (auto& x : *v) x = get<double>(p);
+  for (const auto& a : floor_array_fields()) {
+    std::vector<double>& v = o.*a.member;
+    v.resize(bf);
+    for (auto& x : v) x = get<double>(p);
   }
   for (auto* v : {&o.peak_force, &o.impacts}) {
     v->resize(pl);
@@ -129,7 +133,16 @@ long for_each_record(const std::string& path, const CampaignStudy& st,
   const RecordLayout l(st);
   const std::vector<char> want = header(st, l);
   std::vector<char> h(kHeaderBytes);
-  if (std::fread(h.data(), 1, h.size(), f) != h.size() || std::memcmp(h.data(), kMagic, 8) != 0) {
+  const bool whole = std::fread(h.data(), 1, h.size(), f) == h.size();
+  if (whole && std::memcmp(h.data(), kOldMagic, 8) == 0) {
+    std::fclose(f);
+    throw InputError(
+        path +
+        ": a campaign journal written by an older pound (format POUNDJ01, without the "
+        "residual drift, ductility and hysteretic energy); it cannot be resumed, start "
+        "again with --force");
+  }
+  if (!whole || std::memcmp(h.data(), kMagic, 8) != 0) {
     std::fclose(f);
     throw InputError(path + ": not a pound campaign journal");
   }

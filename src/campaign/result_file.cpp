@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <vector>
 
+#include "campaign/floor_arrays.hpp"
 #include "campaign/journal.hpp"
 #include "core/error.hpp"
 #include "io/h5.hpp"
@@ -76,14 +77,12 @@ void write_result_file(const std::string& path, const CampaignStudy& st,
     std::vector<std::unique_ptr<RowDataset>> params;
     for (const auto& p : st.parameters)
       params.push_back(std::make_unique<RowDataset>(fid, "/samples/" + p.key, n, 0, 0,
-                                                    p.key == "model" ? str : H5T_NATIVE_DOUBLE));
-    const char* names[] = {"peak_disp_pounding", "peak_disp_free",      "peak_drift_pounding",
-                           "peak_drift_free",    "peak_accel_pounding", "peak_accel_free"};
-    const char* units[] = {"m", "m", "-", "-", "m/s^2", "m/s^2"};
+                                                    p.is_label() ? str : H5T_NATIVE_DOUBLE));
+    const auto& fields = floor_array_fields();
     std::vector<std::unique_ptr<RowDataset>> floors;
-    for (int i = 0; i < 6; ++i)
-      floors.push_back(std::make_unique<RowDataset>(fid, std::string("/response/") + names[i], n,
-                                                    nb, nf, H5T_NATIVE_DOUBLE, units[i]));
+    for (const auto& a : fields)
+      floors.push_back(std::make_unique<RowDataset>(fid, std::string("/response/") + a.name, n, nb,
+                                                    nf, H5T_NATIVE_DOUBLE, a.unit));
     RowDataset force(fid, "/response/peak_force", n, np, nl, H5T_NATIVE_DOUBLE, "N");
     RowDataset impacts(fid, "/response/impacts", n, np, nl, H5T_NATIVE_DOUBLE, "-");
     RowDataset rank(fid, "/run/rank", n, 0, 0, H5T_NATIVE_INT);
@@ -104,7 +103,7 @@ void write_result_file(const std::string& path, const CampaignStudy& st,
       im.write(r, &o.im);
       scale.write(r, &o.scale);
       for (std::size_t i = 0; i < st.parameters.size(); ++i) {
-        if (st.parameters[i].key == "model") {
+        if (st.parameters[i].is_label()) {
           const char* label =
               st.parameters[i].distribution.labels()[static_cast<std::size_t>(o.values[i])].c_str();
           params[i]->write(r, &label);
@@ -112,9 +111,8 @@ void write_result_file(const std::string& path, const CampaignStudy& st,
           params[i]->write(r, &o.values[i]);
         }
       }
-      const std::vector<double>* arrays[] = {&o.disp_pounding, &o.disp_free,      &o.drift_pounding,
-                                             &o.drift_free,    &o.accel_pounding, &o.accel_free};
-      for (int i = 0; i < 6; ++i) floors[i]->write(r, arrays[i]->data());
+      for (std::size_t i = 0; i < fields.size(); ++i)
+        floors[i]->write(r, (o.*fields[i].member).data());
       force.write(r, o.peak_force.data());
       impacts.write(r, o.impacts.data());
       rank.write(r, &o.rank);

@@ -10,6 +10,15 @@
 //   /response/peak_disp_pounding, peak_disp_free [N, buildings, floors]     m
 //   /response/peak_drift_pounding, peak_drift_free [N, buildings, floors]   drift ratio, -
 //   /response/peak_accel_pounding, peak_accel_free [N, buildings, floors]   m/s^2 (absolute)
+//   /response/residual_drift_pounding, residual_drift_free [N, buildings, floors]
+//                                      |storey drift| at the end of the run / height, -
+//   /response/ductility_pounding, ductility_free [N, buildings, floors]
+//                                      peak storey drift / yield drift Fy/k0, - (NaN for a
+//                                      building without yield_shears)
+//   /response/hysteretic_energy_pounding, hysteretic_energy_free [N, buildings, floors]
+//                                      dissipated by the storey below the floor, J
+//   (the per-floor arrays are the table of floor_arrays.hpp; the drift, ductility and energy
+//   of floor j are those of storey j, between floor j-1 or the ground and floor j)
 //   /response/peak_force [N, pairs, levels]                                  N
 //   /response/impacts [N, pairs, levels]                                     count
 //   (NaN where a building has fewer floors, a pair fewer levels, or the sample failed)

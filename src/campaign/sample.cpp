@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "campaign/floor_arrays.hpp"
 #include "core/error.hpp"
 #include "motion/motion_processing.hpp"
 #include "motion/response_spectrum.hpp"
@@ -36,9 +37,9 @@ SampleDraw SampleRunner::draw(long id) {
   d.model = st_.contact.model;
   for (const auto& p : st_.parameters) {
     const double u = uniform("sample." + p.key);
-    if (p.key == "model") {
+    if (p.is_label()) {
       const std::size_t i = p.distribution.index(u);
-      d.model = p.distribution.labels()[i];
+      if (p.key == "model") d.model = p.distribution.labels()[i];
       d.values.push_back(static_cast<double>(i));
     } else {
       d.values.push_back(p.distribution.value(u));
@@ -58,6 +59,13 @@ SampleDraw SampleRunner::draw(long id) {
   return d;
 }
 
+SampleModel SampleRunner::model(const SampleDraw& d) const {
+  SampleModel m{st_.row, st_.contact, st_.sears};
+  m.contact.model = d.model;
+  apply_sampled(st_.parameters, d.values, m);
+  return m;
+}
+
 SampleOutcome SampleRunner::run(long id) {
   const auto t0 = std::chrono::steady_clock::now();
   const SampleDraw d = draw(id);
@@ -65,41 +73,14 @@ SampleOutcome SampleRunner::run(long id) {
   out.id = id;
   out.values = d.values;
   const int nb = st_.buildings(), nf = st_.max_floors(), np = st_.pairs(), nl = st_.max_levels();
-  for (auto* v : {&out.disp_pounding, &out.disp_free, &out.drift_pounding, &out.drift_free,
-                  &out.accel_pounding, &out.accel_free})
-    v->assign(static_cast<std::size_t>(nb * nf), kNaN);
+  for (const auto& a : floor_array_fields())
+    (out.*a.member).assign(static_cast<std::size_t>(nb * nf), kNaN);
   out.peak_force.assign(static_cast<std::size_t>(np * nl), kNaN);
   out.impacts.assign(static_cast<std::size_t>(np * nl), kNaN);
   try {
-    // The sample's building row and contact.
-    BuildingRow row = st_.row;
-    ContactSpec contact = st_.contact;
-    contact.model = d.model;
-    for (std::size_t i = 0; i < st_.parameters.size(); ++i) {
-      const std::string& k = st_.parameters[i].key;
-      const double v = d.values[i];
-      if (k == "e")
-        contact.params.e = v;
-      else if (k == "k")
-        contact.params.k = v;
-      else if (k == "gap")
-        for (auto& g : row.gaps) g.assign(g.size(), v);
-      else if (k == "damping")
-        for (auto& b : row.buildings) b.damping_ratio = v;
-      else if (k.rfind("building", 0) == 0) {
-        const int b = std::stoi(k.substr(8)) - 1;
-        auto& vec = k.find("mass_scale") != std::string::npos ? row.buildings[b].masses
-                                                              : row.buildings[b].stiffnesses;
-        for (double& x : vec) x *= v;
-      }
-    }
-    for (std::size_t i = 0; i < st_.parameters.size(); ++i)
-      if (st_.parameters[i].key == "k_factor") {
-        double kmax = 0;
-        for (const auto& b : row.buildings)
-          for (double k : b.stiffnesses) kmax = std::max(kmax, k);
-        contact.params.k = d.values[i] * kmax;
-      }
+    // The sample's building row, contact and Sears model.
+    const SampleModel sm = model(d);
+    const BuildingRow& row = sm.row;
 
     // The motion, scaled to the stripe level or by the sampled factor.
     GroundMotion g = st_.source == MotionSource::generated
@@ -122,23 +103,13 @@ SampleOutcome SampleRunner::run(long id) {
     so.extra_time = st_.extra_time;
     RowSimulation sim;
     if (d.model == "sears") {
-      sears::SearsRowModel m = st_.sears;
-      for (std::size_t i = 0; i < st_.parameters.size(); ++i) {
-        if (st_.parameters[i].key == "chi") m.chi = d.values[i];
-        if (st_.parameters[i].key == "D") m.D = d.values[i];
-      }
-      sim = sears::simulate_sears_row(row, g, m, so).base;
+      sim = sears::simulate_sears_row(row, g, sm.sears, so).base;
     } else {
-      sim = simulate_row(row, g, contact, st_.integrator, so);
+      sim = simulate_row(row, g, sm.contact, st_.integrator, so);
     }
     for (const auto& f : sim.floors) {
       const std::size_t i = static_cast<std::size_t>(f.building * nf + f.floor - 1);
-      out.disp_pounding[i] = f.disp_pounding;
-      out.disp_free[i] = f.disp_free;
-      out.drift_pounding[i] = f.drift_ratio_pounding;
-      out.drift_free[i] = f.drift_ratio_free;
-      out.accel_pounding[i] = f.accel_pounding;
-      out.accel_free[i] = f.accel_free;
+      for (const auto& a : floor_array_fields()) (out.*a.member)[i] = f.*a.source;
       if (!std::isfinite(f.disp_pounding) || !std::isfinite(f.accel_pounding) ||
           !std::isfinite(f.disp_free))
         throw NumericalError("non-finite peak response");
@@ -157,9 +128,8 @@ SampleOutcome SampleRunner::run(long id) {
   }
   if (out.status != SampleStatus::ok) {
     // A failed sample carries no response numbers.
-    for (auto* v : {&out.disp_pounding, &out.disp_free, &out.drift_pounding, &out.drift_free,
-                    &out.accel_pounding, &out.accel_free, &out.peak_force, &out.impacts})
-      v->assign(v->size(), kNaN);
+    for (const auto& a : floor_array_fields()) (out.*a.member).assign((out.*a.member).size(), kNaN);
+    for (auto* v : {&out.peak_force, &out.impacts}) v->assign(v->size(), kNaN);
   }
   out.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;

@@ -31,7 +31,8 @@ struct SampleDraw {
 };
 
 /// The outcome; arrays are row-major [building][floor] (NaN where a building has fewer
-/// floors) and [pair][level] (NaN where a pair has fewer colliding levels).
+/// floors or the sample failed; the per-floor arrays are listed in floor_arrays.hpp) and
+/// [pair][level] (NaN where a pair has fewer colliding levels).
 struct SampleOutcome {
   long id = 0;
   SampleStatus status = SampleStatus::ok;
@@ -42,10 +43,16 @@ struct SampleOutcome {
   std::vector<double> disp_pounding, disp_free;  ///< [m]
   std::vector<double> drift_pounding, drift_free;  ///< peak drift ratios [-]
   std::vector<double> accel_pounding, accel_free;  ///< peak absolute accelerations [m/s^2]
-  std::vector<double> peak_force;                  ///< [N]
-  std::vector<double> impacts;                     ///< counts, as doubles [-]
-  double wall_seconds = 0.0;                       ///< run bookkeeping
-  int rank = 0;                                    ///< run bookkeeping
+  /// |storey drift| at the end of the run / storey height [-]
+  std::vector<double> residual_drift_pounding, residual_drift_free;
+  /// Peak storey drift / yield drift [-]; NaN for a building without yield_shears.
+  std::vector<double> ductility_pounding, ductility_free;
+  /// Hysteretic energy dissipated by the storey below the floor [J].
+  std::vector<double> hysteretic_energy_pounding, hysteretic_energy_free;
+  std::vector<double> peak_force;  ///< [N]
+  std::vector<double> impacts;     ///< counts, as doubles [-]
+  double wall_seconds = 0.0;       ///< run bookkeeping
+  int rank = 0;                    ///< run bookkeeping
 };
 
 /// Runs samples of one study; keeps per-worker caches (the motion generator's FFT plans,
@@ -55,6 +62,9 @@ class SampleRunner {
   explicit SampleRunner(const CampaignStudy& study);
   ~SampleRunner();
   SampleDraw draw(long id);
+  /// The row, contact and Sears model of a drawn sample: the study's with the sample's values
+  /// applied (sampled_parameters.hpp).
+  SampleModel model(const SampleDraw& d) const;
   /// Never throws for a failing simulation: the failure is the outcome's status and message.
   SampleOutcome run(long id);
 

@@ -17,7 +17,7 @@ std::vector<Observation> observations(const ExceedanceDesign& d, const std::vect
     for (std::size_t s = 0; s < d.levels.size(); ++s) obs[s].im = d.levels[s];
     for (std::size_t k = 0; k < count; ++k) {
       const std::size_t i = rows.empty() ? k : rows[k];
-      if (d.stripe[i] < 0) continue;
+      if (d.stripe[i] < 0 || exceed[i] == kLeftOut) continue;
       Observation& o = obs[std::size_t(d.stripe[i])];
       ++o.n;
       o.z += exceed[i] ? 1 : 0;
@@ -27,7 +27,7 @@ std::vector<Observation> observations(const ExceedanceDesign& d, const std::vect
   obs.reserve(count);
   for (std::size_t k = 0; k < count; ++k) {
     const std::size_t i = rows.empty() ? k : rows[k];
-    obs.push_back({d.im[i], 1, exceed[i] ? 1L : 0L});
+    if (exceed[i] != kLeftOut) obs.push_back({d.im[i], 1, exceed[i] ? 1L : 0L});
   }
   return obs;
 }

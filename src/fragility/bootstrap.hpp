@@ -22,8 +22,13 @@ struct ExceedanceDesign {
   bool stripes() const { return !levels.empty(); }
 };
 
+/// exceed[i] of an analysis left out of a curve (its EDP is not finite); otherwise 1 when the
+/// analysis exceeds the limit and 0 when it does not.
+constexpr char kLeftOut = 2;
+
 /// The observations of the analyses `rows` (all when empty): one per stripe with its counts,
-/// or one per analysis (n = 1) when the intensities are continuous. `exceed` is per analysis.
+/// or one per analysis (n = 1) when the intensities are continuous. `exceed` is per analysis;
+/// analyses marked kLeftOut are not counted.
 std::vector<Observation> observations(const ExceedanceDesign& d, const std::vector<char>& exceed,
                                       const std::vector<std::size_t>& rows = {});
 

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "campaign/floor_arrays.hpp"
 #include "core/error.hpp"
 #include "io/h5.hpp"
 #include "io/options.hpp"
@@ -116,6 +117,15 @@ double FloorArray::max_over_floors(std::size_t s, std::size_t b) const {
   return m;
 }
 
+const FloorArray& CampaignData::floor_array(const std::string& name) const {
+  const auto it = floor_arrays.find(name);
+  if (it == floor_arrays.end())
+    throw InputError(path + ": no dataset /response/" + name +
+                     "; the file was written by a pound without it: run the campaign again "
+                     "with this version to get it");
+  return it->second;
+}
+
 CampaignData read_campaign(const std::string& path) {
   const Reader r(path);
   CampaignData c;
@@ -136,12 +146,19 @@ CampaignData read_campaign(const std::string& path) {
     }
     c.parameters.push_back({key, r.doubles("/samples/" + key)});
   }
-  c.disp_pounding = floor_array(r, "/response/peak_disp_pounding", c.samples);
-  c.disp_free = floor_array(r, "/response/peak_disp_free", c.samples);
-  c.drift_pounding = floor_array(r, "/response/peak_drift_pounding", c.samples);
-  c.drift_free = floor_array(r, "/response/peak_drift_free", c.samples);
-  c.accel_pounding = floor_array(r, "/response/peak_accel_pounding", c.samples);
-  c.accel_free = floor_array(r, "/response/peak_accel_free", c.samples);
+  // The per-floor arrays the file holds (an older file lacks the newer ones), one shape.
+  std::size_t floors = 0;
+  for (const auto& field : floor_array_fields()) {
+    const std::string p = std::string("/response/") + field.name;
+    if (!r.exists(p)) continue;
+    FloorArray a = floor_array(r, p, c.samples);
+    if (c.floor_arrays.empty()) c.buildings = a.buildings, floors = a.floors;
+    if (a.buildings != c.buildings || a.floors != floors)
+      throw r.missing(p + " of the shape of the other /response arrays");
+    c.floor_arrays.emplace(field.name, std::move(a));
+  }
+  if (c.floor_arrays.empty())
+    throw r.missing(std::string("/response/") + floor_array_fields().front().name);
   c.peak_force = floor_array(r, "/response/peak_force", c.samples);
 
   c.study = r.text_attribute("study");
@@ -152,7 +169,7 @@ CampaignData read_campaign(const std::string& path) {
   c.building_names = split_names(r.text_attribute("building_names"));
   const std::string levels = r.text_attribute("im_levels_mps2");
   if (!levels.empty()) c.levels = parse_number_list(levels, path + ": attribute im_levels_mps2");
-  for (std::size_t b = c.building_names.size(); b < c.drift_pounding.buildings; ++b)
+  for (std::size_t b = c.building_names.size(); b < c.buildings; ++b)
     c.building_names.push_back("building" + std::to_string(b + 1));
   return c;
 }

@@ -1,8 +1,10 @@
 #pragma once
 // Reads a campaign result file (schema in campaign/result_file.hpp) read-only: the sample
-// table, the peak responses with and without pounding and the root attributes the fragility
-// analysis needs. The file is opened with H5F_ACC_RDONLY and never modified.
+// table, the per-floor responses with and without pounding (campaign/floor_arrays.hpp), the
+// peak pounding forces and the root attributes the fragility analysis needs. The file is opened
+// with H5F_ACC_RDONLY and never modified.
 #include <cstddef>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -39,11 +41,18 @@ struct CampaignData {
   std::vector<double> scale;                 ///< scale factor on the motion [-]
   std::vector<SampledColumn> parameters;     ///< numeric sampled parameters
   std::vector<std::string> text_parameters;  ///< sampled labels (e.g. model), not ranked
-  FloorArray disp_pounding, disp_free;       ///< peak floor displacement [m]
-  FloorArray drift_pounding, drift_free;     ///< peak inter-storey drift ratio [-]
-  FloorArray accel_pounding, accel_free;     ///< peak absolute floor acceleration [m/s^2]
+  std::size_t buildings = 0;                 ///< buildings of the row
+  /// The per-floor arrays of campaign/floor_arrays.hpp that the file holds, by dataset name
+  /// under /response ("peak_drift_pounding", "ductility_free", ...; units as listed there). A
+  /// file written before an array existed lacks it.
+  std::map<std::string, FloorArray> floor_arrays;
   /// Peak pounding force [samples][pairs][levels] [N]; pair p lies between buildings p, p+1.
   FloorArray peak_force;
+
+  bool has(const std::string& name) const { return floor_arrays.count(name) > 0; }
+  /// The per-floor array of that name; throws InputError naming the file and the missing
+  /// dataset when the file does not hold it.
+  const FloorArray& floor_array(const std::string& name) const;
 };
 
 /// Throws InputError naming the file and what is missing when it is not a campaign file.

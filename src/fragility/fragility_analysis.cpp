@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include "core/error.hpp"
 #include "fragility/rank_correlation.hpp"
@@ -12,6 +13,29 @@ namespace pound {
 namespace {
 
 constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
+
+// The EDPs: name, unit and the per-floor datasets they come from (with the suffix _pounding
+// or _free; "" for the force, from /response/peak_force).
+struct EdpInfo {
+  Edp edp;
+  const char* name;
+  const char* unit;
+  const char* dataset;
+};
+constexpr EdpInfo kEdps[] = {
+    {Edp::drift, "drift", "-", "peak_drift"},
+    {Edp::disp, "disp", "m", "peak_disp"},
+    {Edp::accel, "accel", "m/s^2", "peak_accel"},
+    {Edp::force, "force", "N", ""},
+    {Edp::residual_drift, "residual_drift", "-", "residual_drift"},
+    {Edp::ductility, "ductility", "-", "ductility"},
+};
+
+const EdpInfo& info(Edp e) {
+  for (const auto& i : kEdps)
+    if (i.edp == e) return i;
+  throw std::logic_error("unknown EDP");
+}
 
 // Analyses that succeeded, with their stripe (nearest level within 1e-5 relative: the file
 // stores the levels as text with six decimals, the samples' IM in full precision).
@@ -41,8 +65,9 @@ ExceedanceDesign design_of(const CampaignData& c, std::vector<std::size_t>* used
 // mean IM of each bin) when the intensity is continuous.
 std::vector<Observation> observed(const ExceedanceDesign& d, const std::vector<char>& exceed) {
   if (d.stripes()) return observations(d, exceed);
-  std::vector<std::size_t> order(d.im.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::vector<std::size_t> order;
+  for (std::size_t i = 0; i < d.im.size(); ++i)
+    if (exceed[i] != kLeftOut) order.push_back(i);
   std::sort(order.begin(), order.end(),
             [&](std::size_t a, std::size_t b) { return d.im[a] < d.im[b]; });
   const std::size_t bins = std::max<std::size_t>(1, std::min<std::size_t>(10, order.size() / 20));
@@ -80,9 +105,9 @@ void rank_sensitivity(const CampaignData& c, const std::vector<std::size_t>& use
     for (std::size_t s : used) v.push_back(c.im[s]);
     all.push_back(v);
   }
-  const std::size_t nb = c.drift_pounding.buildings;
-  for (std::size_t b = 0; b < nb; ++b)
+  for (std::size_t b = 0; b < c.buildings; ++b)
     for (const Edp e : {Edp::disp, Edp::drift}) {
+      if (!c.has(dataset_of(e, true)) || !c.has(dataset_of(e, false))) continue;
       // Amplification = pounding / free, on the samples where both are finite and free > 0.
       std::vector<std::size_t> rows;
       std::vector<double> y;
@@ -120,54 +145,29 @@ void rank_sensitivity(const CampaignData& c, const std::vector<std::size_t>& use
 }  // namespace
 
 const char* to_string(Edp e) {
-  switch (e) {
-    case Edp::drift:
-      return "drift";
-    case Edp::disp:
-      return "disp";
-    case Edp::accel:
-      return "accel";
-    case Edp::force:
-      return "force";
-  }
-  return "unknown";
+  return info(e).name;
 }
 
 const char* unit_of(Edp e) {
-  switch (e) {
-    case Edp::drift:
-      return "-";
-    case Edp::disp:
-      return "m";
-    case Edp::accel:
-      return "m/s^2";
-    case Edp::force:
-      return "N";
-  }
-  return "";
+  return info(e).unit;
+}
+
+std::string dataset_of(Edp e, bool pounding) {
+  const std::string base = info(e).dataset;
+  return base.empty() ? base : base + (pounding ? "_pounding" : "_free");
 }
 
 double edp_value(const CampaignData& c, Edp e, bool pounding, std::size_t s, std::size_t b) {
-  switch (e) {
-    case Edp::drift:
-      return (pounding ? c.drift_pounding : c.drift_free).max_over_floors(s, b);
-    case Edp::disp:
-      return (pounding ? c.disp_pounding : c.disp_free).max_over_floors(s, b);
-    case Edp::accel:
-      return (pounding ? c.accel_pounding : c.accel_free).max_over_floors(s, b);
-    case Edp::force: {
-      if (!pounding) return 0.0;
-      double m = kNan;
-      const std::size_t pairs = c.peak_force.buildings;  // [samples][pairs][levels]
-      for (std::size_t p = 0; p < pairs; ++p)
-        if (p == b || p + 1 == b) {
-          const double f = c.peak_force.max_over_floors(s, p);
-          if (std::isfinite(f) && !(f <= m)) m = f;
-        }
-      return std::isfinite(m) ? m : 0.0;  // a building without a neighbour: no force
+  if (e != Edp::force) return c.floor_array(dataset_of(e, pounding)).max_over_floors(s, b);
+  if (!pounding) return 0.0;
+  double m = kNan;
+  const std::size_t pairs = c.peak_force.buildings;  // [samples][pairs][levels]
+  for (std::size_t p = 0; p < pairs; ++p)
+    if (p == b || p + 1 == b) {
+      const double f = c.peak_force.max_over_floors(s, p);
+      if (std::isfinite(f) && !(f <= m)) m = f;
     }
-  }
-  return kNan;
+  return std::isfinite(m) ? m : 0.0;  // a building without a neighbour: no force
 }
 
 FragilityReport analyse_fragility(const CampaignData& c, const FragilitySettings& s) {
@@ -182,11 +182,19 @@ FragilityReport analyse_fragility(const CampaignData& c, const FragilitySettings
 
   // Every curve's outcomes, per used analysis.
   std::vector<std::vector<char>> outcomes;
-  const std::pair<Edp, const std::vector<double>*> lists[] = {{Edp::drift, &s.drift_limits},
-                                                              {Edp::disp, &s.disp_limits},
-                                                              {Edp::accel, &s.accel_limits},
-                                                              {Edp::force, &s.force_limits}};
-  for (std::size_t b = 0; b < c.drift_pounding.buildings; ++b)
+  const std::pair<Edp, const std::vector<double>*> lists[] = {
+      {Edp::drift, &s.drift_limits},
+      {Edp::disp, &s.disp_limits},
+      {Edp::accel, &s.accel_limits},
+      {Edp::force, &s.force_limits},
+      {Edp::residual_drift, &s.residual_drift_limits},
+      {Edp::ductility, &s.ductility_limits}};
+  // A file without an EDP's datasets (written before they existed) is an error only when
+  // that EDP's curves are asked for.
+  for (const auto& [edp, limits] : lists)
+    if (!limits->empty() && edp != Edp::force)
+      for (const bool pounding : {true, false}) c.floor_array(dataset_of(edp, pounding));
+  for (std::size_t b = 0; b < c.buildings; ++b)
     for (const auto& [edp, limits] : lists)
       for (double limit : *limits) {
         if (!(limit > 0))
@@ -199,9 +207,13 @@ FragilityReport analyse_fragility(const CampaignData& c, const FragilitySettings
           fc.edp = edp;
           fc.limit = limit;
           fc.pounding = pounding;
+          // Outcomes: exceeds or not, or left out when the EDP is not finite.
           std::vector<char> z(used.size());
-          for (std::size_t k = 0; k < used.size(); ++k)
-            z[k] = edp_value(c, edp, pounding, used[k], b) > limit;
+          for (std::size_t k = 0; k < used.size(); ++k) {
+            const double v = edp_value(c, edp, pounding, used[k], b);
+            z[k] = !std::isfinite(v) ? kLeftOut : v > limit ? 1 : 0;
+            fc.left_out += z[k] == kLeftOut;
+          }
           fc.fit = fit_lognormal(observations(d, z));
           fc.observed = observed(d, z);
           r.curves.push_back(fc);

@@ -16,22 +16,29 @@ namespace pound {
 
 /// Engineering demand parameters, each the maximum over the building's floors (storeys).
 enum class Edp {
-  drift,  ///< peak inter-storey drift ratio [-]
-  disp,   ///< peak floor displacement relative to the ground [m]
-  accel,  ///< peak absolute floor acceleration [m/s^2]
-  force   ///< peak pounding force on the building, over its pairs and levels [N]
+  drift,           ///< peak inter-storey drift ratio [-]
+  disp,            ///< peak floor displacement relative to the ground [m]
+  accel,           ///< peak absolute floor acceleration [m/s^2]
+  force,           ///< peak pounding force on the building, over its pairs and levels [N]
+  residual_drift,  ///< residual inter-storey drift ratio at the end of the run [-]
+  ductility        ///< storey ductility demand, peak drift / yield drift [-] (NaN: no Fy)
 };
-const char* to_string(Edp e);
+const char* to_string(Edp e);  ///< "drift", "disp", "accel", "force", "residual_drift", ...
 const char* unit_of(Edp e);
+/// The per-floor dataset of the EDP under /response (campaign/floor_arrays.hpp), with or
+/// without pounding; "" for the force (from /response/peak_force).
+std::string dataset_of(Edp e, bool pounding);
 
 struct FragilitySettings {
   std::vector<double> drift_limits{0.005, 0.01, 0.02, 0.025};  ///< [-] (ratio, not %)
   std::vector<double> disp_limits;                             ///< [m]; empty: no disp curves
   std::vector<double> accel_limits;                            ///< [m/s^2]; empty: no accel curves
   std::vector<double> force_limits;                            ///< [N]; empty: no force curves
-  BootstrapSettings bootstrap;                                 ///< replicates and seed
-  double confidence = 0.90;                                    ///< of the bands [-]
-  std::size_t grid_points = 120;                               ///< IM points of the curve bands [-]
+  std::vector<double> residual_drift_limits;  ///< [-] (ratio); empty: no residual drift curves
+  std::vector<double> ductility_limits;       ///< [-]; empty: no ductility curves
+  BootstrapSettings bootstrap;                ///< replicates and seed
+  double confidence = 0.90;                   ///< of the bands [-]
+  std::size_t grid_points = 120;              ///< IM points of the curve bands [-]
 };
 
 struct FragilityCurve {
@@ -39,6 +46,9 @@ struct FragilityCurve {
   Edp edp = Edp::drift;
   double limit = 0.0;  ///< damage-state limit [unit_of(edp)]
   bool pounding = true;
+  /// Analyses left out of this curve because their EDP is not finite (the ductility of a
+  /// building without yield_shears is NaN) [-]; the fit uses the others.
+  std::size_t left_out = 0;
   LognormalFit fit;
   Interval theta_ci, beta_ci;                   ///< bootstrap percentile bands
   double theta_asym_lo = 0, theta_asym_hi = 0;  ///< asymptotic: exp(ln theta -+ z sd)
@@ -74,10 +84,12 @@ struct FragilityReport {
   std::vector<std::string> unranked;        ///< sampled labels left out (e.g. model)
 };
 
-/// Throws InputError when no sample succeeded or the limits are not positive.
+/// Throws InputError when no sample succeeded, the limits are not positive or the file lacks
+/// the dataset of an EDP with limits (naming the file and the dataset).
 FragilityReport analyse_fragility(const CampaignData& c, const FragilitySettings& s);
 
-/// The EDP of sample s, building b (NaN where undefined).
+/// The EDP of sample s, building b (NaN where undefined). Throws InputError when the file
+/// lacks the EDP's dataset.
 double edp_value(const CampaignData& c, Edp e, bool pounding, std::size_t s, std::size_t b);
 
 }  // namespace pound

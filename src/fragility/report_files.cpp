@@ -42,7 +42,7 @@ std::string curves_csv(const CampaignData& c, const FragilityReport& r) {
       "building,building_name,edp,unit,limit,pounding,status,theta_mps2,beta,"
       "theta_ci90_lo,theta_ci90_hi,beta_ci90_lo,beta_ci90_hi,theta_asym90_lo,theta_asym90_hi,"
       "beta_asym90_lo,beta_asym90_hi,bootstrap_finite,analyses,exceedances,theta_bound_lo_mps2,"
-      "theta_bound_hi_mps2\n";
+      "theta_bound_hi_mps2,left_out\n";
   for (const auto& k : r.curves) {
     long n = 0, z = 0;
     for (const auto& o : k.observed) n += o.n, z += o.z;
@@ -56,7 +56,7 @@ std::string curves_csv(const CampaignData& c, const FragilityReport& r) {
          "," + num(k.beta_asym_lo) + "," + num(k.beta_asym_hi) + "," +
          std::to_string(k.theta_ci.finite) + "," + std::to_string(n) + "," + std::to_string(z) +
          "," + num(k.fit.bracketed() ? k.fit.theta_lo : NAN) + "," +
-         num(k.fit.bracketed() ? k.fit.theta_hi : NAN) + "\n";
+         num(k.fit.bracketed() ? k.fit.theta_hi : NAN) + "," + std::to_string(k.left_out) + "\n";
   }
   return s;
 }
@@ -134,6 +134,7 @@ void write_h5(const std::string& path, const CampaignData& c, const FragilityRep
       h5::attribute(id, g, "limit", cv.limit);
       h5::attribute(id, g, "limit_units", unit_of(cv.edp));
       h5::attribute(id, g, "pounding", cv.pounding ? "true" : "false");
+      h5::attribute(id, g, "left_out", double(cv.left_out));
       h5::attribute(id, g, "status", to_string(cv.fit.status));
       const bool fin = cv.fit.finite();
       h5::attribute(id, g, "theta", fin ? cv.fit.theta : NAN);

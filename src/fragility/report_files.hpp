@@ -2,7 +2,8 @@
 // The files of a fragility analysis, each written whole or not at all (AtomicPath), in a
 // folder of their own so that the campaign file is never touched:
 //   curves.csv        one row per curve: building, edp, limit (SI), pounding, status, theta
-//                     [m/s^2], beta, 90 % bootstrap and asymptotic bands, counts
+//                     [m/s^2], beta, 90 % bootstrap and asymptotic bands, counts (analyses,
+//                     exceedances, and left_out: analyses whose EDP is not finite)
 //   shift.csv         theta_pounding / theta_free per building, edp and limit, 90 % band
 //   observations.csv  per curve pair and stripe (or IM bin): im [m/s^2], n, exceedances with
 //                     and without pounding
@@ -10,7 +11,7 @@
 //                     the displacement and drift amplification, per building, ranked
 //   fragility.h5      the /fragility group: attributes of the run, /fragility/grid_im [G]
 //                     (m/s^2) and one group /fragility/curveNNN per curve (attributes as in
-//                     curves.csv; datasets observed_im, observed_n, observed_z,
+//                     curves.csv, left_out included; datasets observed_im, observed_n, observed_z,
 //                     probability [G], band_lo [G], band_hi [G])
 // Empty CSV fields stand for "no finite estimate" (the status column says why).
 #include <string>

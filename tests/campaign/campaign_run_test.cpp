@@ -58,13 +58,79 @@ std::vector<char> read_raw(const std::string& file, const std::string& path) {
 }
 
 void expect_same_numbers(const std::string& a, const std::string& b) {
-  for (const char* p :
-       {"/samples/id", "/samples/status", "/samples/im", "/samples/scale", "/samples/e",
-        "/samples/gap", "/samples/k_factor", "/response/peak_disp_pounding",
-        "/response/peak_disp_free", "/response/peak_drift_pounding", "/response/peak_drift_free",
-        "/response/peak_accel_pounding", "/response/peak_accel_free", "/response/peak_force",
-        "/response/impacts"}) {
+  for (const char* p : {"/samples/id",
+                        "/samples/status",
+                        "/samples/im",
+                        "/samples/scale",
+                        "/samples/e",
+                        "/samples/gap",
+                        "/samples/k_factor",
+                        "/response/peak_disp_pounding",
+                        "/response/peak_disp_free",
+                        "/response/peak_drift_pounding",
+                        "/response/peak_drift_free",
+                        "/response/peak_accel_pounding",
+                        "/response/peak_accel_free",
+                        "/response/residual_drift_pounding",
+                        "/response/residual_drift_free",
+                        "/response/ductility_pounding",
+                        "/response/ductility_free",
+                        "/response/hysteretic_energy_pounding",
+                        "/response/hysteretic_energy_free",
+                        "/response/peak_force",
+                        "/response/impacts"}) {
     EXPECT_EQ(read_raw(a, p), read_raw(b, p)) << p << " differs between " << a << " and " << b;
+  }
+}
+
+// The "units" attribute of a dataset ("" when absent).
+std::string units_of(const std::string& file, const std::string& path) {
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  const hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  std::string out;
+  const hid_t a = H5Aopen_by_name(f, path.c_str(), "units", H5P_DEFAULT, H5P_DEFAULT);
+  if (a >= 0) {
+    const hid_t t = H5Aget_type(a);
+    if (H5Tis_variable_str(t) > 0) {
+      char* s = nullptr;
+      H5Aread(a, t, &s);
+      out = s ? s : "";
+      H5free_memory(s);
+    } else {
+      std::vector<char> buf(H5Tget_size(t) + 1, '\0');
+      H5Aread(a, t, buf.data());
+      out = buf.data();
+    }
+    H5Tclose(t);
+    H5Aclose(a);
+  }
+  H5Fclose(f);
+  return out;
+}
+
+// Shape of a dataset.
+std::vector<hsize_t> dims_of(const std::string& file, const std::string& path) {
+  const hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  const hid_t d = H5Dopen2(f, path.c_str(), H5P_DEFAULT);
+  const hid_t s = H5Dget_space(d);
+  std::vector<hsize_t> dims(static_cast<std::size_t>(std::max(0, H5Sget_simple_extent_ndims(s))));
+  H5Sget_simple_extent_dims(s, dims.data(), nullptr);
+  H5Sclose(s);
+  H5Dclose(d);
+  H5Fclose(f);
+  return dims;
+}
+
+// The residual drift, ductility and hysteretic energy datasets with their units and shape
+// [samples, buildings, floors] (the smoke study: two one-storey buildings).
+void expect_new_response_datasets(const std::string& file, hsize_t samples) {
+  const std::pair<const char*, const char*> want[] = {
+      {"/response/residual_drift_pounding", "-"},    {"/response/residual_drift_free", "-"},
+      {"/response/ductility_pounding", "-"},         {"/response/ductility_free", "-"},
+      {"/response/hysteretic_energy_pounding", "J"}, {"/response/hysteretic_energy_free", "J"}};
+  for (const auto& [path, units] : want) {
+    EXPECT_EQ(units_of(file, path), units) << path << " in " << file;
+    EXPECT_EQ(dims_of(file, path), (std::vector<hsize_t>{samples, 2, 1})) << path << " in " << file;
   }
 }
 
@@ -77,6 +143,7 @@ TEST(CampaignRun, SameNumbersOnOneAndTwoRanks) {
   ASSERT_EQ(sh("mpirun -np 1 " + pound("--out " + one)), 0);
   ASSERT_EQ(sh("mpirun -np 2 --oversubscribe " + pound("--out " + two)), 0);
   expect_same_numbers(one, two);
+  expect_new_response_datasets(two, 24);
   EXPECT_FALSE(fs::exists(one + ".journal"));
 }
 
@@ -151,7 +218,8 @@ TEST(CampaignRun, PartsOfASplitCampaignMergeIntoTheSingleRun) {
   }
   const std::string merged = dir() + "/merged.h5";
   ASSERT_EQ(sh(std::string(POUND_BINARY) + " merge --out " + merged + " --parts " + parts), 0);
-  expect_same_numbers(ref, merged);
+  expect_same_numbers(ref, merged);  // the residual drift, ductility and energy included
+  expect_new_response_datasets(merged, 30);
   // A gap is refused and leaves no file.
   const std::string bad = dir() + "/bad-merge.h5";
   EXPECT_EQ(sh(std::string(POUND_BINARY) + " merge --out " + bad + " --parts " + dir() +
@@ -171,6 +239,56 @@ TEST(CampaignRun, StudyErrorCreatesNoFile) {
   ASSERT_EQ(sh(pound("--samples 4 --out " + out)), 0);
   EXPECT_EQ(sh(pound("--samples 4 --out " + out)), 2);
   EXPECT_EQ(sh(pound("--samples 4 --out " + out + " --force")), 0);
+}
+
+// Runs `pound campaign` on the smoke study with these arguments; returns the exit code and
+// stderr.
+std::pair<int, std::string> run_with_log(const std::string& args) {
+  ::setenv("ASAN_OPTIONS", "detect_leaks=0", 0);  // as in sh()
+  const std::string log = dir() + "/run.log";
+  const int s = std::system((pound(args) + " >/dev/null 2>" + log).c_str());
+  std::ifstream in(log);
+  return {WIFEXITED(s) ? WEXITSTATUS(s) : -1, std::string(std::istreambuf_iterator<char>(in), {})};
+}
+
+TEST(CampaignRun, BadStrengthOrHardeningIsOneLineExitTwoAndNoFile) {
+  const std::string out = dir() + "/bad-sample.h5";
+  const std::pair<std::string, std::vector<std::string>> cases[] = {
+      // Building 1 of the smoke study has no yield shears.
+      {"--sample.building1.strength_scale 'uniform(0.8,1.2)'",
+       {"--sample.building1.strength_scale", "no yield_shears", "hysteresis"}},
+      {"--sample.hardening 'uniform(0.5, 1.5)'", {"--sample.hardening", "[0, 1)"}},
+  };
+  for (const auto& [arg, parts] : cases) {
+    const auto [code, msg] = run_with_log("--out " + out + " " + arg);
+    EXPECT_EQ(code, 2) << arg;
+    EXPECT_EQ(std::count(msg.begin(), msg.end(), '\n'), 1) << msg;
+    for (const auto& p : parts) EXPECT_NE(msg.find(p), std::string::npos) << p << " in: " << msg;
+    EXPECT_FALSE(fs::exists(out)) << arg;
+    EXPECT_FALSE(fs::exists(out + ".journal")) << arg;
+  }
+}
+
+TEST(CampaignRun, AJournalOfAnOlderPoundIsNotResumed) {
+  const std::string out = dir() + "/old-journal.h5";
+  {
+    std::ofstream j(out + ".journal", std::ios::binary);
+    j << "POUNDJ01" << std::string(32, '\0');
+  }
+  const auto [code, log] = run_with_log("--samples 4 --resume --out " + out);
+  EXPECT_EQ(code, 2);
+  // After the start-up echo of the study, one error line.
+  const auto at = log.find("error:");
+  ASSERT_NE(at, std::string::npos) << log;
+  const std::string msg = log.substr(log.rfind('\n', at) + 1);
+  EXPECT_EQ(std::count(msg.begin(), msg.end(), '\n'), 1) << msg;
+  EXPECT_NE(msg.find(out + ".journal"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("older pound"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("--force"), std::string::npos) << msg;
+  EXPECT_FALSE(fs::exists(out));
+  // --force starts again.
+  EXPECT_EQ(sh(pound("--samples 4 --force --out " + out)), 0);
+  EXPECT_TRUE(fs::exists(out));
 }
 
 TEST(CampaignRun, BadSampleRangeOrChunkSaysWhatIsValid) {

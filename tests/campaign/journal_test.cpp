@@ -5,9 +5,11 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 
 #include "../support/scratch_dir.hpp"
+#include "campaign/floor_arrays.hpp"
 #include "core/error.hpp"
 #include "io/options.hpp"
 
@@ -48,10 +50,17 @@ SampleOutcome outcome(const CampaignStudy& st, long id) {
   o.scale = 2.0;
   o.values = {0.5 + 0.01 * id};
   const std::size_t bf = st.buildings() * st.max_floors(), pl = st.pairs() * st.max_levels();
-  for (auto* v : {&o.disp_pounding, &o.disp_free, &o.drift_pounding, &o.drift_free,
-                  &o.accel_pounding, &o.accel_free})
-    v->assign(bf, 0.25 * id);
-  o.disp_pounding[1] = std::nan("");  // building 1 has one floor
+  // Every per-floor array with values of its own, which a mixed-up order would swap.
+  double x = 0.25 * id;
+  for (const auto& a : floor_array_fields()) {
+    auto& v = o.*a.member;
+    v.assign(bf, 0.0);
+    for (double& y : v) y = (x += 0.1) / 3.0;
+  }
+  o.disp_pounding[1] = std::nan("");       // building 1 has one floor
+  o.ductility_free[0] = std::nan("");      // a building without yield_shears
+  o.hysteretic_energy_pounding[2] = -0.0;  // sign of zero kept
+  o.residual_drift_free[3] = 4.9e-324;     // denormal kept
   o.peak_force.assign(pl, 1000.0 * id);
   o.impacts.assign(pl, 3.0);
   return o;
@@ -60,7 +69,9 @@ SampleOutcome outcome(const CampaignStudy& st, long id) {
 TEST(Journal, RecordsRoundTripAndATornTailIsDropped) {
   const CampaignStudy st = tiny_study();
   const RecordLayout layout(st);
-  EXPECT_EQ(layout.values(), 2u + 1u + 6u * 2u * 2u + 2u * 1u * 1u + 2u);
+  // im, scale, e, 12 per-floor arrays of 2 x 2, peak force and impacts of 1 x 1, wall, rank.
+  EXPECT_EQ(floor_array_fields().size(), 12u);
+  EXPECT_EQ(layout.values(), 2u + 1u + 12u * 2u * 2u + 2u * 1u * 1u + 2u);
   const std::string path = test::process_scratch_dir() / "journal";
   {
     JournalWriter w(path, st, false);
@@ -81,6 +92,18 @@ TEST(Journal, RecordsRoundTripAndATornTailIsDropped) {
   EXPECT_EQ(got[2].message, "sample 2: diverged");
   EXPECT_EQ(got[1].peak_force[0], 1000.0);
   EXPECT_TRUE(std::isnan(got[1].disp_pounding[1]));
+  // Every per-floor array comes back bit for bit (NaN, -0 and denormals included).
+  for (long id : {0L, 1L, 2L}) {
+    const SampleOutcome want = outcome(st, id);
+    for (const auto& a : floor_array_fields()) {
+      const auto &w = want.*a.member, &g = got[std::size_t(id)].*a.member;
+      ASSERT_EQ(g.size(), w.size()) << a.name;
+      EXPECT_EQ(std::memcmp(g.data(), w.data(), w.size() * sizeof(double)), 0)
+          << a.name << " of sample " << id;
+    }
+  }
+  EXPECT_TRUE(std::signbit(got[1].hysteretic_energy_pounding[2]));
+  EXPECT_EQ(got[1].residual_drift_free[3], 4.9e-324);
   EXPECT_EQ(end, static_cast<long>(40 + 3 * layout.record_bytes()));
   // Appending after a resume cuts the torn tail first.
   {
@@ -89,6 +112,35 @@ TEST(Journal, RecordsRoundTripAndATornTailIsDropped) {
     w.append(rec.data(), rec.size());
   }
   EXPECT_EQ(read_journal(path, st).size(), 4u);
+  std::remove(path.c_str());
+}
+
+TEST(Journal, AJournalOfTheOldFormatSaysSo) {
+  // A journal written before the residual drift, ductility and energy arrays (POUNDJ01) has
+  // shorter records: it is refused with one line saying why and what to do.
+  const CampaignStudy st = tiny_study();
+  const std::string path = test::process_scratch_dir() / "journal-old";
+  { JournalWriter w(path, st, false); }
+  {
+    std::fstream f(path, std::ios::in | std::ios::out | std::ios::binary);
+    f.write("POUNDJ01", 8);
+  }
+  for (const bool append : {false, true}) {
+    try {
+      if (append) {
+        JournalWriter w(path, st, true);
+      } else {
+        read_journal(path, st);
+      }
+      ADD_FAILURE() << "an old journal was accepted";
+    } catch (const InputError& e) {
+      const std::string m = e.what();
+      EXPECT_NE(m.find(path), std::string::npos) << m;
+      EXPECT_NE(m.find("older pound"), std::string::npos) << m;
+      EXPECT_NE(m.find("--force"), std::string::npos) << m;
+      EXPECT_EQ(m.find('\n'), std::string::npos) << m;
+    }
+  }
   std::remove(path.c_str());
 }
 

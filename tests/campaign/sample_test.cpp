@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 
 #include "io/options.hpp"
 #include "motion/response_spectrum.hpp"
@@ -77,6 +78,64 @@ TEST(Sample, SameIdGivesTheSameOutcomeOnAnotherRunner) {
   EXPECT_LE(x.values[1], 0.01);
 }
 
+TEST(Sample, ResidualDriftDuctilityAndHystereticEnergyComeFromTheSimulation) {
+  // Building 1 (two storeys, 3 m) has yield shears under the elastic law: its ductility is
+  // the peak storey drift over Fy / k0; building 2 has none, so its ductility is NaN.
+  const double fy[] = {5e3, 4e3};
+  const CampaignStudy st =
+      study({"--building1.yield_shears", "5e3, 4e3", "--intensity.levels", "0.3"});
+  SampleRunner r(st);
+  for (long id : {0L, 1L}) {
+    const SampleOutcome o = r.run(id);
+    ASSERT_EQ(o.status, SampleStatus::ok) << o.message;
+    for (int j = 0; j < 2; ++j) {
+      const std::size_t i = static_cast<std::size_t>(j);
+      const double uy = fy[j] / 2e6;  // [m]
+      EXPECT_NEAR(o.ductility_pounding[i], o.drift_pounding[i] * 3.0 / uy,
+                  1e-12 * o.ductility_pounding[i]);
+      EXPECT_NEAR(o.ductility_free[i], o.drift_free[i] * 3.0 / uy, 1e-12 * o.ductility_free[i]);
+      EXPECT_GT(o.ductility_free[i], 0.0);
+    }
+    EXPECT_TRUE(std::isnan(o.ductility_pounding[2]));  // building 2, floor 1: no yield shears
+    EXPECT_TRUE(std::isnan(o.ductility_free[2]));
+    for (std::size_t i : {0u, 1u, 2u}) {
+      // The residual drift is part of the peak; elastic storeys dissipate no energy.
+      EXPECT_GE(o.residual_drift_pounding[i], 0.0);
+      EXPECT_LE(o.residual_drift_pounding[i], o.drift_pounding[i]);
+      EXPECT_LE(o.residual_drift_free[i], o.drift_free[i]);
+      EXPECT_EQ(o.hysteretic_energy_pounding[i], 0.0);
+      EXPECT_EQ(o.hysteretic_energy_free[i], 0.0);
+    }
+    for (const auto* v :
+         {&o.residual_drift_pounding, &o.ductility_free, &o.hysteretic_energy_pounding})
+      EXPECT_TRUE(std::isnan((*v)[3]));  // building 2 has one floor
+  }
+}
+
+TEST(Sample, StrengthScaleDividesTheDuctilityDemand) {
+  // The storeys stay elastic, so scaling the yield shears by 1.3 leaves every drift as it was
+  // (the other parameters' draws do not depend on which parameters are sampled) and divides
+  // the ductility demand by 1.3.
+  const std::vector<const char*> base = {"--building1.yield_shears", "5e3", "--intensity.levels",
+                                         "0.3"};
+  std::vector<const char*> scaled = base;
+  scaled.insert(scaled.end(), {"--sample.building1.strength_scale", "1.3"});
+  const CampaignStudy a = study(base), b = study(scaled);
+  SampleRunner ra(a), rb(b);
+  const SampleOutcome x = ra.run(2), y = rb.run(2);
+  ASSERT_EQ(x.status, SampleStatus::ok) << x.message;
+  ASSERT_EQ(y.status, SampleStatus::ok) << y.message;
+  ASSERT_EQ(x.drift_pounding.size(), y.drift_pounding.size());
+  EXPECT_EQ(std::memcmp(x.drift_pounding.data(), y.drift_pounding.data(),
+                        x.drift_pounding.size() * sizeof(double)),
+            0);  // bit for bit, the NaN of building 2's missing floor included
+  for (std::size_t i : {0u, 1u}) {
+    EXPECT_NEAR(y.ductility_pounding[i], x.ductility_pounding[i] / 1.3,
+                1e-14 * x.ductility_pounding[i]);
+    EXPECT_NEAR(y.ductility_free[i], x.ductility_free[i] / 1.3, 1e-14 * x.ductility_free[i]);
+  }
+}
+
 TEST(Sample, SaStripeIsTheSpectralAccelerationAtTheNamedBuildingsPeriod) {
   const CampaignStudy st = study(
       {"--intensity.measure", "sa", "--intensity.building", "right", "--intensity.levels", "0.25"});
@@ -109,6 +168,8 @@ TEST(Sample, NumericalFailureIsRecordedWithoutResponseNumbers) {
   EXPECT_EQ(o.status, SampleStatus::numerical_failure);
   EXPECT_NE(o.message.find("sample 4"), std::string::npos) << o.message;
   for (double v : o.disp_pounding) EXPECT_TRUE(std::isnan(v));
+  for (double v : o.residual_drift_free) EXPECT_TRUE(std::isnan(v));
+  for (double v : o.hysteretic_energy_pounding) EXPECT_TRUE(std::isnan(v));
 }
 
 TEST(Sample, GrazingRecontactsOfTheDefaultStudyAreNotChatter) {

@@ -26,6 +26,32 @@ void synthetic(long n, ExceedanceDesign* d, std::vector<char>* z) {
     }
 }
 
+TEST(Bootstrap, AnalysesLeftOutAreNotCounted) {
+  // Two stripes of three analyses; one of each is left out of the curve (no finite EDP).
+  ExceedanceDesign d;
+  d.levels = {1.0, 2.0};
+  d.im = {1, 1, 1, 2, 2, 2};
+  d.stripe = {0, 0, 0, 1, 1, 1};
+  const std::vector<char> z = {kLeftOut, 0, 1, 1, kLeftOut, 1};
+  const auto o = observations(d, z);
+  ASSERT_EQ(o.size(), 2u);
+  EXPECT_EQ(o[0].n, 2);
+  EXPECT_EQ(o[0].z, 1);
+  EXPECT_EQ(o[1].n, 2);
+  EXPECT_EQ(o[1].z, 2);
+  // A resample drawing a left-out analysis twice counts neither draw.
+  const auto r = observations(d, z, {0, 0, 2, 4, 4, 5});
+  EXPECT_EQ(r[0].n, 1);
+  EXPECT_EQ(r[1].n, 1);
+  // Continuous intensities: one observation per analysis that is not left out.
+  ExceedanceDesign c;
+  c.im = {1.0, 1.5, 2.0, 3.0};
+  c.stripe = {-1, -1, -1, -1};
+  const auto oc = observations(c, {0, kLeftOut, 1, 1});
+  ASSERT_EQ(oc.size(), 3u);
+  EXPECT_EQ(oc[1].im, 2.0);
+}
+
 TEST(Bootstrap, NinetyPercentBandAgreesWithAsymptoticBand) {
   // 4000 analyses, 1000 replicates: the percentile band of ln theta and of beta must have the
   // width of the asymptotic band 2 z95 sd within 15 % (Monte Carlo error of the 5 % and 95 %

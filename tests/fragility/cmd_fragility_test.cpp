@@ -1,14 +1,18 @@
 // pound fragility end to end on a small campaign made here: the JSON fields of every curve,
 // the files written, bad input, and the campaign file byte for byte unchanged.
 #include <gtest/gtest.h>
+#include <hdf5.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "../support/scratch_dir.hpp"
 
@@ -105,6 +109,131 @@ TEST(CmdFragility, JsonCurvesFilesAndUntouchedCampaign) {
   EXPECT_EQ(count(slurp(out + "/curves.csv"), "\n"), 1 + 18);
 }
 
+// The smoke campaign with yield shears on building 1 (the elastic law: they give it a
+// ductility, building 2 has none) and residual drift and ductility limits in the study's
+// [fragility] section.
+const std::string& inelastic_campaign() {
+  static const std::string out = [] {
+    const std::string o = dir() + "/duct.h5";
+    const std::string cmd = std::string(POUND_BINARY) + " campaign --config " + POUND_SOURCE_DIR +
+                            "/studies/campaign-smoke.ini --samples 40 --quiet"
+                            " --building1.yield_shears 150 --fragility.ductility_limits 1.5"
+                            " --fragility.residual_drift_limits 0.002 --out " +
+                            o + " 2>" + dir() + "/duct.log";
+    EXPECT_EQ(sh(cmd), 0) << slurp(dir() + "/duct.log");
+    return o;
+  }();
+  return out;
+}
+
+// Number of /fragility/curveNNN groups of fragility.h5 whose edp attribute is `edp`, and the
+// sum of their left_out attributes.
+std::pair<int, double> h5_curves(const std::string& file, const std::string& edp) {
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  const hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  int n = 0;
+  double left_out = 0;
+  for (int k = 0; k < 1000; ++k) {
+    char g[48];
+    std::snprintf(g, sizeof g, "/fragility/curve%03d", k);
+    if (H5Lexists(f, g, H5P_DEFAULT) <= 0) break;
+    const hid_t a = H5Aopen_by_name(f, g, "edp", H5P_DEFAULT, H5P_DEFAULT);
+    const hid_t t = H5Aget_type(a);
+    std::string value;
+    if (H5Tis_variable_str(t) > 0) {
+      char* c = nullptr;
+      H5Aread(a, t, &c);
+      value = c;
+      H5free_memory(c);
+    } else {
+      std::vector<char> buf(H5Tget_size(t) + 1, '\0');
+      H5Aread(a, t, buf.data());
+      value = buf.data();
+    }
+    H5Tclose(t);
+    H5Aclose(a);
+    if (value != edp) continue;
+    ++n;
+    double x = 0;
+    const hid_t l = H5Aopen_by_name(f, g, "left_out", H5P_DEFAULT, H5P_DEFAULT);
+    H5Aread(l, H5T_NATIVE_DOUBLE, &x);
+    H5Aclose(l);
+    left_out += x;
+  }
+  H5Fclose(f);
+  return {n, left_out};
+}
+
+TEST(CmdFragility, ResidualDriftAndDuctilityCurves) {
+  // The limits of the study's [fragility] section, drift at its default.
+  const std::string out = dir() + "/duct-frag", json = dir() + "/duct.json";
+  ASSERT_EQ(
+      sh(std::string(POUND_BINARY) + " fragility --input " + inelastic_campaign() + " --out " +
+         out + " --json --replicates 50 > " + json + " 2>" + dir() + "/duct-frag.log"),
+      0)
+      << slurp(dir() + "/duct-frag.log");
+  std::string j = slurp(json);
+  // 2 buildings x 1 limit x (pounding, free) curves + 2 shift entries each.
+  EXPECT_EQ(count(j, "\"edp\":\"residual_drift\",\"limit\":0.002"), 4 + 2);
+  EXPECT_EQ(count(j, "\"edp\":\"ductility\",\"limit\":1.5"), 4 + 2);
+  EXPECT_EQ(count(j, "\"edp\":\"drift\""), 16 + 8);
+  // Building 2 has no yield shears: its two ductility curves leave out all 40 analyses.
+  EXPECT_EQ(count(j, "\"left_out\":40"), 2);
+  EXPECT_EQ(count(j, "\"left_out\":0"), 16 + 4 + 2);
+  EXPECT_EQ(count(j, "\"status\":\"no_data\""), 2);
+  EXPECT_EQ(count(slurp(out + "/curves.csv"), "\n"), 1 + 16 + 4 + 4);
+  EXPECT_NE(slurp(out + "/curves.csv").find(",ductility,-,1.5,true,no_data,"), std::string::npos);
+  EXPECT_EQ(h5_curves(out + "/fragility.h5", "ductility"), (std::pair<int, double>{4, 80.0}));
+  EXPECT_EQ(h5_curves(out + "/fragility.h5", "residual_drift"), (std::pair<int, double>{4, 0.0}));
+
+  // The command line wins over the study.
+  ASSERT_EQ(sh(std::string(POUND_BINARY) + " fragility --input " + inelastic_campaign() +
+               " --out " + out +
+               " --json --replicates 50 --ductility-limits 1,2,4"
+               " --residual-drift-limits 0.001,0.003 --drift-limits 0.01 > " +
+               json + " 2>/dev/null"),
+            0);
+  j = slurp(json);
+  EXPECT_EQ(count(j, "\"edp\":\"ductility\""), 12 + 6);
+  EXPECT_EQ(count(j, "\"edp\":\"residual_drift\""), 8 + 4);
+  EXPECT_EQ(count(j, "\"limit\":1.5"), 0);
+  EXPECT_EQ(count(j, "\"left_out\":40"), 6);
+  // The text tables show the new EDPs and say what was left out.
+  const std::string text = dir() + "/duct.txt";
+  ASSERT_EQ(sh(std::string(POUND_BINARY) + " fragility --input " + inelastic_campaign() +
+               " --out " + out + " --replicates 50 > " + text + " 2>/dev/null"),
+            0);
+  const std::string t = slurp(text);
+  EXPECT_NE(t.find("residual_drift 0.2 %"), std::string::npos) << t;
+  EXPECT_EQ(count(t, "40 analyses left out"), 2) << t;
+}
+
+TEST(CmdFragility, AFileWithoutDuctilitySaysSoWhenItsCurvesAreAsked) {
+  // A campaign file written before the ductility arrays existed: copied, the datasets removed.
+  const std::string old = dir() + "/old.h5";
+  fs::copy_file(campaign(), old, fs::copy_options::overwrite_existing);
+  {
+    const hid_t f = H5Fopen(old.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+    ASSERT_GE(f, 0);
+    for (const char* d : {"residual_drift_pounding", "residual_drift_free", "ductility_pounding",
+                          "ductility_free", "hysteretic_energy_pounding", "hysteretic_energy_free"})
+      EXPECT_GE(H5Ldelete(f, (std::string("/response/") + d).c_str(), H5P_DEFAULT), 0) << d;
+    H5Fclose(f);
+  }
+  const std::string log = dir() + "/old.log";
+  EXPECT_EQ(sh(std::string(POUND_BINARY) + " fragility --input " + old + " --out " + dir() +
+               "/old-frag --replicates 20 > /dev/null 2>" + log),
+            0)
+      << slurp(log);
+  EXPECT_EQ(sh(std::string(POUND_BINARY) + " fragility --input " + old + " --out " + dir() +
+               "/old-frag2 --replicates 20 --ductility-limits 2 2>" + log),
+            2);
+  const std::string m = slurp(log);
+  EXPECT_NE(m.find(old + ": no dataset /response/ductility_pounding"), std::string::npos) << m;
+  EXPECT_EQ(count(m, "\n"), 1) << m;
+  EXPECT_FALSE(fs::exists(dir() + "/old-frag2"));
+}
+
 TEST(CmdFragility, BadInputIsOneLineAndExitTwo) {
   const std::string log = dir() + "/bad.log";
   EXPECT_EQ(sh(std::string(POUND_BINARY) + " fragility --input " + dir() + "/missing.h5 2>" + log),
@@ -115,6 +244,18 @@ TEST(CmdFragility, BadInputIsOneLineAndExitTwo) {
             2);
   EXPECT_NE(slurp(log).find("drift-limits"), std::string::npos);
   EXPECT_EQ(count(slurp(log), "\n"), 1);
+  EXPECT_EQ(sh(std::string(POUND_BINARY) + " fragility --input " + campaign() +
+               " --ductility-limits abc --out " + dir() + "/y 2>" + log),
+            2);
+  EXPECT_NE(slurp(log).find("--ductility-limits: 'abc' is not a finite number"), std::string::npos)
+      << slurp(log);
+  EXPECT_EQ(count(slurp(log), "\n"), 1);
+  EXPECT_FALSE(fs::exists(dir() + "/y"));
+  EXPECT_EQ(sh(std::string(POUND_BINARY) + " fragility --input " + campaign() +
+               " --residual-drift-limits 0 --out " + dir() + "/y 2>" + log),
+            2);
+  EXPECT_NE(slurp(log).find("residual-drift-limits"), std::string::npos) << slurp(log);
+  EXPECT_FALSE(fs::exists(dir() + "/y"));
 }
 
 }  // namespace
