@@ -37,6 +37,27 @@ void BilinearStorey::on_switch(int, const StoreyParameters& p, StoreyState& s, d
   s.d_anchor = d;
 }
 
+bool BilinearStorey::branch_line(const StoreyParameters& p, const StoreyState& s, double& slope,
+                                 double& offset) const {
+  if (s.branch == 0) {  // V = k0 (b d + (1 - b)(z_a + d - d_a)) = k0 d + k0 (1 - b)(z_a - d_a)
+    slope = p.k0;
+    offset = p.k0 * (1.0 - p.b) * (s.z_anchor - s.d_anchor);
+  } else {  // V = b k0 d + (1 - b) k0 (+-uy)
+    slope = p.b * p.k0;
+    offset = (1.0 - p.b) * p.k0 * s.branch * p.uy();
+  }
+  return true;
+}
+
+bool BilinearStorey::safe_drift(const StoreyParameters& p, const StoreyState& s, double& lo,
+                                double& hi) const {
+  if (s.branch != 0) return false;                // the unloading switch acts on the drift rate
+  const double centre = s.d_anchor - s.z_anchor;  // the drift where z = 0
+  lo = centre - p.uy();
+  hi = centre + p.uy();
+  return true;
+}
+
 double BilinearStorey::dissipated(const StoreyParameters& p, const StoreyState& s, double d,
                                   const double*) const {
   return s.branch == 0 ? s.dissipated

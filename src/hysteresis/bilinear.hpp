@@ -25,6 +25,10 @@ class BilinearStorey final : public StoreyLaw {
                            double dd, double ddd) const override;
   void on_switch(int i, const StoreyParameters& p, StoreyState& s, double d,
                  const double* x) const override;
+  bool branch_line(const StoreyParameters& p, const StoreyState& s, double& slope,
+                   double& offset) const override;
+  bool safe_drift(const StoreyParameters& p, const StoreyState& s, double& lo,
+                  double& hi) const override;
   double dissipated(const StoreyParameters& p, const StoreyState& s, double d,
                     const double* x) const override;
   double stored(const StoreyParameters& p, const StoreyState& s, double d,

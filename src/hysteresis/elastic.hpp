@@ -13,6 +13,12 @@ class ElasticStorey final : public StoreyLaw {
                const double*) const override {
     return p.k0 * d;
   }
+  bool branch_line(const StoreyParameters& p, const StoreyState&, double& slope,
+                   double& offset) const override {
+    slope = p.k0;
+    offset = 0.0;
+    return true;
+  }
   double stored(const StoreyParameters& p, const StoreyState&, double d,
                 const double*) const override {
     return 0.5 * p.k0 * d * d;

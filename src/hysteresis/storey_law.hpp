@@ -78,6 +78,17 @@ class StoreyLaw {
   }
   /// Applies switch i at drift d (continuous states x): the new branch and anchors.
   virtual void on_switch(int, const StoreyParameters&, StoreyState&, double, const double*) const {}
+  /// Piecewise-linear laws: the shear of the current branch as V = slope d + offset [N/m], [N]
+  /// (it changes only at switches). Returns false for a law without such a form.
+  virtual bool branch_line(const StoreyParameters&, const StoreyState&, double&, double&) const {
+    return false;
+  }
+  /// A drift interval (lo, hi) [m] inside which no switching function of the current branch can
+  /// rise through zero, whatever the drift rate; false when there is none (e.g. a switch on
+  /// the drift rate). Lets the solver skip the switches of storeys far from a kink.
+  virtual bool safe_drift(const StoreyParameters&, const StoreyState&, double&, double&) const {
+    return false;
+  }
   /// Hysteretic energy dissipated up to drift d [J].
   virtual double dissipated(const StoreyParameters&, const StoreyState&, double,
                             const double*) const {

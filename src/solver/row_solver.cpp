@@ -38,6 +38,9 @@ class Solver {
   // section 1); otherwise f_j = V_j - V_{j+1} with the storey shears V of the laws.
   void rhs(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy);
   void linear_forces(const double* u, const double* v, double ag, double* dv) const;
+  void affine_forces(const double* u, const double* v, double ag, double* dv) const;
+  void storey_lines();
+  void storey_changed(int dof);
   void storey_forces(const Eigen::VectorXd& y, double ag, double* dy);
   void damping_forces(const double* v, double* cv) const;
   void energy_rates(const Eigen::VectorXd& y, double ag, double* dE) const;
@@ -111,6 +114,7 @@ class Solver {
   const int n_, ns_;
   std::vector<RowStorey> storeys_;  // the row's, or elastic ones for a hand-built row
   const bool linear_, track_, fixed_;
+  bool affine_ = false;  // every storey law piecewise linear: f = K_t u + offsets (bands below)
   bool pounding_ = false;
   int nx_ = 0;                        // storey continuous states
   int iJ_ = 0, iE_ = 0, N_ = 0;       // offsets of the impulses and energies; state size
@@ -127,6 +131,12 @@ class Solver {
   std::vector<double> kl_, kd_, ku_, cl_, cd_, cu_;  // their bands [N/m], [N s/m]
   std::vector<int> row_start_, col_;   // compressed rows of K and C (build_sparse_rows)
   std::vector<double> k_val_, c_val_;  // their entries [N/m], [N s/m]
+  // Piecewise-linear storeys: the bands of the current tangent stiffness K_t [N/m] and the
+  // floor forces of the branches' offsets [N] (f = K_t u + off), rebuilt at every storey switch;
+  // and per storey the drift interval in which its switches cannot fire [m].
+  std::vector<double> tl_, td_, tu_, off_;
+  std::vector<char> has_safe_;
+  std::vector<double> safe_lo_, safe_hi_;
   Dopri5Work work_;
   RowResult r_;
 
@@ -163,6 +173,14 @@ Solver::Solver(const RowProblem& p, const IntegratorSettings& s)
     }
     for (int k = 0; k < law.switches(); ++k) sw_.push_back({i, k});
   }
+  affine_ = !linear_;
+  for (int i = 0; i < n_; ++i) {
+    double slope, offset;
+    affine_ = affine_ && storeys_[i].law->branch_line(storeys_[i].p, storey_[i], slope, offset);
+  }
+  has_safe_.assign(n_, 0);
+  safe_lo_.assign(n_, 0.0);
+  safe_hi_.assign(n_, 0.0);
   iJ_ = 2 * n_ + nx_;
   iE_ = iJ_ + ns_;
   N_ = iE_ + (track_ ? 3 : 0);
@@ -184,6 +202,8 @@ void Solver::rhs(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy) {
   for (int i = 0; i < n_; ++i) du[i] = v[i];
   if (linear_)
     linear_forces(u, v, ag, dv);
+  else if (affine_)
+    affine_forces(u, v, ag, dv);
   else
     storey_forces(y, ag, dy.data());
   for (int i = 0; i < ns_; ++i) {
@@ -195,7 +215,7 @@ void Solver::rhs(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy) {
     dv[site.dof_right] += im[site.dof_right] * f;
   }
   if (track_) {
-    if (linear_) damping_forces(v, scratch_.data());  // storey_forces() computed it otherwise
+    if (linear_ || affine_) damping_forces(v, scratch_.data());  // else storey_forces() did
     energy_rates(y, ag, du + iE_);
   }
 }
@@ -223,6 +243,61 @@ void Solver::linear_forces(const double* u, const double* v, double ag, double* 
     }
     dv[i] = -im[i] * f - ag;
   }
+}
+
+// dv = -M^-1 (C v + K_t u + off) - ag: piecewise-linear storeys in their current branches.
+void Solver::affine_forces(const double* u, const double* v, double ag, double* dv) const {
+  const double* im = row_.inv_mass.data();
+  const double *tl = tl_.data(), *td = td_.data(), *tu = tu_.data(), *off = off_.data();
+  if (tridiagonal_ && n_ > 1) {
+    const double *cl = cl_.data(), *cd = cd_.data(), *cu = cu_.data();
+    const int m = n_ - 1;
+    dv[0] = -im[0] * (cd[0] * v[0] + cu[0] * v[1] + (td[0] * u[0] + tu[0] * u[1]) + off[0]) - ag;
+    for (int i = 1; i < m; ++i)
+      dv[i] = -im[i] * (cl[i] * v[i - 1] + cd[i] * v[i] + cu[i] * v[i + 1] +
+                        (tl[i] * u[i - 1] + td[i] * u[i] + tu[i] * u[i + 1]) + off[i]) -
+              ag;
+    dv[m] =
+        -im[m] * (cl[m] * v[m - 1] + cd[m] * v[m] + (tl[m] * u[m - 1] + td[m] * u[m]) + off[m]) -
+        ag;
+    return;
+  }
+  double* cv = const_cast<double*>(scratch_.data());
+  damping_forces(v, cv);
+  for (int i = 0; i < n_; ++i) {
+    const double ku =
+        td[i] * u[i] + (i > 0 ? tl[i] * u[i - 1] : 0.0) + (i + 1 < n_ ? tu[i] * u[i + 1] : 0.0);
+    dv[i] = -im[i] * (cv[i] + ku + off[i]) - ag;
+  }
+}
+
+// The bands of K_t and the offsets from every storey's current branch line.
+void Solver::storey_lines() {
+  tl_.assign(n_, 0.0);
+  td_.assign(n_, 0.0);
+  tu_.assign(n_, 0.0);
+  off_.assign(n_, 0.0);
+  for (int i = 0; i < n_; ++i) {
+    const RowStorey& st = storeys_[i];
+    double slope = 0.0, offset = 0.0;
+    st.law->branch_line(st.p, storey_[i], slope, offset);
+    // V = slope (u_i - u_b) + offset acts as +V on floor i and -V on the floor below b.
+    td_[i] += slope;
+    off_[i] += offset;
+    if (st.below >= 0) {
+      td_[st.below] += slope;
+      tu_[st.below] -= slope;
+      tl_[i] -= slope;
+      off_[st.below] -= offset;
+    }
+  }
+}
+
+// After storey `dof` changed branch: its line (piecewise-linear rows) and safe interval.
+void Solver::storey_changed(int dof) {
+  if (affine_) storey_lines();
+  const RowStorey& st = storeys_[dof];
+  has_safe_[dof] = st.law->safe_drift(st.p, storey_[dof], safe_lo_[dof], safe_hi_[dof]);
 }
 
 // C v [N] with the same storage.
@@ -351,6 +426,20 @@ int Solver::find_event(const Eigen::VectorXd& y0, const Eigen::VectorXd& y1,
   theta = 2.0;
   for (int j = 0, m = switch_count(); j < m; ++j) {
     const int k = switch_id(j);
+    if (k >= ns_) {
+      const int dof = sw_[k - ns_].dof;
+      if (has_safe_[dof]) {
+        // Skip a storey whose drift stays inside its safe interval: a bound of the drift's
+        // cubic over the step (its basis functions of the end slopes are at most 4/27).
+        const double d0 = drift(y0, 0, dof), d1 = drift(y1, 0, dof);
+        const double m4 =
+            4.0 / 27.0 * h * (std::fabs(drift(y0, n_, dof)) + std::fabs(drift(y1, n_, dof)));
+        const double margin = 1e-12 * (std::fabs(safe_lo_[dof]) + std::fabs(safe_hi_[dof]));
+        if (std::max(d0, d1) + m4 < safe_hi_[dof] - margin &&
+            std::min(d0, d1) - m4 > safe_lo_[dof] + margin)
+          continue;
+      }
+    }
     const Hermite c = switch_hermite(k, y0, y1, dy0, dy1, h);
     bool ev;
     if (k < ns_ && !active_[k] && c.g0 > 0.0)  // across within the location tolerance: only
@@ -521,6 +610,7 @@ void Solver::apply_event(int k, double t, Eigen::VectorXd& y) {
            std::to_string(w.dof - row_.offset[st.building] + 1);
   });
   st.law->on_switch(w.local, st.p, storey_[w.dof], drift(y, 0, w.dof), x_of(y, w.dof));
+  storey_changed(w.dof);
 }
 
 void Solver::apply_contact_event(int i, double t, Eigen::VectorXd& y) {
@@ -638,6 +728,13 @@ void Solver::start() {
   y_ = Eigen::VectorXd::Zero(N_);
   if (p_.u0.size()) y_.head(n_) = p_.u0;
   if (p_.v0.size()) y_.segment(n_, n_) = p_.v0;
+  // Storeys loaded monotonically from rest to the initial drifts.
+  for (int i = 0; i < n_ && !linear_; ++i) {
+    const RowStorey& st = storeys_[i];
+    st.law->advance(st.p, StoreyState{}, 0.0, drift(y_, 0, i), storey_[i]);
+    for (int k = 0; k < st.law->continuous_states(); ++k) y_(xoff_[i] + k) = storey_[i].x[k];
+    storey_changed(i);
+  }
   double tmin_period = std::numeric_limits<double>::infinity();
   for (const auto& per : row_.periods)
     for (int i = 0; i < per.size(); ++i)
