@@ -8,11 +8,12 @@
 // default path over the reference, and the largest relative differences between the two in
 // peak floor displacement, peak drift and peak pounding force, and the impact counts.
 // Times are process CPU times (one thread), robust on a shared machine; wall times beside.
-// Usage: bench_speed [source dir [quick | lumped [check] | sample ID]] (default: the source tree
-// it was built from; "quick": only the event-driven chapter 8 run, for profiling; "lumped": only
-// the adaptive run of case 2, for profiling, with "check" also its fixed-step reference and the
-// case 2 line; "sample ID": peak forces of one campaign sample on the default path, the fixed
-// path at its automatic step and at 10 us)
+//   4. yielding buildings: samples of the default study against elastic storeys and the reference.
+// Usage: bench_speed [source dir [quick | lumped [check] | sample ID | inelastic [N]]] (default:
+// the source tree it was built from; "quick": only the event-driven chapter 8 run, for profiling;
+// "lumped": only the adaptive run of case 2, for profiling, with "check" also its fixed-step
+// reference and the case 2 line; "sample ID": peak forces of one campaign sample on the default
+// path, the fixed path at its automatic step and at 10 us)
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -145,8 +146,11 @@ CampaignStudy load_campaign(const std::string& src, long samples) {
   Options oc("campaign", "speed benchmark", campaign_option_specs());
   const std::string frag = src + "/studies/fragility-default.ini";
   // A fixed workload: the eight stripes the study had when docs/speed.md was measured (the
-  // study now has twelve, up to 1.5 g).
-  oc.parse({"--config", frag, "--intensity.levels", "0.05,0.1,0.15,0.2,0.3,0.4,0.5,0.6"});
+  // study now has twelve, up to 1.5 g), elastic storeys and no free vibration after the
+  // record, as the study was before issue 16 (case 4 measures it as it is now).
+  oc.parse({"--config", frag, "--intensity.levels", "0.05,0.1,0.15,0.2,0.3,0.4,0.5,0.6",
+            "--building1.hysteresis", "elastic", "--building2.hysteresis", "elastic",
+            "--simulation.extra_time", "0"});
   return campaign_from_options(oc, samples, -1);
 }
 
@@ -212,6 +216,85 @@ void fine_step_study(const BuildingRow& row, const GroundMotion& motion,
   }
 }
 
+// 4. Yielding buildings (issue 16): samples of the default study as it is (inelastic storeys),
+// the same samples with every storey elastic, and the inelastic samples on the fixed-step
+// reference; per contact model the cost ratio inelastic / elastic (whole sample, and without
+// generating the motion) and the largest differences from the reference.
+void inelastic_case(const std::string& src, long samples) {
+  Options oc("campaign", "speed benchmark", campaign_option_specs());
+  oc.parse({"--config", src + "/studies/fragility-default.ini"});
+  const CampaignStudy study = campaign_from_options(oc, samples, -1);
+  CampaignStudy elastic = study;
+  for (auto& b : elastic.row.buildings) b.hysteresis = "elastic";
+  const CampaignStudy ref = reference_of(study);
+  SampleRunner run_i(study), run_e(elastic), run_f(ref);
+  SimqkeGenerator gen(*study.spectrum, study.motion_duration, study.generator);
+  std::printf(
+      "\n4. yielding buildings: studies/fragility-default.ini as it is (storeys %s), %ld "
+      "samples, against the same samples with elastic storeys and against the fixed step %g s\n",
+      study.row.buildings[0].hysteresis.c_str(), samples, kReferenceDt);
+  std::printf("%4s %-10s %8s %9s %10s %10s %10s %8s %8s %8s %8s %8s\n", "id", "model", "PGA[g]",
+              "max duct", "cpu[s]", "elast[s]", "motion[s]", "ref[s]", "d disp", "d drift",
+              "d force", "same imp");
+  struct Sum {
+    int n = 0;
+    double inel = 0, el = 0, motion = 0;
+    Differences worst;
+  } sums[2];  // 0 sears, 1 lumped
+  for (long id = 0; id < samples; ++id) {
+    SampleOutcome oi, oe, of;
+    const Timing ti = time_it([&] { oi = run_i.run(id); }, 3);
+    const Timing te = time_it([&] { oe = run_e.run(id); }, 3);
+    const Timing tf = time_it([&] { of = run_f.run(id); }, 1);
+    const Timing tm = time_it([&] { gen.generate(run_i.draw(id).motion_seed, 0); }, 3);
+    const std::string model = run_i.draw(id).model;
+    Sum& sum = sums[model == "sears" ? 0 : 1];
+    ++sum.n;
+    sum.inel += ti.cpu_s;
+    sum.el += te.cpu_s;
+    sum.motion += tm.cpu_s;
+    Differences x;
+    auto cmp = [&](const std::vector<double>& p, const std::vector<double>& q, double& out) {
+      for (std::size_t i = 0; i < p.size(); ++i)
+        if (std::isfinite(p[i]) && std::isfinite(q[i])) out = std::max(out, rel(p[i], q[i]));
+    };
+    cmp(oi.disp_pounding, of.disp_pounding, x.disp);
+    cmp(oi.drift_pounding, of.drift_pounding, x.drift);
+    cmp(oi.peak_force, of.peak_force, x.force);
+    for (std::size_t k = 0; k < oi.impacts.size(); ++k)
+      if (std::isfinite(oi.impacts[k])) x.same_impacts &= oi.impacts[k] == of.impacts[k];
+    double duct = 0.0;
+    for (std::size_t k = 0; k < oi.drift_pounding.size(); ++k)
+      if (std::isfinite(oi.drift_pounding[k])) {
+        const std::size_t b = k / static_cast<std::size_t>(study.max_floors()),
+                          j = k % static_cast<std::size_t>(study.max_floors());
+        const Building& bd = study.row.buildings[b];
+        if (!bd.yield_shears.empty())
+          duct = std::max(duct, oi.drift_pounding[k] * bd.storey_heights[j] /
+                                    bd.storey(static_cast<int>(j)).uy());
+      }
+    std::printf("%4ld %-10s %8.3f %9.2f %10.4f %10.4f %10.4f %8.3f %7.3f%% %7.3f%% %7.3f%% %8s%s\n",
+                id, model.c_str(), oi.im / 9.80665, duct, ti.cpu_s, te.cpu_s, tm.cpu_s, tf.cpu_s,
+                100 * x.disp, 100 * x.drift, 100 * x.force, x.same_impacts ? "yes" : "NO",
+                oi.status == SampleStatus::ok && of.status == SampleStatus::ok ? "" : "  (failed)");
+    sum.worst.disp = std::max(sum.worst.disp, x.disp);
+    sum.worst.drift = std::max(sum.worst.drift, x.drift);
+    sum.worst.force = std::max(sum.worst.force, x.force);
+    sum.worst.same_impacts = sum.worst.same_impacts && x.same_impacts;
+  }
+  for (int k = 0; k < 2; ++k) {
+    const Sum& m = sums[k];
+    if (!m.n) continue;
+    std::printf(
+        "  %-10s %2d samples: inelastic %.4f s, elastic %.4f s per sample: ratio %.2f (%.2f "
+        "without the motion, %.4f s); vs reference: disp %.3f%%, drift %.3f%%, force %.3f%%, "
+        "same impacts %s\n",
+        k == 0 ? "sears" : "hc-linear", m.n, m.inel / m.n, m.el / m.n, m.inel / m.el,
+        (m.inel - m.motion) / (m.el - m.motion), m.motion / m.n, 100 * m.worst.disp,
+        100 * m.worst.drift, 100 * m.worst.force, m.worst.same_impacts ? "yes" : "NO");
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -242,6 +325,10 @@ int main(int argc, char** argv) {
     std::printf("model %s, values:", d.model.c_str());
     for (double v : d.values) std::printf(" %g", v);
     std::printf("\n");
+    return 0;
+  }
+  if (argc > 2 && std::string(argv[2]) == "inelastic") {  // case 4 alone
+    inelastic_case(src, argc > 3 ? std::stol(argv[3]) : 24);
     return 0;
   }
   // 1. Chapter 8, sears, N = 100, the full record.
@@ -387,5 +474,6 @@ int main(int argc, char** argv) {
       "  of which generating the sample's motion (SIMQKE, %g s at %g s): mean %.4f s "
       "(column motion[s])\n",
       study.motion_duration, study.generator.dt, cpu_motion / kSamples);
+  inelastic_case(src, 24);
   return 0;
 }

@@ -180,8 +180,11 @@ TEST(Sample, GrazingRecontactsOfTheDefaultStudyAreNotChatter) {
   // at once, over and over. It is now located after the dip (src/solver/row_solver.cpp).
   Options opt("campaign", "", campaign_option_specs());
   const std::string file = POUND_SOURCE_DIR "/studies/fragility-default.ini";
-  // The stripes the study had then (its stripes decide each sample's PGA).
-  opt.parse({"--config", file, "--intensity.levels", "0.05,0.1,0.15,0.2,0.3,0.4,0.5,0.6"});
+  // The stripes the study had then (its stripes decide each sample's PGA), with its elastic
+  // storeys and no free vibration after the record (the study before issue 16).
+  opt.parse({"--config", file, "--intensity.levels", "0.05,0.1,0.15,0.2,0.3,0.4,0.5,0.6",
+             "--building1.hysteresis", "elastic", "--building2.hysteresis", "elastic",
+             "--simulation.extra_time", "0"});
   const CampaignStudy st = campaign_from_options(opt, 640, -1);
   SampleRunner r(st);
   for (long id : {94L, 233L, 345L}) {
