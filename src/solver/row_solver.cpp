@@ -8,6 +8,7 @@
 #include "core/error.hpp"
 #include "solver/dopri5.hpp"
 #include "solver/hermite.hpp"
+#include "solver/row_forces.hpp"
 
 namespace pound {
 namespace {
@@ -21,6 +22,7 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 //
 // State vector y = [u (n); v (n); x (storey continuous states); J (impulse per site);
 // E (energy balance: input, damping, contact, when tracked)]. The error test covers u, v, x.
+// The floors' internal forces are RowForces' (solver/row_forces.hpp).
 class Solver {
  public:
   Solver(const RowProblem& p, const IntegratorSettings& s);
@@ -37,14 +39,8 @@ class Solver {
   // J' = contact force per site, E' (energy rates). f = K u for linear storeys (physics.md
   // section 1); otherwise f_j = V_j - V_{j+1} with the storey shears V of the laws.
   void rhs(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy);
-  void linear_forces(const double* u, const double* v, double ag, double* dv) const;
-  void affine_forces(const double* u, const double* v, double ag, double* dv) const;
-  void storey_lines();
   void storey_changed(int dof);
-  void storey_forces(const Eigen::VectorXd& y, double ag, double* dy);
-  void damping_forces(const double* v, double* cv) const;
   void energy_rates(const Eigen::VectorXd& y, double ag, double* dE) const;
-  void build_sparse_rows();
   void contact_forces(const Eigen::VectorXd& y);
 
   double gap_function(const Eigen::VectorXd& y, int i) const {
@@ -126,15 +122,9 @@ class Solver {
   std::vector<double> last_event_t_;  // per switch id [s]
   std::vector<int> chatter_;          // per switch id
   Eigen::VectorXd force_;             // contact force per site [N]
-  Eigen::VectorXd scratch_;           // damping forces C v [N]
-  bool tridiagonal_ = false;          // K and C tridiagonal (build_sparse_rows)
-  std::vector<double> kl_, kd_, ku_, cl_, cd_, cu_;  // their bands [N/m], [N s/m]
-  std::vector<int> row_start_, col_;   // compressed rows of K and C (build_sparse_rows)
-  std::vector<double> k_val_, c_val_;  // their entries [N/m], [N s/m]
-  // Piecewise-linear storeys: the bands of the current tangent stiffness K_t [N/m] and the
-  // floor forces of the branches' offsets [N] (f = K_t u + off), rebuilt at every storey switch;
-  // and per storey the drift interval in which its switches cannot fire [m].
-  std::vector<double> tl_, td_, tu_, off_;
+  mutable Eigen::VectorXd scratch_;   // damping forces C v [N] (energy rates)
+  RowForces forces_;                  // internal forces of the floors
+  // Per storey the drift interval in which its switches cannot fire [m].
   std::vector<char> has_safe_;
   std::vector<double> safe_lo_, safe_hi_;
   Dopri5Work work_;
@@ -155,7 +145,8 @@ Solver::Solver(const RowProblem& p, const IntegratorSettings& s)
       ns_(static_cast<int>(row_.sites.size())),
       linear_(row_.linear),
       track_(p.track_energy),
-      fixed_(s.control == StepControl::fixed) {
+      fixed_(s.control == StepControl::fixed),
+      forces_(row_, storeys_) {
   storeys_ = row_.storeys;
   if (static_cast<int>(storeys_.size()) != n_) storeys_ = elastic_storeys(row_);
   pounding_ = !p.laws.empty();
@@ -187,7 +178,6 @@ Solver::Solver(const RowProblem& p, const IntegratorSettings& s)
   force_.setZero(ns_);
   scratch_.setZero(n_);
   work_.resize(N_);
-  build_sparse_rows();
 }
 
 void Solver::rhs(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy) {
@@ -201,11 +191,11 @@ void Solver::rhs(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy) {
   double* dv = du + n_;
   for (int i = 0; i < n_; ++i) du[i] = v[i];
   if (linear_)
-    linear_forces(u, v, ag, dv);
+    forces_.linear(u, v, ag, dv);
   else if (affine_)
-    affine_forces(u, v, ag, dv);
+    forces_.affine(u, v, ag, dv);
   else
-    storey_forces(y, ag, dy.data());
+    forces_.general(y, storey_, xoff_, ag, dy.data());
   for (int i = 0; i < ns_; ++i) {
     const double f = force_(i);
     du[iJ_ + i] = f;
@@ -214,131 +204,21 @@ void Solver::rhs(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy) {
     dv[site.dof_left] -= im[site.dof_left] * f;
     dv[site.dof_right] += im[site.dof_right] * f;
   }
-  if (track_) {
-    if (linear_ || affine_) damping_forces(v, scratch_.data());  // else storey_forces() did
-    energy_rates(y, ag, du + iE_);
-  }
-}
-
-// dv = -M^-1 (C v + K u) - ag with the bands or compressed rows of build_sparse_rows.
-void Solver::linear_forces(const double* u, const double* v, double ag, double* dv) const {
-  const double* im = row_.inv_mass.data();
-  if (tridiagonal_ && n_ > 1) {
-    const double *kl = kl_.data(), *kd = kd_.data(), *ku = ku_.data();
-    const double *cl = cl_.data(), *cd = cd_.data(), *cu = cu_.data();
-    const int m = n_ - 1;
-    dv[0] = -im[0] * (cd[0] * v[0] + cu[0] * v[1] + (kd[0] * u[0] + ku[0] * u[1])) - ag;
-    for (int i = 1; i < m; ++i)
-      dv[i] = -im[i] * (cl[i] * v[i - 1] + cd[i] * v[i] + cu[i] * v[i + 1] +
-                        (kl[i] * u[i - 1] + kd[i] * u[i] + ku[i] * u[i + 1])) -
-              ag;
-    dv[m] = -im[m] * (cl[m] * v[m - 1] + cd[m] * v[m] + (kl[m] * u[m - 1] + kd[m] * u[m])) - ag;
-    return;
-  }
-  for (int i = 0; i < n_; ++i) {
-    double f = 0.0;
-    for (int e = row_start_[i]; e < row_start_[i + 1]; ++e) {
-      const int j = col_[e];
-      f += c_val_[e] * v[j] + k_val_[e] * u[j];
-    }
-    dv[i] = -im[i] * f - ag;
-  }
-}
-
-// dv = -M^-1 (C v + K_t u + off) - ag: piecewise-linear storeys in their current branches.
-void Solver::affine_forces(const double* u, const double* v, double ag, double* dv) const {
-  const double* im = row_.inv_mass.data();
-  const double *tl = tl_.data(), *td = td_.data(), *tu = tu_.data(), *off = off_.data();
-  if (tridiagonal_ && n_ > 1) {
-    const double *cl = cl_.data(), *cd = cd_.data(), *cu = cu_.data();
-    const int m = n_ - 1;
-    dv[0] = -im[0] * (cd[0] * v[0] + cu[0] * v[1] + (td[0] * u[0] + tu[0] * u[1]) + off[0]) - ag;
-    for (int i = 1; i < m; ++i)
-      dv[i] = -im[i] * (cl[i] * v[i - 1] + cd[i] * v[i] + cu[i] * v[i + 1] +
-                        (tl[i] * u[i - 1] + td[i] * u[i] + tu[i] * u[i + 1]) + off[i]) -
-              ag;
-    dv[m] =
-        -im[m] * (cl[m] * v[m - 1] + cd[m] * v[m] + (tl[m] * u[m - 1] + td[m] * u[m]) + off[m]) -
-        ag;
-    return;
-  }
-  double* cv = const_cast<double*>(scratch_.data());
-  damping_forces(v, cv);
-  for (int i = 0; i < n_; ++i) {
-    const double ku =
-        td[i] * u[i] + (i > 0 ? tl[i] * u[i - 1] : 0.0) + (i + 1 < n_ ? tu[i] * u[i + 1] : 0.0);
-    dv[i] = -im[i] * (cv[i] + ku + off[i]) - ag;
-  }
-}
-
-// The bands of K_t and the offsets from every storey's current branch line.
-void Solver::storey_lines() {
-  tl_.assign(n_, 0.0);
-  td_.assign(n_, 0.0);
-  tu_.assign(n_, 0.0);
-  off_.assign(n_, 0.0);
-  for (int i = 0; i < n_; ++i) {
-    const RowStorey& st = storeys_[i];
-    double slope = 0.0, offset = 0.0;
-    st.law->branch_line(st.p, storey_[i], slope, offset);
-    // V = slope (u_i - u_b) + offset acts as +V on floor i and -V on the floor below b.
-    td_[i] += slope;
-    off_[i] += offset;
-    if (st.below >= 0) {
-      td_[st.below] += slope;
-      tu_[st.below] -= slope;
-      tl_[i] -= slope;
-      off_[st.below] -= offset;
-    }
-  }
+  if (track_) energy_rates(y, ag, du + iE_);
 }
 
 // After storey `dof` changed branch: its line (piecewise-linear rows) and safe interval.
 void Solver::storey_changed(int dof) {
-  if (affine_) storey_lines();
+  if (affine_) forces_.set_lines(storey_);
   const RowStorey& st = storeys_[dof];
   has_safe_[dof] = st.law->safe_drift(st.p, storey_[dof], safe_lo_[dof], safe_hi_[dof]);
-}
-
-// C v [N] with the same storage.
-void Solver::damping_forces(const double* v, double* cv) const {
-  if (tridiagonal_ && n_ > 1) {
-    for (int i = 0; i < n_; ++i)
-      cv[i] = cd_[i] * v[i] + (i > 0 ? cl_[i] * v[i - 1] : 0.0) +
-              (i + 1 < n_ ? cu_[i] * v[i + 1] : 0.0);
-    return;
-  }
-  for (int i = 0; i < n_; ++i) {
-    double f = 0.0;
-    for (int e = row_start_[i]; e < row_start_[i + 1]; ++e) f += c_val_[e] * v[col_[e]];
-    cv[i] = f;
-  }
-}
-
-// Inelastic storeys: dv = -M^-1 (C v + f) - ag with f_j = V_j - V_{j+1}, and the laws' rates.
-void Solver::storey_forces(const Eigen::VectorXd& y, double ag, double* dy) {
-  const double* v = y.data() + n_;
-  double* dv = dy + n_;
-  double* cv = scratch_.data();
-  damping_forces(v, cv);
-  for (int i = 0; i < n_; ++i) dv[i] = cv[i];
-  for (int i = 0; i < n_; ++i) {
-    const RowStorey& st = storeys_[i];
-    const double d = drift(y, 0, i);
-    const double* x = x_of(y, i);
-    const double V = st.law->shear(st.p, storey_[i], d, x);
-    dv[i] += V;
-    if (st.below >= 0) dv[st.below] -= V;
-    if (x) st.law->rates(st.p, storey_[i], d, drift(y, n_, i), x, dy + xoff_[i]);
-  }
-  const double* im = row_.inv_mass.data();
-  for (int i = 0; i < n_; ++i) dv[i] = -im[i] * dv[i] - ag;
 }
 
 // E' = [input -ag 1^T M v, damping v^T C v, contact sum_s F_s (v_L - v_R)] [W].
 void Solver::energy_rates(const Eigen::VectorXd& y, double ag, double* dE) const {
   const double* v = y.data() + n_;
-  const double* cv = scratch_.data();  // C v of this evaluation
+  double* cv = scratch_.data();
+  forces_.damping(v, cv);
   double mv = 0.0, vcv = 0.0, contact = 0.0;
   for (int i = 0; i < n_; ++i) {
     mv += v[i] / row_.inv_mass(i);
@@ -348,38 +228,6 @@ void Solver::energy_rates(const Eigen::VectorXd& y, double ag, double* dE) const
   dE[0] = -ag * mv;
   dE[1] = vcv;
   dE[2] = contact;
-}
-
-// Storage of K and C for the products of rhs(). A shear building's K is tridiagonal
-// (Th. 3.6) and so is its Rayleigh damping C = a0 M + a1 K (Chopra 11.4.1); buildings do not
-// couple (block diagonal: the entries between one building's top floor and the next one's
-// first floor are zero). Then the three bands are kept (kl_(i) = K(i, i-1), kd_(i) = K(i, i),
-// ku_(i) = K(i, i+1), the same for C; zero outside the matrix). Otherwise (modal damping
-// gives a full C per building) compressed rows over the union of the nonzero patterns.
-// Either costs O(nonzeros) instead of O(n^2) and gives the dense products up to round-off.
-void Solver::build_sparse_rows() {
-  tridiagonal_ = true;
-  for (int i = 0; i < n_; ++i)
-    for (int j = 0; j < n_; ++j)
-      if (std::abs(i - j) > 1 && (row_.K(i, j) != 0.0 || row_.C(i, j) != 0.0)) tridiagonal_ = false;
-  auto band = [&](const Eigen::MatrixXd& A, int offset) {
-    std::vector<double> b(n_, 0.0);
-    for (int i = 0; i < n_; ++i)
-      if (i + offset >= 0 && i + offset < n_) b[i] = A(i, i + offset);
-    return b;
-  };
-  kl_ = band(row_.K, -1), kd_ = band(row_.K, 0), ku_ = band(row_.K, 1);
-  cl_ = band(row_.C, -1), cd_ = band(row_.C, 0), cu_ = band(row_.C, 1);
-  row_start_.assign(1, 0);
-  for (int i = 0; i < n_; ++i) {
-    for (int j = 0; j < n_; ++j) {
-      if (row_.K(i, j) == 0.0 && row_.C(i, j) == 0.0) continue;
-      col_.push_back(j);
-      k_val_.push_back(row_.K(i, j));
-      c_val_.push_back(row_.C(i, j));
-    }
-    row_start_.push_back(static_cast<int>(col_.size()));
-  }
 }
 
 // Contact force per site [N] into force_ (zero where no contact is active).

@@ -1,0 +1,148 @@
+#include "solver/row_forces.hpp"
+
+#include <cmath>
+#include <cstdlib>
+
+namespace pound {
+
+// Storage of K and C. A shear building's K is tridiagonal (Th. 3.6) and so is its Rayleigh
+// damping C = a0 M + a1 K (Chopra 11.4.1); buildings do not couple (block diagonal: the entries
+// between one building's top floor and the next one's first floor are zero). Then the three
+// bands are kept (kl_(i) = K(i, i-1), kd_(i) = K(i, i), ku_(i) = K(i, i+1), the same for C;
+// zero outside the matrix). Otherwise (modal damping gives a full C per building) compressed
+// rows over the union of the nonzero patterns. Either costs O(nonzeros) instead of O(n^2) and
+// gives the dense products up to round-off.
+RowForces::RowForces(const AssembledRow& row, const std::vector<RowStorey>& storeys)
+    : row_(row), storeys_(storeys), n_(row.dofs()), cv_(Eigen::VectorXd::Zero(row.dofs())) {
+  tridiagonal_ = true;
+  for (int i = 0; i < n_; ++i)
+    for (int j = 0; j < n_; ++j)
+      if (std::abs(i - j) > 1 && (row_.K(i, j) != 0.0 || row_.C(i, j) != 0.0)) tridiagonal_ = false;
+  auto band = [&](const Eigen::MatrixXd& A, int offset) {
+    std::vector<double> b(n_, 0.0);
+    for (int i = 0; i < n_; ++i)
+      if (i + offset >= 0 && i + offset < n_) b[i] = A(i, i + offset);
+    return b;
+  };
+  kl_ = band(row_.K, -1), kd_ = band(row_.K, 0), ku_ = band(row_.K, 1);
+  cl_ = band(row_.C, -1), cd_ = band(row_.C, 0), cu_ = band(row_.C, 1);
+  row_start_.assign(1, 0);
+  for (int i = 0; i < n_; ++i) {
+    for (int j = 0; j < n_; ++j) {
+      if (row_.K(i, j) == 0.0 && row_.C(i, j) == 0.0) continue;
+      col_.push_back(j);
+      k_val_.push_back(row_.K(i, j));
+      c_val_.push_back(row_.C(i, j));
+    }
+    row_start_.push_back(static_cast<int>(col_.size()));
+  }
+  tl_.assign(n_, 0.0), td_.assign(n_, 0.0), tu_.assign(n_, 0.0), off_.assign(n_, 0.0);
+}
+
+void RowForces::linear(const double* u, const double* v, double ag, double* dv) const {
+  const double* im = row_.inv_mass.data();
+  if (tridiagonal_ && n_ > 1) {
+    const double *kl = kl_.data(), *kd = kd_.data(), *ku = ku_.data();
+    const double *cl = cl_.data(), *cd = cd_.data(), *cu = cu_.data();
+    const int m = n_ - 1;
+    dv[0] = -im[0] * (cd[0] * v[0] + cu[0] * v[1] + (kd[0] * u[0] + ku[0] * u[1])) - ag;
+    for (int i = 1; i < m; ++i)
+      dv[i] = -im[i] * (cl[i] * v[i - 1] + cd[i] * v[i] + cu[i] * v[i + 1] +
+                        (kl[i] * u[i - 1] + kd[i] * u[i] + ku[i] * u[i + 1])) -
+              ag;
+    dv[m] = -im[m] * (cl[m] * v[m - 1] + cd[m] * v[m] + (kl[m] * u[m - 1] + kd[m] * u[m])) - ag;
+    return;
+  }
+  for (int i = 0; i < n_; ++i) {
+    double f = 0.0;
+    for (int e = row_start_[i]; e < row_start_[i + 1]; ++e) {
+      const int j = col_[e];
+      f += c_val_[e] * v[j] + k_val_[e] * u[j];
+    }
+    dv[i] = -im[i] * f - ag;
+  }
+}
+
+void RowForces::affine(const double* u, const double* v, double ag, double* dv) const {
+  const double* im = row_.inv_mass.data();
+  const double *tl = tl_.data(), *td = td_.data(), *tu = tu_.data(), *off = off_.data();
+  if (tridiagonal_ && n_ > 1) {
+    const double *cl = cl_.data(), *cd = cd_.data(), *cu = cu_.data();
+    const int m = n_ - 1;
+    dv[0] = -im[0] * (cd[0] * v[0] + cu[0] * v[1] + (td[0] * u[0] + tu[0] * u[1]) + off[0]) - ag;
+    for (int i = 1; i < m; ++i)
+      dv[i] = -im[i] * (cl[i] * v[i - 1] + cd[i] * v[i] + cu[i] * v[i + 1] +
+                        (tl[i] * u[i - 1] + td[i] * u[i] + tu[i] * u[i + 1]) + off[i]) -
+              ag;
+    dv[m] =
+        -im[m] * (cl[m] * v[m - 1] + cd[m] * v[m] + (tl[m] * u[m - 1] + td[m] * u[m]) + off[m]) -
+        ag;
+    return;
+  }
+  double* cv = cv_.data();
+  damping(v, cv);
+  for (int i = 0; i < n_; ++i) {
+    const double ku =
+        td[i] * u[i] + (i > 0 ? tl[i] * u[i - 1] : 0.0) + (i + 1 < n_ ? tu[i] * u[i + 1] : 0.0);
+    dv[i] = -im[i] * (cv[i] + ku + off[i]) - ag;
+  }
+}
+
+void RowForces::set_lines(const std::vector<StoreyState>& states) {
+  std::fill(tl_.begin(), tl_.end(), 0.0);
+  std::fill(td_.begin(), td_.end(), 0.0);
+  std::fill(tu_.begin(), tu_.end(), 0.0);
+  std::fill(off_.begin(), off_.end(), 0.0);
+  for (int i = 0; i < n_; ++i) {
+    const RowStorey& st = storeys_[i];
+    double slope = 0.0, offset = 0.0;
+    st.law->branch_line(st.p, states[i], slope, offset);
+    // V = slope (u_i - u_b) + offset acts as +V on floor i and -V on the floor below b.
+    td_[i] += slope;
+    off_[i] += offset;
+    if (st.below >= 0) {
+      td_[st.below] += slope;
+      tu_[st.below] -= slope;
+      tl_[i] -= slope;
+      off_[st.below] -= offset;
+    }
+  }
+}
+
+void RowForces::general(const Eigen::VectorXd& y, const std::vector<StoreyState>& states,
+                        const std::vector<int>& xoff, double ag, double* dy) const {
+  const double* u = y.data();
+  const double* v = u + n_;
+  double* dv = dy + n_;
+  damping(v, dv);
+  for (int i = 0; i < n_; ++i) {
+    const RowStorey& st = storeys_[i];
+    const double d = u[i] - (st.below >= 0 ? u[st.below] : 0.0);
+    const double* x = xoff[i] >= 0 ? u + xoff[i] : nullptr;
+    const double V = st.law->shear(st.p, states[i], d, x);
+    dv[i] += V;
+    if (st.below >= 0) dv[st.below] -= V;
+    if (x) {
+      const double dd = v[i] - (st.below >= 0 ? v[st.below] : 0.0);
+      st.law->rates(st.p, states[i], d, dd, x, dy + xoff[i]);
+    }
+  }
+  const double* im = row_.inv_mass.data();
+  for (int i = 0; i < n_; ++i) dv[i] = -im[i] * dv[i] - ag;
+}
+
+void RowForces::damping(const double* v, double* cv) const {
+  if (tridiagonal_ && n_ > 1) {
+    for (int i = 0; i < n_; ++i)
+      cv[i] = cd_[i] * v[i] + (i > 0 ? cl_[i] * v[i - 1] : 0.0) +
+              (i + 1 < n_ ? cu_[i] * v[i + 1] : 0.0);
+    return;
+  }
+  for (int i = 0; i < n_; ++i) {
+    double f = 0.0;
+    for (int e = row_start_[i]; e < row_start_[i + 1]; ++e) f += c_val_[e] * v[col_[e]];
+    cv[i] = f;
+  }
+}
+
+}  // namespace pound
