@@ -27,7 +27,7 @@ build/bin/pound fragility --input "$out/campaign.h5" --out "$out/fragility"
 # their target spectrum, and the time histories of the chapter 8 example.
 build/bin/pound motion generate --spectrum ec8 --ec8-type 1 --ground-type C --ag 0.3 \
   --count 4 --duration 10 --dt 0.01 --seed 2026 --out "$out/motions" >/dev/null
-build/bin/pound simulate --config studies/ch8-five-three.ini --histories "$out/ch8-histories.h5" >/dev/null
+build/bin/pound simulate --config studies/ch8-yielding.ini --histories "$out/ch8-histories.h5" >/dev/null
 /usr/bin/python3 scripts/plot_results.py --campaign "$out/campaign.h5" --fragility "$out/fragility" \
   --motions "$out/motions/motions.h5" --histories "$out/ch8-histories.h5" --out "$out/plots"
 echo "== results:  $out/campaign.h5 (samples, schema in docs/campaign.md)"

@@ -39,55 +39,6 @@ RowForces::RowForces(const AssembledRow& row, const std::vector<RowStorey>& stor
   tl_.assign(n_, 0.0), td_.assign(n_, 0.0), tu_.assign(n_, 0.0), off_.assign(n_, 0.0);
 }
 
-void RowForces::linear(const double* u, const double* v, double ag, double* dv) const {
-  const double* im = row_.inv_mass.data();
-  if (tridiagonal_ && n_ > 1) {
-    const double *kl = kl_.data(), *kd = kd_.data(), *ku = ku_.data();
-    const double *cl = cl_.data(), *cd = cd_.data(), *cu = cu_.data();
-    const int m = n_ - 1;
-    dv[0] = -im[0] * (cd[0] * v[0] + cu[0] * v[1] + (kd[0] * u[0] + ku[0] * u[1])) - ag;
-    for (int i = 1; i < m; ++i)
-      dv[i] = -im[i] * (cl[i] * v[i - 1] + cd[i] * v[i] + cu[i] * v[i + 1] +
-                        (kl[i] * u[i - 1] + kd[i] * u[i] + ku[i] * u[i + 1])) -
-              ag;
-    dv[m] = -im[m] * (cl[m] * v[m - 1] + cd[m] * v[m] + (kl[m] * u[m - 1] + kd[m] * u[m])) - ag;
-    return;
-  }
-  for (int i = 0; i < n_; ++i) {
-    double f = 0.0;
-    for (int e = row_start_[i]; e < row_start_[i + 1]; ++e) {
-      const int j = col_[e];
-      f += c_val_[e] * v[j] + k_val_[e] * u[j];
-    }
-    dv[i] = -im[i] * f - ag;
-  }
-}
-
-void RowForces::affine(const double* u, const double* v, double ag, double* dv) const {
-  const double* im = row_.inv_mass.data();
-  const double *tl = tl_.data(), *td = td_.data(), *tu = tu_.data(), *off = off_.data();
-  if (tridiagonal_ && n_ > 1) {
-    const double *cl = cl_.data(), *cd = cd_.data(), *cu = cu_.data();
-    const int m = n_ - 1;
-    dv[0] = -im[0] * (cd[0] * v[0] + cu[0] * v[1] + (td[0] * u[0] + tu[0] * u[1]) + off[0]) - ag;
-    for (int i = 1; i < m; ++i)
-      dv[i] = -im[i] * (cl[i] * v[i - 1] + cd[i] * v[i] + cu[i] * v[i + 1] +
-                        (tl[i] * u[i - 1] + td[i] * u[i] + tu[i] * u[i + 1]) + off[i]) -
-              ag;
-    dv[m] =
-        -im[m] * (cl[m] * v[m - 1] + cd[m] * v[m] + (tl[m] * u[m - 1] + td[m] * u[m]) + off[m]) -
-        ag;
-    return;
-  }
-  double* cv = cv_.data();
-  damping(v, cv);
-  for (int i = 0; i < n_; ++i) {
-    const double ku =
-        td[i] * u[i] + (i > 0 ? tl[i] * u[i - 1] : 0.0) + (i + 1 < n_ ? tu[i] * u[i + 1] : 0.0);
-    dv[i] = -im[i] * (cv[i] + ku + off[i]) - ag;
-  }
-}
-
 void RowForces::set_lines(const std::vector<StoreyState>& states) {
   std::fill(tl_.begin(), tl_.end(), 0.0);
   std::fill(td_.begin(), td_.end(), 0.0);

@@ -41,7 +41,17 @@ class Solver {
   void rhs(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy);
   void storey_changed(int dof);
   void energy_rates(const Eigen::VectorXd& y, double ag, double* dE) const;
-  void contact_forces(const Eigen::VectorXd& y);
+  // Contact force per site [N] into force_ (zero where no contact is active).
+  void contact_forces(const Eigen::VectorXd& y) {
+    for (int i = 0; i < ns_; ++i) {
+      double f = 0.0;
+      if (active_[i]) {
+        const double d = gap_function(y, i);
+        f = p_.laws[i]->force(d, gap_rate(y, i), v0_[i]);
+      }
+      force_(i) = f;
+    }
+  }
 
   double gap_function(const Eigen::VectorXd& y, int i) const {
     const auto& s = row_.sites[i];
@@ -64,7 +74,14 @@ class Solver {
   }
 
   // Switch k at state y with derivative dy (signed: it happens where the value rises through 0).
-  SwitchValue switch_at(int k, const Eigen::VectorXd& y, const Eigen::VectorXd& dy) const;
+  SwitchValue switch_at(int k, const Eigen::VectorXd& y, const Eigen::VectorXd& dy) const {
+    if (k < ns_) {
+      const double sign = active_[k] ? -1.0 : 1.0;
+      return {sign * gap_function(y, k), sign * gap_rate(y, k)};
+    }
+    return storey_switch_at(k, y, dy);
+  }
+  SwitchValue storey_switch_at(int k, const Eigen::VectorXd& y, const Eigen::VectorXd& dy) const;
   Hermite switch_hermite(int k, const Eigen::VectorXd& y0, const Eigen::VectorXd& y1,
                          const Eigen::VectorXd& dy0, const Eigen::VectorXd& dy1, double h) const {
     const SwitchValue a = switch_at(k, y0, dy0), b = switch_at(k, y1, dy1);
@@ -230,23 +247,8 @@ void Solver::energy_rates(const Eigen::VectorXd& y, double ag, double* dE) const
   dE[2] = contact;
 }
 
-// Contact force per site [N] into force_ (zero where no contact is active).
-void Solver::contact_forces(const Eigen::VectorXd& y) {
-  for (int i = 0; i < ns_; ++i) {
-    double f = 0.0;
-    if (active_[i]) {
-      const double d = gap_function(y, i);
-      f = p_.laws[i]->force(d, gap_rate(y, i), v0_[i]);
-    }
-    force_(i) = f;
-  }
-}
-
-SwitchValue Solver::switch_at(int k, const Eigen::VectorXd& y, const Eigen::VectorXd& dy) const {
-  if (k < ns_) {
-    const double sign = active_[k] ? -1.0 : 1.0;
-    return {sign * gap_function(y, k), sign * gap_rate(y, k)};
-  }
+SwitchValue Solver::storey_switch_at(int k, const Eigen::VectorXd& y,
+                                     const Eigen::VectorXd& dy) const {
   const StoreySwitch& w = sw_[k - ns_];
   const RowStorey& st = storeys_[w.dof];
   return st.law->switch_value(w.local, st.p, storey_[w.dof], drift(y, 0, w.dof),
