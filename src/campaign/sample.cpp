@@ -66,9 +66,9 @@ SampleModel SampleRunner::model(const SampleDraw& d) const {
   return m;
 }
 
-SampleOutcome SampleRunner::run(long id) {
+SampleOutcome SampleRunner::run(const SampleDraw& d) {
   const auto t0 = std::chrono::steady_clock::now();
-  const SampleDraw d = draw(id);
+  const long id = d.id;
   SampleOutcome out;
   out.id = id;
   out.values = d.values;

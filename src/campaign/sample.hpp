@@ -66,7 +66,9 @@ class SampleRunner {
   /// applied (sampled_parameters.hpp).
   SampleModel model(const SampleDraw& d) const;
   /// Never throws for a failing simulation: the failure is the outcome's status and message.
-  SampleOutcome run(long id);
+  SampleOutcome run(long id) { return run(draw(id)); }
+  /// The same for given draws (e.g. a sample of an earlier version of the sampling).
+  SampleOutcome run(const SampleDraw& d);
 
  private:
   const CampaignStudy& st_;

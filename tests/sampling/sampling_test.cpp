@@ -7,6 +7,7 @@
 #include "core/error.hpp"
 #include "sampling/counter_rng.hpp"
 #include "sampling/distribution.hpp"
+#include "sampling/keyed_permutation.hpp"
 #include "sampling/latin_hypercube.hpp"
 #include "sampling/normal.hpp"
 
@@ -84,6 +85,66 @@ TEST(LatinHypercube, EachStratumIsUsedExactlyOncePerDimension) {
   // A fresh object (another rank) gives the same numbers.
   LatinHypercube other(7, n);
   EXPECT_EQ(other.uniform(stream_id("gap"), 100), lhs.uniform(stream_id("gap"), 100));
+}
+
+}  // namespace
+}  // namespace pound
+
+namespace pound {
+namespace {
+
+TEST(KeyedPermutation, IsABijectionForSizesThatAreNotPowersOfTwo) {
+  // Issue 13: every index of [0, n) is hit exactly once, for n around powers of two (where the
+  // Feistel domain 2^(2w) is 1x to 4x n and the cycle walk is longest or shortest).
+  for (std::uint64_t n :
+       {1ull, 2ull, 3ull, 5ull, 7ull, 63ull, 64ull, 65ull, 1000ull, 4095ull, 4097ull, 100003ull}) {
+    const KeyedPermutation p(2026, stream_id("gap"), n);
+    std::vector<char> hit(n, 0);
+    for (std::uint64_t i = 0; i < n; ++i) {
+      const std::uint64_t j = p(i);
+      ASSERT_LT(j, n) << n;
+      EXPECT_EQ(hit[j], 0) << "n = " << n << ": " << j << " twice";
+      hit[j] = 1;
+    }
+  }
+}
+
+TEST(KeyedPermutation, LooksRandomAndDependsOnTheKey) {
+  // A permutation of 10,000 indices: the rank correlation of i and pi(i) is that of a random
+  // permutation (|rho| < 4 / sqrt(n - 1) = 0.04, four standard errors), it has about one fixed
+  // point (Poisson with mean 1: at most 10), and permutations of other keys agree with it about
+  // as often.
+  const std::uint64_t n = 10000;
+  const KeyedPermutation a(1, 11, n), b(2, 11, n), c(1, 12, n);
+  double sxy = 0.0, mean = (n - 1) / 2.0, var = 0.0;
+  int fixed = 0, same_b = 0, same_c = 0;
+  for (std::uint64_t i = 0; i < n; ++i) {
+    const double x = double(i) - mean, y = double(a(i)) - mean;
+    sxy += x * y;
+    var += x * x;
+    fixed += a(i) == i;
+    same_b += a(i) == b(i);
+    same_c += a(i) == c(i);
+  }
+  EXPECT_LT(std::fabs(sxy / var), 4.0 / std::sqrt(n - 1.0));
+  EXPECT_LE(fixed, 10);
+  EXPECT_LE(same_b, 10);
+  EXPECT_LE(same_c, 10);
+}
+
+TEST(LatinHypercube, StrataAreAPermutationForLargeCountsWithoutStoringThem) {
+  // 10^9 samples: the object stays small (no permutation is stored) and two samples far apart
+  // land in distinct strata; the stratum of a sample is the same on any rank (a fresh object).
+  const std::uint64_t n = 1000000000ull;
+  LatinHypercube lhs(3, n);
+  const std::uint64_t s = stream_id("k_factor");
+  std::set<std::uint64_t> seen;
+  for (std::uint64_t i = 0; i < 2000; ++i) seen.insert(lhs.stratum(s, i * 499999ull));
+  EXPECT_EQ(seen.size(), 2000u);
+  LatinHypercube other(3, n);
+  EXPECT_EQ(other.stratum(s, 123456789), lhs.stratum(s, 123456789));
+  const double u = lhs.uniform(s, 123456789);
+  EXPECT_EQ(static_cast<std::uint64_t>(u * double(n)), lhs.stratum(s, 123456789));
 }
 
 }  // namespace
