@@ -13,6 +13,7 @@
 #include "campaign/journal.hpp"
 #include "campaign/result_file.hpp"
 #include "campaign/sample.hpp"
+#include "campaign/sample_schedule.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
 
@@ -182,21 +183,17 @@ CampaignSummary master_loop(const CampaignStudy& st, const CampaignRunOptions& o
   const std::string journal_path = opt.out + ".journal";
   CampaignSummary sum;
   sum.total = st.range_size();
-  std::vector<char> done(static_cast<std::size_t>(st.samples), 0);
+  // Which samples are done, in flight or to run, in memory independent of the sample count.
+  SampleSchedule schedule(st.range_lo, st.range_hi);
   if (opt.resume) {
     for_each_record(journal_path, st, [&](const SampleOutcome& o) {
-      if (o.id >= st.range_lo && o.id < st.range_hi && !done[o.id]) {
-        done[o.id] = 1;
+      if (schedule.mark_done(o.id)) {
         ++sum.done;
         if (o.status != SampleStatus::ok) ++sum.failed;
       }
     });
   }
   JournalWriter journal(journal_path, st, opt.resume);
-  std::vector<long> pending;
-  for (long i = st.range_lo; i < st.range_hi; ++i)
-    if (!done[i]) pending.push_back(i);
-  std::size_t next = 0;
   Progress prog;
   prog.at_start = sum.done;
   SampleRunner runner(st);
@@ -207,8 +204,7 @@ CampaignSummary master_loop(const CampaignStudy& st, const CampaignRunOptions& o
       SampleOutcome o;
       if (!decode_record(bytes + off, layout, o))
         throw std::runtime_error("corrupt record from a worker");
-      if (o.id >= st.range_lo && o.id < st.range_hi && !done[o.id]) {
-        done[o.id] = 1;
+      if (schedule.complete(o.id)) {
         ++sum.done;
         if (o.status != SampleStatus::ok) {
           // The first failures are listed; a study failing by the thousand must not bury the
@@ -242,7 +238,7 @@ CampaignSummary master_loop(const CampaignStudy& st, const CampaignRunOptions& o
   while (true) {
     if (g_stop && !stopping) {
       stopping = true;
-      sum.interrupted = next < pending.size();
+      sum.interrupted = !schedule.exhausted();
       std::fprintf(stderr, "campaign: stop requested; finishing samples in flight\n");
     }
     // Serve every waiting message.
@@ -263,16 +259,17 @@ CampaignSummary master_loop(const CampaignStudy& st, const CampaignRunOptions& o
       }
       record(buf.data(), buf.size());
       std::vector<long> ids;
-      if (!stopping)
-        while (next < pending.size() && ids.size() < static_cast<std::size_t>(st.batch))
-          ids.push_back(pending[next++]);
+      long id = 0;
+      while (!stopping && ids.size() < static_cast<std::size_t>(st.batch) && schedule.take(id))
+        ids.push_back(id);
       const int tag = !ids.empty() ? kWork : (stopping ? kStopNow : kStopEnd);
       replies.send(id_bytes(ids), s.MPI_SOURCE, tag, comm);
     }
     report(false);
-    if (!stopping && next < pending.size()) {
+    long own = 0;
+    if (!stopping && schedule.take(own)) {
       // The master simulates too (both ranks busy on a two-core machine).
-      SampleOutcome o = runner.run(pending[next++]);
+      SampleOutcome o = runner.run(own);
       o.rank = 0;
       const auto rec = encode_record(o, layout);
       record(rec.data(), rec.size());

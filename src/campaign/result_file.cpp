@@ -30,6 +30,9 @@ class RowDataset {
     if (type == H5T_NATIVE_DOUBLE) {
       const double nan = std::nan("");
       H5Pset_fill_value(plist, H5T_NATIVE_DOUBLE, &nan);
+    } else if (type == H5T_NATIVE_INT) {  // a row never written reads not_run (-1)
+      const int not_run = static_cast<int>(SampleStatus::not_run);
+      H5Pset_fill_value(plist, H5T_NATIVE_INT, &not_run);
     }
     h5::ensure_group(file, path.substr(0, path.rfind('/')));
     id_ = H5Dcreate2(file, path.c_str(), type, space, H5P_DEFAULT, plist, H5P_DEFAULT);
@@ -39,6 +42,24 @@ class RowDataset {
     if (!units.empty()) h5::attribute(file, path, "units", units);
   }
   ~RowDataset() { H5Dclose(id_); }
+  /// The first row (of a 1-D int dataset) holding `value`, read in blocks; -1 when none.
+  long find_int(int value, hsize_t n) const {
+    const hsize_t block = 65536;
+    std::vector<int> buf(static_cast<std::size_t>(std::min(block, n)));
+    for (hsize_t start = 0; start < n; start += block) {
+      hsize_t count = std::min(block, n - start);
+      const hid_t fspace = H5Dget_space(id_);
+      H5Sselect_hyperslab(fspace, H5S_SELECT_SET, &start, nullptr, &count, nullptr);
+      const hid_t mspace = H5Screate_simple(1, &count, nullptr);
+      const herr_t s = H5Dread(id_, H5T_NATIVE_INT, mspace, fspace, H5P_DEFAULT, buf.data());
+      H5Sclose(mspace);
+      H5Sclose(fspace);
+      if (s < 0) throw InputError("HDF5: reading back the sample status failed");
+      for (hsize_t i = 0; i < count; ++i)
+        if (buf[i] == value) return static_cast<long>(start + i);
+    }
+    return -1;
+  }
   void write(hsize_t row, const void* data) {
     const hid_t fspace = H5Dget_space(id_);
     const int rank = a_ ? (b_ ? 3 : 2) : 1;
@@ -88,11 +109,12 @@ void write_result_file(const std::string& path, const CampaignStudy& st,
     RowDataset rank(fid, "/run/rank", n, 0, 0, H5T_NATIVE_INT);
     RowDataset wall(fid, "/run/wall_seconds", n, 0, 0, H5T_NATIVE_DOUBLE, "s");
 
-    std::vector<char> seen(n, 0);
+    // Rows are written as the journal streams them (a duplicate record, which a run does not
+    // write, would overwrite its row with the same numbers); a row never written keeps the
+    // status fill value not_run, found by a scan in blocks. Memory independent of the sample
+    // count.
     for_each_record(journal_path, st, [&](const SampleOutcome& o) {
-      if (o.id < lo || static_cast<hsize_t>(o.id - lo) >= n || seen[o.id - lo])
-        return;  // duplicates: first wins
-      seen[o.id - lo] = 1;
+      if (o.id < lo || static_cast<hsize_t>(o.id - lo) >= n) return;
       const hsize_t r = static_cast<hsize_t>(o.id - lo);
       const long idv = o.id;
       const int stv = static_cast<int>(o.status);
@@ -118,10 +140,10 @@ void write_result_file(const std::string& path, const CampaignStudy& st,
       rank.write(r, &o.rank);
       wall.write(r, &o.wall_seconds);
     });
-    for (hsize_t i = 0; i < n; ++i)
-      if (!seen[i])
-        throw InputError(journal_path + ": sample " + std::to_string(lo + long(i)) +
-                         " is missing; resume the campaign with --resume");
+    const long missing = status.find_int(static_cast<int>(SampleStatus::not_run), n);
+    if (missing >= 0)
+      throw InputError(journal_path + ": sample " + std::to_string(lo + missing) +
+                       " is missing; resume the campaign with --resume");
   }
   H5Tclose(str);
   h5::attribute(fid, "/", "study", st.resolved);
