@@ -84,7 +84,7 @@ std::string now_text() {
 }
 
 // ---------------------------------------------------------------- worker
-void worker(const CampaignStudy& st, MPI_Comm comm, int rank) {
+void worker(const CampaignStudy& st, const CampaignRunOptions& opt, MPI_Comm comm, int rank) {
   const RecordLayout layout(st);
   SampleRunner runner(st);
   std::deque<long> queue;
@@ -128,7 +128,7 @@ void worker(const CampaignStudy& st, MPI_Comm comm, int rank) {
     }
     const long id = queue.front();
     queue.pop_front();
-    SampleOutcome o = runner.run(id);
+    SampleOutcome o = opt.simulate ? opt.simulate(id) : runner.run(id);
     o.rank = rank;
     // Deliver the result with a request for more work (after a stop the master answers every
     // request with a stop).
@@ -178,7 +178,6 @@ CampaignSummary master(const CampaignStudy& st, const CampaignRunOptions& opt, M
 
 CampaignSummary master_loop(const CampaignStudy& st, const CampaignRunOptions& opt, MPI_Comm comm,
                             int size, int& active) {
-  (void)size;
   const RecordLayout layout(st);
   const std::string journal_path = opt.out + ".journal";
   CampaignSummary sum;
@@ -197,6 +196,10 @@ CampaignSummary master_loop(const CampaignStudy& st, const CampaignRunOptions& o
   Progress prog;
   prog.at_start = sum.done;
   SampleRunner runner(st);
+  using MasterWork = CampaignRunOptions::MasterWork;
+  const bool simulates =
+      opt.master_work == MasterWork::simulate ||
+      (opt.master_work == MasterWork::automatic && size <= kMasterSimulatesUpTo) || size == 1;
 
   auto record = [&](const char* bytes, std::size_t n) {
     journal.append(bytes, n);
@@ -267,9 +270,9 @@ CampaignSummary master_loop(const CampaignStudy& st, const CampaignRunOptions& o
     }
     report(false);
     long own = 0;
-    if (!stopping && schedule.take(own)) {
+    if (simulates && !stopping && schedule.take(own)) {
       // The master simulates too (both ranks busy on a two-core machine).
-      SampleOutcome o = runner.run(own);
+      SampleOutcome o = opt.simulate ? opt.simulate(own) : runner.run(own);
       o.rank = 0;
       const auto rec = encode_record(o, layout);
       record(rec.data(), rec.size());
@@ -283,6 +286,8 @@ CampaignSummary master_loop(const CampaignStudy& st, const CampaignRunOptions& o
   }
   replies.wait_all();
   journal.sync();
+  sum.loop_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - prog.start).count();
   if (stopping && sum.done < sum.total) sum.interrupted = true;
   report(true);
   return sum;
@@ -318,12 +323,14 @@ CampaignSummary run_campaign(const CampaignStudy& st, const CampaignRunOptions& 
       error = e.what();
     }
   } else {
-    worker(st, comm, rank);
+    worker(st, opt, comm, rank);
   }
   // Share the outcome (and any master error) with every rank.
   long buf[4] = {sum.total, sum.done, sum.failed, sum.interrupted ? 1L : 0L};
   MPI_Bcast(buf, 4, MPI_LONG, 0, comm);
+  const double loop_seconds = sum.loop_seconds;  // the master's own figure
   sum = {buf[0], buf[1], buf[2], buf[3] != 0};
+  sum.loop_seconds = loop_seconds;
   int err_len = static_cast<int>(error.size());
   MPI_Bcast(&err_len, 1, MPI_INT, 0, comm);
   if (err_len) throw InputError(rank == 0 ? error : std::string("(reported by rank 0)"));

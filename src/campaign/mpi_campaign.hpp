@@ -4,9 +4,11 @@
 // samples they are given. MPI lives only here: samples are pure functions of (study, id).
 #include <mpi.h>
 
+#include <functional>
 #include <string>
 
 #include "campaign/campaign_study.hpp"
+#include "campaign/sample.hpp"
 
 namespace pound {
 
@@ -15,12 +17,22 @@ struct CampaignRunOptions {
   bool resume = false;       ///< continue from the journal
   bool progress = true;      ///< progress lines on stderr (master)
   std::string command_line;  ///< how to resume, for the interruption message
+  /// Whether the master simulates samples between requests: by default only on up to
+  /// kMasterSimulatesUpTo ranks (a laptop's cores all busy); on more, it only schedules and
+  /// journals, so that its own samples never delay the replies to hundreds of workers.
+  enum class MasterWork { automatic, simulate, schedule_only } master_work = MasterWork::automatic;
+  /// Replaces SampleRunner::run on every rank (benchmarks of the master: an outcome at once).
+  std::function<SampleOutcome(long id)> simulate;
 };
+
+/// Ranks up to which the master also simulates by default.
+inline constexpr int kMasterSimulatesUpTo = 8;
 
 struct CampaignSummary {
   long total = 0, done = 0, failed = 0;
-  bool interrupted = false;  ///< stopped by SIGTERM/SIGUSR1/SIGINT before the end
-  double peak_rss_mb = 0.0;  ///< largest peak resident memory of any rank [MB]
+  bool interrupted = false;   ///< stopped by SIGTERM/SIGUSR1/SIGINT before the end
+  double peak_rss_mb = 0.0;   ///< largest peak resident memory of any rank [MB]
+  double loop_seconds = 0.0;  ///< master: time in the scheduling loop, without the file [s]
 };
 
 /// Collective over `comm`. Returns the same summary on every rank. Throws InputError on the
