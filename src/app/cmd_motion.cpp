@@ -381,6 +381,7 @@ int run_generate(int argc, const char* const* argv) {
       h5::write(f.id(), "/target/sigma_lnsa", sig, sig.size(), 0, "-");
     }
     h5::attribute(f.id(), "/", "variability", variability.describe());
+    h5::attribute(f.id(), "/", "design_pga_mps2", target->sa(0.0));
     h5::attribute(f.id(), "/", "target", target->describe());
     h5::attribute(f.id(), "/", "damping", target->damping());
     h5::attribute(f.id(), "/", "seed", double(seed));

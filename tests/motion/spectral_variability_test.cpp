@@ -174,6 +174,19 @@ TEST(TargetVariability, EpsilonHasTheModelsMomentsAndCorrelation) {
     b.push_back(x[1]);
   }
   EXPECT_NEAR(correlation(a, b), 0.0, 4.0 / std::sqrt(n - 3.0));
+  // The generator's 110 matching periods (0.040-4.99 s, a positive definite Baker-Jayaram
+  // matrix): every eps_j has unit variance, the ends included (2000 draws, 4 standard errors).
+  const std::vector<double> mp = simqke_match_periods(SimqkeSettings{});
+  ASSERT_EQ(mp.size(), 110u);
+  const TargetVariability wide(spectral(SpectralCorrelation::baker_jayaram_2008, 0.6), mp);
+  std::vector<double> first, last;
+  for (int i = 0; i < 2000; ++i) {
+    const std::vector<double> x = wide.epsilon(rng, std::uint64_t(i));
+    first.push_back(x.front());
+    last.push_back(x.back());
+  }
+  EXPECT_NEAR(stddev(first), 1.0, 4.0 / std::sqrt(2.0 * 2000));
+  EXPECT_NEAR(stddev(last), 1.0, 4.0 / std::sqrt(2.0 * 2000));
   // Without variability: no draws, zero factors.
   VariabilitySettings off;
   EXPECT_EQ(TargetVariability(off, p).epsilon(rng, 1), std::vector<double>(p.size(), 0.0));
