@@ -12,7 +12,11 @@ Figures (one PNG each, units on every axis):
   amplification_<building>.png    pounding / free peak displacement and drift against each
                                   sampled parameter, with a running median
   spectra.png                     (--motions, from 'pound motion generate') response spectra of
-                                  the generated motions, their mean and the target
+                                  the generated motions, their mean and the target; motions
+                                  with random targets (--variability spectral): median and
+                                  16/84 % bands of the targets' and the motions' spectra
+                                  against the design spectrum, and the motions scaled to the
+                                  design PGA (as PGA stripes scale them)
   history.png                     (--histories, from 'pound simulate --histories') top-floor
                                   displacement of each building and the pounding force
   hysteresis.png                  (--histories holding /pounding/storey_shear) shear of the
@@ -206,8 +210,61 @@ def plot_amplification(campaign_path, out):
         save(fig, out, f"amplification_{b}.png")
 
 
+def band(ax, tp, rows, color, label):
+    """Median and 16/84 % band (percentiles over the rows at each period) of spectra [g]."""
+    lo, med, hi = np.percentile(rows, [16, 50, 84], axis=0)
+    ax.fill_between(tp, lo, hi, color=color, alpha=0.25, lw=0)
+    ax.plot(tp, med, color=color, lw=2, label=f"{label}: median, 16-84 % band")
+
+
+def plot_spectra_spread(f, out):
+    """Motions with random targets: the spread of the targets' and the motions' spectra around
+    the design spectrum; right, the same spectra scaled to the design PGA as PGA stripes scale
+    them (the spread then shows at periods away from 0)."""
+    tp = f["target/period"][:]
+    design = f["target/psa"][:] / G
+    psa = f["motions/psa"][:] / G
+    targets = f["motions/target_psa"][:] / G
+    pga = f["motions/pga"][:] / G
+    sigma = f["target/sigma_lnsa"][:]
+    describe = text(f.attrs.get("target", "target"))
+    variability = text(f.attrs.get("variability", ""))
+    damping = float(f.attrs.get("damping", 0.05))
+    fig, axes = plt.subplots(1, 2, figsize=(13, 5.2), sharey=True)
+    ax = axes[0]
+    band(ax, tp, targets, "tab:orange", f"targets ({len(targets)})")
+    band(ax, tp, psa, "tab:blue", f"motions ({len(psa)})")
+    ax.plot(tp, design, color="k", lw=2, ls="--", label="design spectrum")
+    ax.plot(tp, design * np.exp(sigma), color="k", lw=0.8, ls=":",
+            label="design x exp(±sigma) (the model's 16/84 %)")
+    ax.plot(tp, design * np.exp(-sigma), color="k", lw=0.8, ls=":")
+    ax.set_title("Random targets and the spectra of the motions matched to them", fontsize=10)
+    ax = axes[1]
+    # Each motion scaled so that its PGA equals the design spectrum's Sa(0): the view of a
+    # campaign with PGA stripes.
+    ref = float(f.attrs["design_pga_mps2"]) / G
+    scaled = psa * (ref / pga)[:, None]
+    band(ax, tp, scaled, "tab:green", "motions scaled to one PGA")
+    ax.plot(tp, design, color="k", lw=2, ls="--", label="design spectrum")
+    ax.set_title(f"The same motions scaled to PGA = {ref:.3g} g (as a PGA stripe does)", fontsize=10)
+    for ax in axes:
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_xlabel("period T [s]")
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend(fontsize=8, loc="lower left")
+    axes[0].set_ylabel(f"pseudo-spectral acceleration PSA [g] ({100 * damping:g} % damping)")
+    fig.suptitle(textwrap.fill(describe, 140) + "\n" + textwrap.fill("variability: " + variability, 140),
+                 fontsize=8)
+    fig.tight_layout()
+    save(fig, out, "spectra.png")
+
+
 def plot_spectra(motions_path, out):
     with h5py.File(motions_path, "r") as f:
+        if "motions/epsilon" in f:
+            plot_spectra_spread(f, out)
+            return
         tp = f["target/period"][:]
         target = f["target/psa"][:] / G
         psa = f["motions/psa"][:] / G

@@ -28,6 +28,8 @@ std::vector<OptionSpec> generator_specs() {
       {"iterations", "-", "25", "spectrum-matching iterations at most"},
   };
   s.insert(s.end(), own.begin(), own.end());
+  const std::vector<OptionSpec> var = variability_option_specs('_');
+  s.insert(s.end(), var.begin(), var.end());
   return s;
 }
 
@@ -166,6 +168,7 @@ CampaignStudy campaign_from_options(const Options& opt, long samples_override, l
       throw gen.invalid("envelope", "valid: jennings or saragoni-hart");
     st.generator.max_iterations = static_cast<int>(gen.get_int("iterations"));
     if (st.generator.max_iterations < 0) throw gen.invalid("iterations", "valid: >= 0");
+    st.variability = variability_from_options(gen, '_');
   } else if (src == "records") {
     st.source = MotionSource::records;
     std::vector<std::string> files;

@@ -12,6 +12,7 @@
 #include "motion/design_spectrum.hpp"
 #include "motion/ground_motion.hpp"
 #include "motion/simqke.hpp"
+#include "motion/spectral_variability.hpp"
 #include "sears/sears_simulation.hpp"
 #include "simulation/contact_spec.hpp"
 #include "solver/integrator_settings.hpp"
@@ -49,7 +50,9 @@ struct CampaignStudy {
   std::shared_ptr<const DesignSpectrum> spectrum;  ///< target (generated motions)
   double motion_duration = 20.0;                   ///< generated motion duration [s]
   SimqkeSettings generator;                        ///< generator settings
-  std::vector<GroundMotion> records;               ///< record list (records source)
+  /// Random target spectra of the generated motions ([generator] variability, ...).
+  VariabilitySettings variability;
+  std::vector<GroundMotion> records;  ///< record list (records source)
 
   // Intensity.
   IntensityMeasure measure = IntensityMeasure::pga;

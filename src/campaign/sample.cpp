@@ -18,9 +18,12 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 SampleRunner::SampleRunner(const CampaignStudy& study)
     : st_(study), lhs_(study.seed, static_cast<std::uint64_t>(study.samples)) {
-  if (st_.source == MotionSource::generated)
+  if (st_.source == MotionSource::generated) {
     generator_ =
         std::make_unique<SimqkeGenerator>(*st_.spectrum, st_.motion_duration, st_.generator);
+    variability_ =
+        std::make_unique<TargetVariability>(st_.variability, generator_->match_periods());
+  }
 }
 
 SampleRunner::~SampleRunner() = default;
@@ -53,6 +56,9 @@ SampleDraw SampleRunner::draw(long id) {
     d.scale_draw = kNaN;
   }
   d.motion_seed = CounterRng(st_.seed, stream_id("motion")).bits(uid);
+  // The random target of the generated motion: its own stream, keyed by the sample id.
+  if (variability_ && variability_->enabled())
+    d.spectral_epsilon = variability_->epsilon(CounterRng(st_.seed, stream_id(kTargetStream)), uid);
   if (st_.source == MotionSource::records)
     d.record = static_cast<int>(CounterRng(st_.seed, stream_id("motion.record")).uniform(uid) *
                                 static_cast<double>(st_.records.size()));
@@ -82,10 +88,16 @@ SampleOutcome SampleRunner::run(const SampleDraw& d) {
     const SampleModel sm = model(d);
     const BuildingRow& row = sm.row;
 
-    // The motion, scaled to the stripe level or by the sampled factor.
-    GroundMotion g = st_.source == MotionSource::generated
-                         ? generator_->generate(d.motion_seed, 0).motion
-                         : st_.records[static_cast<std::size_t>(d.record)];
+    // The motion (matched to the design spectrum, or to the sample's random target), scaled
+    // to the stripe level or by the sampled factor after generation.
+    GroundMotion g;
+    if (st_.source == MotionSource::records)
+      g = st_.records[static_cast<std::size_t>(d.record)];
+    else if (d.spectral_epsilon.empty())
+      g = generator_->generate(d.motion_seed, 0).motion;
+    else
+      g = generator_->generate(d.motion_seed, 0, variability_->ln_factor(d.spectral_epsilon))
+              .motion;
     double im0;
     if (st_.measure == IntensityMeasure::pga) {
       im0 = g.pga();

@@ -27,6 +27,9 @@ struct SampleDraw {
   double level = 0.0;          ///< stripe level [m/s^2] (NaN with a sampled scale)
   double scale_draw = 0.0;     ///< sampled scale factor (NaN with stripes)
   std::uint64_t motion_seed = 0;
+  /// eps of the generated motion's random target at the generator's matching periods [-]
+  /// (empty without variability; spectral_variability.hpp).
+  std::vector<double> spectral_epsilon;
   int record = -1;  ///< record index (records source)
 };
 
@@ -74,6 +77,7 @@ class SampleRunner {
   const CampaignStudy& st_;
   LatinHypercube lhs_;
   std::unique_ptr<SimqkeGenerator> generator_;
+  std::unique_ptr<TargetVariability> variability_;  ///< (generated motions)
 };
 
 }  // namespace pound

@@ -132,6 +132,12 @@ struct SimqkeGenerator::Impl {
     GroundMotion out{"", settings.dt, std::vector<double>(real, real + n)};
     return baseline_correct(out);
   }
+
+  // The matching iteration (simqke.hpp) from first-guess amplitudes amp towards `target` at
+  // the matching periods [m/s^2], with at most max_attempts phase sets; the score of an
+  // iteration is max |q - 1|, or the RMS of ln q with rms_score.
+  GeneratedMotion generate(std::uint64_t seed, std::uint64_t index, const std::vector<double>& amp,
+                           const std::vector<double>& target, int max_attempts, bool rms_score);
 };
 
 SimqkeGenerator::SimqkeGenerator(const DesignSpectrum& target, double duration,
@@ -213,50 +219,79 @@ const std::vector<double>& SimqkeGenerator::match_target() const {
 }
 
 GeneratedMotion SimqkeGenerator::generate(std::uint64_t seed, std::uint64_t index) {
+  return impl_->generate(seed, index, impl_->amp0, impl_->target_psa, impl_->settings.max_attempts,
+                         false);
+}
+
+GeneratedMotion SimqkeGenerator::generate(std::uint64_t seed, std::uint64_t index,
+                                          const std::vector<double>& ln_factor) {
   Impl& d = *impl_;
-  std::vector<double> cosphi(d.nbins), sinphi(d.nbins), psa, ratio(d.target_psa.size());
+  if (ln_factor.size() != d.target_psa.size())
+    throw InputError("motion generator: " + std::to_string(ln_factor.size()) +
+                     " target factors for " + std::to_string(d.target_psa.size()) +
+                     " matching periods");
+  // The random target at the matching periods, and the first-guess amplitudes scaled by the
+  // same factor interpolated in ln T at each bin (as bin_ratio interpolates the correction).
+  std::vector<double> target(d.target_psa.size()), amp(d.nbins);
+  for (std::size_t j = 0; j < target.size(); ++j)
+    target[j] = d.target_psa[j] * std::exp(ln_factor[j]);
+  for (std::size_t k = 0; k < d.nbins; ++k)
+    amp[k] = d.amp0[k] * std::exp(d.bin_ratio(ln_factor, k));
+  return d.generate(seed, index, amp, target, d.settings.max_attempts_random_target, true);
+}
+
+GeneratedMotion SimqkeGenerator::Impl::generate(std::uint64_t seed, std::uint64_t index,
+                                                const std::vector<double>& amp,
+                                                const std::vector<double>& target, int max_attempts,
+                                                bool rms_score) {
+  Impl& d = *this;
+  std::vector<double> cosphi(d.nbins), sinphi(d.nbins), psa, ratio(target.size());
   GeneratedMotion best;
   double best_score = 1e300;
-  for (int attempt = 0; attempt < d.settings.max_attempts; ++attempt) {
+  for (int attempt = 0; attempt < max_attempts; ++attempt) {
     for (std::size_t k = 0; k < d.nbins; ++k) {
       const double u = philox_uniform(seed, index, std::uint32_t(k), std::uint32_t(attempt));
       cosphi[k] = std::cos(2.0 * M_PI * u);
       sinphi[k] = std::sin(2.0 * M_PI * u);
     }
-    GroundMotion m = d.synthesise(d.amp0, cosphi, sinphi);
+    GroundMotion m = d.synthesise(amp, cosphi, sinphi);
     double attempt_best = 1e300;
     int attempt_best_it = 0;
     for (int it = 0;; ++it) {
       if (it > 0) m = d.correct(m, ratio);
       d.spectra->compute_psa(m.accel, psa);
-      // Score: the largest |q - 1| over the matching periods, q = computed / target.
-      double score = 0.0;
+      // Score: the largest |q - 1| over the matching periods, q = computed / target; for a
+      // random target the RMS of ln q instead (simqke.hpp).
+      double max_dev = 0.0, sum_sq = 0.0;
       for (std::size_t j = 0; j < psa.size(); ++j) {
         if (!(psa[j] > 0.0) || !std::isfinite(psa[j]))
           throw NumericalError("motion generator: non-positive response spectrum at T = " +
                                std::to_string(d.spectra->periods()[j]) + " s");
-        ratio[j] = d.target_psa[j] / psa[j];
-        const double q = psa[j] / d.target_psa[j];
-        score = std::max(score, std::fabs(q - 1.0));
+        ratio[j] = target[j] / psa[j];
+        const double q = psa[j] / target[j];
+        max_dev = std::max(max_dev, std::fabs(q - 1.0));
+        if (rms_score) sum_sq += std::log(q) * std::log(q);
       }
+      const double score = rms_score ? std::sqrt(sum_sq / double(psa.size())) : max_dev;
       if (score < best_score) {
         best_score = score;
         best.motion = m;
         best.iterations = it;
         best.attempt = attempt;
-        best.match = compare_spectra(psa, d.target_psa);
+        best.match = compare_spectra(psa, target);
       }
       if (score < attempt_best) {
         attempt_best = score;
         attempt_best_it = it;
       }
-      if (score <= d.settings.tolerance || it >= d.settings.max_iterations) break;
+      if (max_dev <= d.settings.tolerance || it >= d.settings.max_iterations) break;
       if (best_score <= d.settings.accept_score && it - attempt_best_it >= d.settings.stall)
         break;  // acceptable and no longer improving
       if (it - attempt_best_it >= 2 * d.settings.stall) break;  // stuck: next phase set
     }
     if (best_score <= d.settings.accept_score) break;
   }
+  best.target_psa = target;
   best.motion.name = "simqke seed " + std::to_string(seed) + " index " + std::to_string(index);
   const GroundKinematics kin = integrate(best.motion);
   best.final_velocity = kin.final_velocity();

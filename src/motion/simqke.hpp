@@ -27,6 +27,12 @@
 // phases are drawn again from the next Philox stream (deterministically) and the best
 // motion over the attempts is returned.
 //
+// Record-to-record variability (issue 12): generate(seed, index, ln_factor) matches the motion
+// to a random target design(T) exp(sigma(T) eps(T)) drawn by TargetVariability
+// (spectral_variability.hpp) instead of the design spectrum itself; the phases and the
+// correction are the same, the score of an iteration is the RMS of ln(computed / target) and
+// one phase set is used (see generate).
+//
 // Deterministic: the same (target, duration, settings, seed, index) give the same motion on
 // any machine to round-off (own uniform -> phase transform, FFTW_ESTIMATE plans whose choice
 // does not depend on timing; no std:: distributions).
@@ -63,6 +69,11 @@ struct SimqkeSettings {
   /// motion over all attempts is returned. Score: max_j |q_j - 1|.
   double accept_score = 0.095;
   int max_attempts = 4;
+  /// Phase sets at most for a random target (generate with ln factors) [-]. One: a random
+  /// target is rough at every period scale and partly out of reach of any motion of this
+  /// kind (docs/motions.md, "Record-to-record variability"), so its score stays above
+  /// accept_score whatever the phases, and new phase sets would only multiply the cost.
+  int max_attempts_random_target = 1;
   /// An attempt ends early when its score has not improved for `stall` iterations and
   /// the best motion is acceptable, or for 2 stall iterations otherwise [-].
   int stall = 8;
@@ -79,7 +90,10 @@ SpectrumMatch compare_spectra(const std::vector<double>& computed,
                               const std::vector<double>& target);
 
 struct GeneratedMotion {
-  GroundMotion motion;              ///< baseline-corrected acceleration [m/s^2]
+  GroundMotion motion;  ///< baseline-corrected acceleration [m/s^2]
+  /// The spectrum the motion was matched to, at the matching periods [m/s^2]: the design
+  /// spectrum, or its random target (generate with ln factors).
+  std::vector<double> target_psa;
   int iterations = 0;               ///< correction iterations of the returned motion
   int attempt = 0;                  ///< phase set of the returned motion (0 = first)
   SpectrumMatch match;              ///< at the matching periods
@@ -97,8 +111,19 @@ class SimqkeGenerator {
   SimqkeGenerator(const SimqkeGenerator&) = delete;
   SimqkeGenerator& operator=(const SimqkeGenerator&) = delete;
 
-  /// Motion number `index` of the sequence keyed by `seed`.
+  /// Motion number `index` of the sequence keyed by `seed`, matched to the design spectrum.
   GeneratedMotion generate(std::uint64_t seed, std::uint64_t index = 0);
+  /// The same phases, matched to the random target design(T_j) exp(ln_factor_j) at the
+  /// matching periods T_j (one factor per period, spectral_variability.hpp): the first-guess
+  /// amplitudes are multiplied by exp(ln_factor) interpolated linearly in ln T at each FFT bin
+  /// (end values held), as the correction ratio is. The iteration is the same except that the
+  /// kept iteration is the one with the smallest RMS of ln(computed / target) over the
+  /// matching periods (instead of the smallest max |computed / target - 1|; acceptance and
+  /// stall use that score too) and at most max_attempts_random_target phase sets are tried:
+  /// a random target has ordinates that no motion of this kind reaches (docs/motions.md), which
+  /// would dominate the maximum and make every phase set fail the acceptance.
+  GeneratedMotion generate(std::uint64_t seed, std::uint64_t index,
+                           const std::vector<double>& ln_factor);
 
   const std::vector<double>& match_periods() const;
   /// Target pseudo-acceleration at the matching periods [m/s^2].

@@ -147,6 +147,18 @@ TEST(CampaignRun, SameNumbersOnOneAndTwoRanks) {
   EXPECT_FALSE(fs::exists(one + ".journal"));
 }
 
+TEST(CampaignRun, SameNumbersOnOneAndTwoRanksWithSpectralVariability) {
+  // Random target spectra (issue 12): every eps comes from the sample's own stream, so the
+  // runs agree bit for bit; and the motions are not those without variability.
+  const std::string var = " --generator.variability spectral";
+  const std::string one = dir() + "/var1.h5", two = dir() + "/var2.h5", none = dir() + "/var0.h5";
+  ASSERT_EQ(sh("mpirun -np 1 " + pound("--samples 12 --out " + one + var)), 0);
+  ASSERT_EQ(sh("mpirun -np 2 --oversubscribe " + pound("--samples 12 --out " + two + var)), 0);
+  expect_same_numbers(one, two);
+  ASSERT_EQ(sh("mpirun -np 1 " + pound("--samples 12 --out " + none)), 0);
+  EXPECT_NE(read_raw(one, "/samples/scale"), read_raw(none, "/samples/scale"));
+}
+
 // Starts `pound campaign` with these arguments in the background.
 pid_t start_campaign(const std::string& args) {
   const pid_t pid = ::fork();
@@ -264,6 +276,24 @@ TEST(CampaignRun, BadStrengthOrHardeningIsOneLineExitTwoAndNoFile) {
     EXPECT_EQ(code, 2) << arg;
     EXPECT_EQ(std::count(msg.begin(), msg.end(), '\n'), 1) << msg;
     for (const auto& p : parts) EXPECT_NE(msg.find(p), std::string::npos) << p << " in: " << msg;
+    EXPECT_FALSE(fs::exists(out)) << arg;
+    EXPECT_FALSE(fs::exists(out + ".journal")) << arg;
+  }
+}
+
+TEST(CampaignRun, BadVariabilityInputIsOneLineExitTwoAndNoFile) {
+  const std::string out = dir() + "/bad-variability.h5";
+  const std::pair<std::string, std::string> cases[] = {
+      {"--generator.sigma_lnsa -0.2", "--generator.sigma_lnsa"},
+      {"--generator.sigma_table " + dir() + "/no-such-table.txt", "cannot open the sigma table"},
+      {"--generator.correlation baker-jayaram", "valid: baker-jayaram-2008, none, full"},
+  };
+  for (const auto& [arg, needle] : cases) {
+    const auto [code, msg] =
+        run_with_log("--out " + out + " --generator.variability spectral " + arg);
+    EXPECT_EQ(code, 2) << arg;
+    EXPECT_EQ(std::count(msg.begin(), msg.end(), '\n'), 1) << msg;
+    EXPECT_NE(msg.find(needle), std::string::npos) << needle << " in: " << msg;
     EXPECT_FALSE(fs::exists(out)) << arg;
     EXPECT_FALSE(fs::exists(out + ".journal")) << arg;
   }

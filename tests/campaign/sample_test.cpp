@@ -182,13 +182,14 @@ TEST(Sample, GrazingRecontactsOfTheDefaultStudyAreNotChatter) {
   // at once, over and over. It is now located after the dip (src/solver/row_solver.cpp).
   // The samples are given by the values they drew then (the Latin hypercube was a stored
   // Fisher-Yates permutation until issue 13), in the study as it was: elastic storeys, no free
-  // vibration after the record, eight stripes. Their peak forces are those the engine of then
+  // vibration after the record, eight stripes, motions matched to the design spectrum (before
+  // issue 12). Their peak forces are those the engine of then
   // computed for them, to the last bit (checked when the sampling changed).
   Options opt("campaign", "", campaign_option_specs());
   const std::string file = POUND_SOURCE_DIR "/studies/fragility-default.ini";
   opt.parse({"--config", file, "--intensity.levels", "0.05,0.1,0.15,0.2,0.3,0.4,0.5,0.6",
              "--building1.hysteresis", "elastic", "--building2.hysteresis", "elastic",
-             "--simulation.extra_time", "0"});
+             "--simulation.extra_time", "0", "--generator.variability", "none"});
   const CampaignStudy st = campaign_from_options(opt, 640, -1);
   SampleRunner r(st);
   struct Old {
@@ -242,6 +243,123 @@ TEST(Sample, GrazingRecontactsOfTheDefaultStudyAreNotChatter) {
     EXPECT_EQ(o.status, SampleStatus::ok) << s.id << ": " << o.message;
     for (double f : o.peak_force) EXPECT_TRUE(std::isfinite(f)) << s.id;
     EXPECT_GT(o.peak_force[2], 2e6) << s.id;  // they pound (the grazing re-contacts)
+  }
+}
+
+// The two buildings of study() under generated motions: the default study's target (EC8 type
+// 1, ground C, ag = 0.3 g), 6 s, at PGA stripes of 0.1 and 0.3 g.
+CampaignStudy generated_study(std::vector<const char*> extra) {
+  std::vector<const char*> argv = {"campaign",
+                                   "--building1.name",
+                                   "left",
+                                   "--building1.masses",
+                                   "1000,1000",
+                                   "--building1.stiffnesses",
+                                   "2e6,2e6",
+                                   "--building2.name",
+                                   "right",
+                                   "--building2.masses",
+                                   "1500",
+                                   "--building2.stiffnesses",
+                                   "1e6",
+                                   "--contact.model",
+                                   "hc-linear",
+                                   "--contact.k",
+                                   "1e8",
+                                   "--sample.e",
+                                   "uniform(0.4, 0.8)",
+                                   "--sample.gap",
+                                   "uniform(0, 0.01)",
+                                   "--motion.source",
+                                   "generated",
+                                   "--generator.spectrum",
+                                   "ec8",
+                                   "--generator.ag",
+                                   "0.3",
+                                   "--generator.ground-type",
+                                   "C",
+                                   "--generator.duration",
+                                   "6",
+                                   "--intensity.levels",
+                                   "0.1, 0.3"};
+  argv.insert(argv.end(), extra.begin(), extra.end());
+  Options opt("campaign", "", campaign_option_specs());
+  opt.parse(static_cast<int>(argv.size()), argv.data());
+  return campaign_from_options(opt, 12, 5);
+}
+
+TEST(Sample, GeneratedMotionsWithoutVariabilityAreThoseOfBeforeIssue12) {
+  // Outcomes computed with the code of commit e53f1b8 (before issue 12): variability none
+  // (the default) gives them bit for bit.
+  const CampaignStudy st = generated_study({});
+  EXPECT_EQ(st.variability.mode, Variability::none);
+  SampleRunner r(st);
+  struct Ref {
+    long id;
+    double scale, disp_free0, drift_pounding0, accel_free2;
+  };
+  const Ref refs[] = {
+      {0, 0.20826975106003084, 0.0016872192522463323, 0.00056240641741544411, 1.8230749057778091},
+      {1, 0.74513642805697966, 0.0059431930843153024, 0.0019810643614384341, 6.4142053002127311},
+      {5, 0.92774485990347888, 0.0071852946467675823, 0.0023950982155891941, 7.014594893641787},
+  };
+  for (const Ref& ref : refs) {
+    EXPECT_TRUE(r.draw(ref.id).spectral_epsilon.empty());
+    const SampleOutcome o = r.run(ref.id);
+    ASSERT_EQ(o.status, SampleStatus::ok) << o.message;
+    EXPECT_EQ(o.scale, ref.scale) << ref.id;
+    EXPECT_EQ(o.disp_free[0], ref.disp_free0) << ref.id;
+    EXPECT_EQ(o.drift_pounding[0], ref.drift_pounding0) << ref.id;
+    EXPECT_EQ(o.accel_free[2], ref.accel_free2) << ref.id;
+  }
+}
+
+TEST(Sample, SpectralVariabilityDrawsEachTargetFromTheSamplesStream) {
+  const CampaignStudy st =
+      generated_study({"--generator.variability", "spectral", "--generator.sigma_lnsa", "0.6"});
+  ASSERT_EQ(st.variability.mode, Variability::spectral);
+  SampleRunner a(st), b(st);
+  const SimqkeGenerator gen(*st.spectrum, st.motion_duration, st.generator);
+  const TargetVariability v(st.variability, gen.match_periods());
+  for (long id : {3L, 0L}) {
+    // eps from (study seed, stream "motion.spectrum", sample id) alone.
+    const SampleDraw d = a.draw(id);
+    ASSERT_EQ(d.spectral_epsilon.size(), gen.match_periods().size());
+    EXPECT_EQ(d.spectral_epsilon,
+              v.epsilon(CounterRng(st.seed, stream_id("motion.spectrum")), std::uint64_t(id)));
+    const SampleOutcome x = a.run(id), y = b.run(id);
+    ASSERT_EQ(x.status, SampleStatus::ok) << x.message;
+    EXPECT_EQ(std::memcmp(x.disp_pounding.data(), y.disp_pounding.data(),
+                          x.disp_pounding.size() * sizeof(double)),
+              0);  // bit for bit, the NaN of building 2's missing floor included
+    // Scaled to the stripe after generation, as without variability.
+    const double level = (id % 2 == 0 ? 0.1 : 0.3) * kGravity;
+    EXPECT_NEAR(x.im, level, 1e-12 * level);
+  }
+  // A different motion from the design-matched one of the same sample.
+  const CampaignStudy design = generated_study({});
+  SampleRunner c(design);
+  EXPECT_NE(a.run(1).scale, c.run(1).scale);
+}
+
+TEST(Sample, BadVariabilityInputNamesTheKey) {
+  const std::pair<std::vector<const char*>, std::string> cases[] = {
+      {{"--generator.sigma_lnsa", "-0.1"}, "generator.sigma_lnsa"},
+      {{"--generator.sigma_table", "/nonexistent/sigma.txt"}, "cannot open the sigma table"},
+      {{"--generator.correlation", "jayaram"}, "valid: baker-jayaram-2008, none, full"},
+      {{}, "valid: none or spectral"},
+      {{"--generator.sigma_lnsa", "0.5", "--generator.sigma_model", "boore-atkinson-2008"},
+       "not several"},
+  };
+  for (const auto& [args, needle] : cases) {
+    std::vector<const char*> a = {"--generator.variability", args.empty() ? "yes" : "spectral"};
+    a.insert(a.end(), args.begin(), args.end());
+    try {
+      generated_study(a);
+      ADD_FAILURE() << needle;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
+    }
   }
 }
 

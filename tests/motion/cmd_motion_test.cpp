@@ -4,14 +4,18 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "../support/scratch_dir.hpp"
 #include "motion/motion_reader.hpp"
+#include "motion/spectrum_ec8.hpp"
 
 namespace pound {
 namespace {
@@ -107,6 +111,47 @@ TEST(MotionCommand, GenerateWritesReadableFiles) {
   EXPECT_GT(m.pga(), 0.2 * kGravity);
 }
 
+TEST(MotionCommand, GenerateWithVariabilityWritesEachMotionsTarget) {
+  const fs::path dir = temp_dir() / "gen-var";
+  fs::remove_all(dir);
+  const CmdResult r = run(
+      "generate --spectrum ec8 --ground-type C --ag 0.3 --count 2 --duration 8 --seed 3 "
+      "--variability spectral --sigma-lnsa 0.6 --correlation baker-jayaram-2008 --json --out '" +
+      dir.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"variability\":\"spectral: sigma constant sigma_lnsa = 0.6; correlation "
+                       "baker-jayaram-2008\""),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("\"geometric_mean\":{"), std::string::npos);
+  EXPECT_TRUE(fs::exists(dir / "motions.h5"));
+  EXPECT_TRUE(fs::exists(dir / "target-001.txt"));
+  EXPECT_FALSE(fs::exists(dir / "target-002.txt"));
+  // target-000.txt: period [s], Sa [g] at the 100 report periods 0.05-4 s, around the design
+  // spectrum by sigma 0.6: ln(Sa / Sa_EC8) varies between periods.
+  std::ifstream in(dir / "target-000.txt");
+  std::vector<double> t, sa;
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream ls(line);
+    double a = 0, b = 0;
+    ASSERT_TRUE(ls >> a >> b) << line;
+    t.push_back(a);
+    sa.push_back(b);
+  }
+  ASSERT_EQ(t.size(), 100u);
+  EXPECT_NEAR(t.front(), 0.05, 1e-6);
+  EXPECT_NEAR(t.back(), 4.0, 1e-6);
+  const Ec8Spectrum design(Ec8Type::type1, Ec8Ground::C, 0.3 * kGravity);
+  double lo = 1e9, hi = -1e9;
+  for (std::size_t j = 0; j < t.size(); ++j) {
+    const double e = std::log(sa[j] * kGravity / design.sa(t[j]));
+    lo = std::min(lo, e);
+    hi = std::max(hi, e);
+  }
+  EXPECT_GT(hi - lo, 0.1);
+}
+
 void expect_input_error(const std::string& args, const std::string& needle) {
   const CmdResult r = run(args);
   EXPECT_EQ(r.code, 2) << args;
@@ -128,6 +173,23 @@ TEST(MotionCommand, BadInputGivesExitCode2AndOneLine) {
   expect_input_error("target --spectrum ec9", "valid: ec8, nzs1170, asce7, japan, table");
   expect_input_error("target --spectrum nzs1170 --site-class C --Z 0.4 --R 1 --damping 0.1",
                      "valid: 0.05");
+}
+
+TEST(MotionCommand, BadVariabilityInputIsOneLineExitTwoAndNoFile) {
+  const fs::path dir = temp_dir() / "bad-var";
+  fs::remove_all(dir);
+  const std::string gen =
+      "generate --spectrum ec8 --ground-type C --ag 0.3 --count 1 "
+      "--duration 4 --variability spectral --out '" +
+      dir.string() + "' ";
+  expect_input_error(gen + "--sigma-lnsa -0.1", "--sigma-lnsa");
+  expect_input_error(gen + "--sigma-table '" + (temp_dir() / "none.txt").string() + "'",
+                     "cannot open the sigma table");
+  const std::string bad = write("bad-sigma.txt", "0.1 0.6\n0.5 x\n");
+  expect_input_error(gen + "--sigma-table '" + bad + "'", "bad-sigma.txt:2");
+  expect_input_error(gen + "--correlation bj2008", "valid: baker-jayaram-2008, none, full");
+  expect_input_error(gen + "--sigma-model ask14", "valid: boore-atkinson-2008");
+  EXPECT_FALSE(fs::exists(dir));
 }
 
 }  // namespace
