@@ -20,7 +20,7 @@ import sys
 
 import numpy as np
 
-MAGIC = b"POUNDJ01"
+MAGIC = b"POUNDJ02"  # src/campaign/journal.hpp: the layout this script reads
 HEADER_BYTES = 8 + 4 * 8
 FNV_OFFSET = np.uint64(14695981039346656037)
 FNV_PRIME = np.uint64(1099511628211)
@@ -44,7 +44,7 @@ def read_header(path):
     with open(path, "rb") as f:
         h = f.read(HEADER_BYTES)
     if len(h) != HEADER_BYTES or h[:8] != MAGIC:
-        fail(path + ": not a pound campaign journal of layout POUNDJ01 "
+        fail(path + ": not a pound campaign journal of layout " + MAGIC.decode() + " "
              "(the engine's journal format changed: update pound_parts.py)")
     _hash, values, msg_bytes, samples = struct.unpack("<4Q", h[8:])
     return h, values, msg_bytes, samples

@@ -144,6 +144,39 @@ TEST(Journal, AJournalOfTheOldFormatSaysSo) {
   std::remove(path.c_str());
 }
 
+// slurm/pound_parts.py reads journals on its own (the Slurm scripts' checks): it must read the
+// engine's layout (with Debian's python3-numpy, which scripts/install-deps.sh installs), count the
+// valid records and report the torn tail, so that a change of the format fails here and not only in
+// the Slurm test.
+TEST(Journal, TheSlurmCheckerReadsTheEnginesLayout) {
+  const CampaignStudy st = tiny_study();
+  const RecordLayout layout(st);
+  const std::string path = test::process_scratch_dir() / "journal-py";
+  {
+    JournalWriter w(path, st, false);
+    for (long id : {4L, 0L, 2L}) {
+      const auto rec = encode_record(outcome(st, id), layout);
+      w.append(rec.data(), rec.size());
+    }
+  }
+  {
+    const auto rec = encode_record(outcome(st, 1), layout);
+    std::ofstream(path, std::ios::app | std::ios::binary).write(rec.data(), 17);
+  }
+  const std::string cmd =
+      "/usr/bin/python3 " POUND_SOURCE_DIR "/slurm/pound_parts.py journal " + path + " 2>&1";
+  std::string out;
+  if (std::FILE* p = popen(cmd.c_str(), "r")) {
+    char buf[512];
+    while (std::fgets(buf, sizeof buf, p)) out += buf;
+    EXPECT_EQ(pclose(p), 0) << out;
+  }
+  EXPECT_NE(out.find("3 of 5 samples in 3 valid records, 0 duplicate(s), torn tail of 17 bytes"),
+            std::string::npos)
+      << out;
+  std::remove(path.c_str());
+}
+
 TEST(Journal, ADifferentStudyIsNotResumed) {
   const CampaignStudy st = tiny_study(5), other = tiny_study(6);
   const std::string path = test::process_scratch_dir() / "journal2";

@@ -290,7 +290,11 @@ CampaignStudy generated_study(std::vector<const char*> extra) {
 
 TEST(Sample, GeneratedMotionsWithoutVariabilityAreThoseOfBeforeIssue12) {
   // Outcomes computed with the code of commit e53f1b8 (before issue 12): variability none
-  // (the default) gives them bit for bit.
+  // (the default) gives them bit for bit on one machine (checked by building e53f1b8 beside
+  // this revision). Across CPUs FFTW's SIMD codelets differ in the last bits of the motion
+  // (here the 6 s motions showed it at 1e-13), and the adaptive steps that follow them move the
+  // peaks by up to 1.5e-10, so they are compared to 1e-8 relative; a change of the motion's
+  // algorithm moves them by per cents.
   const CampaignStudy st = generated_study({});
   EXPECT_EQ(st.variability.mode, Variability::none);
   SampleRunner r(st);
@@ -307,10 +311,10 @@ TEST(Sample, GeneratedMotionsWithoutVariabilityAreThoseOfBeforeIssue12) {
     EXPECT_TRUE(r.draw(ref.id).spectral_epsilon.empty());
     const SampleOutcome o = r.run(ref.id);
     ASSERT_EQ(o.status, SampleStatus::ok) << o.message;
-    EXPECT_EQ(o.scale, ref.scale) << ref.id;
-    EXPECT_EQ(o.disp_free[0], ref.disp_free0) << ref.id;
-    EXPECT_EQ(o.drift_pounding[0], ref.drift_pounding0) << ref.id;
-    EXPECT_EQ(o.accel_free[2], ref.accel_free2) << ref.id;
+    EXPECT_NEAR(o.scale, ref.scale, 1e-8 * ref.scale) << ref.id;
+    EXPECT_NEAR(o.disp_free[0], ref.disp_free0, 1e-8 * ref.disp_free0) << ref.id;
+    EXPECT_NEAR(o.drift_pounding[0], ref.drift_pounding0, 1e-8 * ref.drift_pounding0) << ref.id;
+    EXPECT_NEAR(o.accel_free[2], ref.accel_free2, 1e-8 * ref.accel_free2) << ref.id;
   }
 }
 

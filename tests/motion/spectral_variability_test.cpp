@@ -192,37 +192,46 @@ TEST(TargetVariability, EpsilonHasTheModelsMomentsAndCorrelation) {
   EXPECT_EQ(TargetVariability(off, p).epsilon(rng, 1), std::vector<double>(p.size(), 0.0));
 }
 
-// FNV-1a of the bits of a motion's samples.
-std::uint64_t hash_of(const std::vector<double>& v) {
-  std::uint64_t h = 14695981039346656037ull;
-  const auto* p = reinterpret_cast<const unsigned char*>(v.data());
-  for (std::size_t i = 0; i < v.size() * sizeof(double); ++i) h = (h ^ p[i]) * 1099511628211ull;
-  return h;
+// Sum of squares of a motion's samples [m^2/s^4].
+double sum_of_squares(const std::vector<double>& v) {
+  double s = 0.0;
+  for (double x : v) s += x * x;
+  return s;
 }
 
-TEST(SimqkeVariability, NoneGivesTheMotionsOfBeforeIssue12BitForBit) {
-  // Generated with the code of commit e53f1b8 (before issue 12), same build settings: the
-  // default study's target (EC8 type 1, ground C, ag = 0.3 g), 10 s at 0.01 s.
+TEST(SimqkeVariability, NoneGivesTheMotionsOfBeforeIssue12) {
+  // Generated with the code of commit e53f1b8 (before issue 12): the default study's target
+  // (EC8 type 1, ground C, ag = 0.3 g), 10 s at 0.01 s. On one machine the motions are
+  // bit-identical (checked by building e53f1b8 beside this revision); across CPUs FFTW's
+  // SIMD codelets differ in the last bits, so values are compared to 1e-10 relative, far
+  // below any change of the algorithm (a different phase, iteration count or correction
+  // moves them at the 1e-2 level) and the iteration counts and attempts exactly.
   const Ec8Spectrum target(Ec8Type::type1, Ec8Ground::C, 0.3 * kGravity);
   SimqkeGenerator gen(target, 10.0);
   struct Ref {
-    std::uint64_t seed, index, hash;
-    double a100, pga;
+    std::uint64_t seed, index;
+    double a100, a500, a900, pga, sumsq;
     int iterations, attempt;
   };
   const Ref refs[] = {
-      {2026, 0, 0xb66ce502cf42c933ull, 1.0501408863280923, 3.8635680652103321, 14, 1},
-      {2026, 1, 0x5dbc9ffac981457bull, -0.35312642811228279, 4.0914702818157309, 18, 2},
-      {7, 3, 0x996fa199d7bdd136ull, -0.59346138685857608, 3.8551799660921859, 8, 0},
+      {2026, 0, 1.0501408863280923, 0.63698952453257285, 0.69131014667215163, 3.8635680652103321,
+       1075.7487039492817, 14, 1},
+      {2026, 1, -0.35312642811228279, 0.4019225216453462, -0.65050171627425091, 4.0914702818157309,
+       1115.3896844466819, 18, 2},
+      {7, 3, -0.59346138685857608, 0.31823088998869714, 0.089899203089988208, 3.8551799660921859,
+       904.24217800640304, 8, 0},
   };
   for (const Ref& r : refs) {
     const GeneratedMotion g = gen.generate(r.seed, r.index);
     ASSERT_EQ(g.motion.accel.size(), 1001u);
-    EXPECT_EQ(g.motion.accel[100], r.a100) << r.seed << "/" << r.index;
-    EXPECT_EQ(g.motion.pga(), r.pga);
+    const double tol = 1e-10 * r.pga;
+    EXPECT_NEAR(g.motion.accel[100], r.a100, tol) << r.seed << "/" << r.index;
+    EXPECT_NEAR(g.motion.accel[500], r.a500, tol) << r.seed << "/" << r.index;
+    EXPECT_NEAR(g.motion.accel[900], r.a900, tol) << r.seed << "/" << r.index;
+    EXPECT_NEAR(g.motion.pga(), r.pga, tol);
+    EXPECT_NEAR(sum_of_squares(g.motion.accel), r.sumsq, 1e-10 * r.sumsq);
     EXPECT_EQ(g.iterations, r.iterations);
     EXPECT_EQ(g.attempt, r.attempt);
-    EXPECT_EQ(hash_of(g.motion.accel), r.hash) << r.seed << "/" << r.index;
     EXPECT_EQ(g.target_psa, gen.match_target());
   }
 }

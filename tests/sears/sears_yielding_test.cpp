@@ -38,11 +38,15 @@ TEST(SearsYielding, EnergyBalanceClosesWithPoundingForEveryLaw) {
       EXPECT_GT(e.input, 1e4);
       EXPECT_LT(std::fabs(e.residual()), 1e-5 * e.input)
           << info.name << ": input " << e.input << " J, residual " << e.residual() << " J";
-      if (!info.law->linear()) EXPECT_GT(e.hysteretic, 0.1 * e.input) << info.name;
+      if (!info.law->linear()) {
+        EXPECT_GT(e.hysteretic, 0.1 * e.input) << info.name;
+      }
     }
     EXPECT_GT(r.base.pounding.energy.contact, 0.0) << info.name;
     EXPECT_EQ(r.base.free.energy.contact, 0.0) << info.name;
-    if (!info.law->linear()) EXPECT_GT(r.counts_pounding.storey_iterations, 0) << info.name;
+    if (!info.law->linear()) {
+      EXPECT_GT(r.counts_pounding.storey_iterations, 0) << info.name;
+    }
   }
 }
 

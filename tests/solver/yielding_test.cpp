@@ -194,8 +194,12 @@ TEST(Yielding, EnergyBalanceClosesWithPoundingForEveryLaw) {
         EXPECT_LT(std::fabs(e.residual()), 1e-5 * e.input)
             << info.name << " " << model << ": input " << e.input << " J, residual " << e.residual()
             << " J";
-        if (!info.law->linear()) EXPECT_GT(e.hysteretic, 0.1 * e.input) << info.name;
-        if (info.law->linear()) EXPECT_EQ(e.hysteretic, 0.0);
+        if (!info.law->linear()) {
+          EXPECT_GT(e.hysteretic, 0.1 * e.input) << info.name;
+        }
+        if (info.law->linear()) {
+          EXPECT_EQ(e.hysteretic, 0.0);
+        }
       }
       int impacts = 0;
       for (const auto& site : s.sites) impacts += site.impacts;
