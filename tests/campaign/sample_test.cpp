@@ -291,10 +291,10 @@ CampaignStudy generated_study(std::vector<const char*> extra) {
 TEST(Sample, GeneratedMotionsWithoutVariabilityAreThoseOfBeforeIssue12) {
   // Outcomes computed with the code of commit e53f1b8 (before issue 12): variability none
   // (the default) gives them bit for bit on one machine (checked by building e53f1b8 beside
-  // this revision). Across CPUs FFTW's SIMD codelets differ in the last bits of the motion
-  // (here the 6 s motions showed it at 1e-13), and the adaptive steps that follow them move the
-  // peaks by up to 1.5e-10, so they are compared to 1e-8 relative; a change of the motion's
-  // algorithm moves them by per cents.
+  // this revision). Across CPUs the run-time SIMD dispatch of FFTW and glibc's libm changes the
+  // last bits of the motion (here the 6 s motions showed it at 1e-13), and the adaptive steps that
+  // follow them move the peaks by up to 1.5e-10, so they are compared to 1e-8 relative; a change of
+  // the motion's algorithm moves them by per cents.
   const CampaignStudy st = generated_study({});
   EXPECT_EQ(st.variability.mode, Variability::none);
   SampleRunner r(st);

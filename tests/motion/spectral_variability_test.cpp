@@ -202,10 +202,10 @@ double sum_of_squares(const std::vector<double>& v) {
 TEST(SimqkeVariability, NoneGivesTheMotionsOfBeforeIssue12) {
   // Generated with the code of commit e53f1b8 (before issue 12): the default study's target
   // (EC8 type 1, ground C, ag = 0.3 g), 10 s at 0.01 s. On one machine the motions are
-  // bit-identical (checked by building e53f1b8 beside this revision); across CPUs FFTW's
-  // SIMD codelets differ in the last bits, so values are compared to 1e-10 relative, far
-  // below any change of the algorithm (a different phase, iteration count or correction
-  // moves them at the 1e-2 level) and the iteration counts and attempts exactly.
+  // bit-identical (checked by building e53f1b8 beside this revision); across CPUs the run-time
+  // SIMD dispatch of FFTW and glibc's libm changes the last bits, so values are compared to 1e-10
+  // relative, far below any change of the algorithm (a different phase, iteration count or
+  // correction moves them at the 1e-2 level) and the iteration counts and attempts exactly.
   const Ec8Spectrum target(Ec8Type::type1, Ec8Ground::C, 0.3 * kGravity);
   SimqkeGenerator gen(target, 10.0);
   struct Ref {
