@@ -2,11 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <sstream>
 
 #include "core/error.hpp"
-#include "io/options.hpp"
+#include "io/period_table.hpp"
 
 namespace pound {
 
@@ -71,28 +70,13 @@ double SigmaLnSa::operator()(double period) const {
 }
 
 SigmaLnSa read_sigma_table(const std::string& path) {
-  std::ifstream in(path);
-  if (!in)
-    throw InputError(path + ": cannot open the sigma table; give an existing, readable file");
   std::vector<double> t, s;
-  std::string line;
-  int n = 0;
-  while (std::getline(in, line)) {
-    ++n;
-    const auto b = line.find_first_not_of(" \t\r");
-    if (b == std::string::npos || line[b] == '#') continue;
-    const std::string where = path + ":" + std::to_string(n);
-    std::istringstream ls(line);
-    std::string a, c, extra;
-    if (!(ls >> a >> c) || (ls >> extra))
-      throw InputError(where + ": expected two numbers 'T sigma' (T in s, sigma of ln Sa, -)");
-    t.push_back(parse_number(a, where));
-    s.push_back(parse_number(c, where));
-    if (!(t.back() > 0.0) || (t.size() > 1 && !(t.back() > t[t.size() - 2])))
-      throw InputError(where + ": period " + a + " s; valid: > 0 and larger than the previous");
-    if (!(s.back() >= 0.0)) throw InputError(where + ": sigma " + c + "; valid: >= 0");
+  for (const PeriodTableRow& r :
+       read_period_table(path, "the sigma table", "'T sigma' (T in s, sigma of ln Sa, -)")) {
+    if (!(r.value >= 0.0)) throw InputError(r.where + ": sigma " + r.text + "; valid: >= 0");
+    t.push_back(r.period);
+    s.push_back(r.value);
   }
-  if (in.bad()) throw InputError(path + ": read error; give a readable file");
   if (t.empty()) throw InputError(path + ": no (T, sigma) line; give at least one");
   return SigmaLnSa::table(std::move(t), std::move(s), path);
 }

@@ -2,11 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <sstream>
 
 #include "core/error.hpp"
-#include "io/options.hpp"
+#include "io/period_table.hpp"
 #include "motion/ground_motion.hpp"
 
 namespace pound {
@@ -45,25 +44,12 @@ std::string TableSpectrum::describe() const {
 }
 
 TableSpectrum read_spectrum_table(const std::string& path, double damping) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open the spectrum table; give an existing file");
   std::vector<double> t, sa;
-  std::string line;
-  int n = 0;
-  while (std::getline(in, line)) {
-    ++n;
-    const auto b = line.find_first_not_of(" \t\r");
-    if (b == std::string::npos || line[b] == '#') continue;
-    const std::string where = path + ":" + std::to_string(n);
-    std::istringstream ls(line);
-    std::string a, c, extra;
-    if (!(ls >> a >> c) || (ls >> extra))
-      throw InputError(where + ": expected two numbers 'T Sa' (T in s, Sa in g)");
-    t.push_back(parse_number(a, where));
-    sa.push_back(parse_number(c, where) * kGravity);
-    if (!(t.back() > 0.0) || (t.size() > 1 && !(t.back() > t[t.size() - 2])))
-      throw InputError(where + ": period " + a + " s; valid: > 0 and larger than the previous");
-    if (!(sa.back() > 0.0)) throw InputError(where + ": Sa " + c + " g; valid: > 0");
+  for (const PeriodTableRow& r :
+       read_period_table(path, "the spectrum table", "'T Sa' (T in s, Sa in g)")) {
+    if (!(r.value > 0.0)) throw InputError(r.where + ": Sa " + r.text + " g; valid: > 0");
+    t.push_back(r.period);
+    sa.push_back(r.value * kGravity);
   }
   if (t.size() < 2) throw InputError(path + ": fewer than 2 (T, Sa) pairs; give at least 2");
   return TableSpectrum(std::move(t), std::move(sa), damping, path);
