@@ -18,6 +18,12 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kDesignReturnPeriod = 475.0;  // years: 10 % in 50 years (EN 1998-1 2.1)
 
+// The share of nu from intensities outside [lo, hi] (NaN without a finite fit).
+double outside_share(const HazardCurve& h, const LognormalFit& f, double nu, double lo, double hi) {
+  if (!f.finite() || !(nu > 0)) return kNaN;
+  return std::max(0.0, 1.0 - mean_annual_frequency(h, f.theta, f.beta, lo, hi) / nu);
+}
+
 // The pounding analysis of one pair: the free-run approach of each used sample (the largest
 // over the pair's levels) and everything fitted from it.
 class PairAnalysis {
@@ -26,6 +32,8 @@ class PairAnalysis {
                const ExceedanceDesign& d, const HazardCurve& h, const RiskSettings& s,
                std::size_t pair)
       : d_(d), h_(h), s_(s) {
+    im_lo_ = *std::min_element(d.im.begin(), d.im.end());
+    im_hi_ = *std::max_element(d.im.begin(), d.im.end());
     const FloorArray& a = c.approach_free;
     for (std::size_t s2 : used) {
       double m = kNaN;
@@ -60,6 +68,8 @@ class PairAnalysis {
     e.fit = fit_lognormal(obs);
     e.maf = e.fit.finite() ? mean_annual_frequency(h_, e.fit.theta, e.fit.beta) : kNaN;
     e.probability = probability_in_years(e.maf, s_.years);
+    if (rows.empty())  // (not needed by the bootstrap)
+      e.outside_share = outside_share(h_, e.fit, e.maf, im_lo_, im_hi_);
     return e;
   }
 
@@ -113,8 +123,9 @@ class PairAnalysis {
   const ExceedanceDesign& d_;
   const HazardCurve& h_;
   const RiskSettings& s_;
-  std::vector<double> approach_;  // per used analysis [m]
-  std::vector<double> sorted_;    // distinct finite approaches, increasing [m]
+  double im_lo_ = 0.0, im_hi_ = 0.0;  // the campaign's intensities [m/s^2]
+  std::vector<double> approach_;      // per used analysis [m]
+  std::vector<double> sorted_;        // distinct finite approaches, increasing [m]
 };
 
 // Medians of the free-run peak floor displacement [building][floor] per intensity group, and
@@ -273,6 +284,8 @@ RiskReport analyse_risk(const CampaignData& c, const HazardCurve& h, const RiskS
                      std::to_string(medians.im.empty() ? 0.0 : medians.im.back() / kGravity) +
                      " g; valid: an intensity inside them");
 
+  const double im_lo = *std::min_element(d.im.begin(), d.im.end());
+  const double im_hi = *std::max_element(d.im.begin(), d.im.end());
   const BootstrapResampler resampler(d, s.bootstrap);
   const std::size_t npairs = c.approach_free.buildings;
   for (std::size_t p = 0; p < npairs; ++p) {
@@ -371,6 +384,8 @@ RiskReport analyse_risk(const CampaignData& c, const HazardCurve& h, const RiskS
         dr.pounding.finite() ? mean_annual_frequency(h, dr.pounding.theta, dr.pounding.beta) : kNaN;
     dr.maf_free = dr.free.finite() ? mean_annual_frequency(h, dr.free.theta, dr.free.beta) : kNaN;
     dr.ratio = dr.maf_pounding / dr.maf_free;
+    dr.outside_pounding = outside_share(h, dr.pounding, dr.maf_pounding, im_lo, im_hi);
+    dr.outside_free = outside_share(h, dr.free, dr.maf_free, im_lo, im_hi);
     r.damage.push_back(dr);
   }
 
@@ -410,7 +425,29 @@ RiskReport analyse_risk(const CampaignData& c, const HazardCurve& h, const RiskS
                         std::to_string(pr.bootstrap_replicates) +
                         " bootstrap replicates in which the gap could be estimated");
     if (!pr.rules_computed) r.notes.push_back(pair + "code rules not computed: " + pr.rules_note);
+    if (std::isfinite(pr.gap_for_target)) {
+      const double share =
+          PairAnalysis(c, used, d, h, s, pr.pair).estimate(pr.gap_for_target).outside_share;
+      if (share > 0.1)
+        r.notes.push_back(pair + std::to_string(int(std::lround(100 * share))) +
+                          " % of nu at the gap for the target comes from intensities outside the "
+                          "campaign's, where the fitted fragility is extrapolated");
+    }
   }
+  std::string outside;
+  for (const auto& dr : r.damage)
+    for (double share : {dr.outside_pounding, dr.outside_free})
+      if (share > 0.25) {
+        outside += (outside.empty() ? "" : ", ") + std::string(to_string(dr.edp)) + " " +
+                   std::to_string(dr.limit) + " (building " + std::to_string(dr.building + 1) + ")";
+        break;
+      }
+  if (!outside.empty())
+    r.notes.push_back(
+        "damage limits whose nu takes more than 25 % from intensities outside the "
+        "campaign's (an extrapolated fit; a large beta puts weight on the frequent "
+        "weak motions): " +
+        outside);
   return r;
 }
 

@@ -48,12 +48,15 @@ void check_hazard_measure(const CampaignData& c, const HazardCurve& h);
 
 /// Pounding of one pair at one gap.
 struct GapEstimate {
-  double gap = 0.0;                   ///< [m]
-  long analyses = 0;                  ///< samples with a free-run approach
-  long pounding = 0;                  ///< of them, samples whose approach exceeds the gap
-  LognormalFit fit;                   ///< P(pounding | IM) (Baker 2015)
-  double maf = 0.0;                   ///< nu [1/yr]; NaN without a finite fit
-  double probability = 0.0;           ///< in T years; NaN without a finite fit
+  double gap = 0.0;          ///< [m]
+  long analyses = 0;         ///< samples with a free-run approach
+  long pounding = 0;         ///< of them, samples whose approach exceeds the gap
+  LognormalFit fit;          ///< P(pounding | IM) (Baker 2015)
+  double maf = 0.0;          ///< nu [1/yr]; NaN without a finite fit
+  double probability = 0.0;  ///< in T years; NaN without a finite fit
+  /// Share of nu from intensities outside the campaign's (below its lowest stripe or above its
+  /// highest): there the fitted fragility is extrapolated [-].
+  double outside_share = 0.0;
   Interval probability_band;          ///< bootstrap percentile band
   std::vector<Observation> observed;  ///< per stripe (or IM bin) [m/s^2], n, pounding
 };
@@ -97,6 +100,8 @@ struct DamageRisk {
   LognormalFit pounding, free;                ///< free: no_data for the force
   double maf_pounding = 0.0, maf_free = 0.0;  ///< [1/yr]; NaN without a finite fit
   double ratio = 0.0;                         ///< maf_pounding / maf_free; NaN when either is
+  /// Share of each nu from intensities outside the campaign's (GapEstimate::outside_share).
+  double outside_pounding = 0.0, outside_free = 0.0;
 };
 
 struct RiskReport {

@@ -44,13 +44,15 @@ std::string fit_fields(const LognormalFit& f) {
 std::string gaps_csv(const RiskReport& r) {
   std::string s =
       "pair,gap_m,analyses,pounding,status,theta_mps2,beta,maf_per_year,probability,"
-      "probability_ci90_lo,probability_ci90_hi\n";
+      "probability_ci90_lo,probability_ci90_hi,theta_bound_lo_mps2,theta_bound_hi_mps2,"
+      "maf_share_outside_campaign\n";
   for (const auto& p : r.pairs)
     for (const auto& e : p.grid)
       s += std::to_string(p.pair + 1) + "," + num(e.gap) + "," + std::to_string(e.analyses) + "," +
            std::to_string(e.pounding) + "," + fit_fields(e.fit) + "," + num(e.maf) + "," +
            num(e.probability) + "," + num(e.probability_band.lo) + "," +
-           num(e.probability_band.hi) + "\n";
+           num(e.probability_band.hi) + "," + num(e.fit.bracketed() ? e.fit.theta_lo : NAN) + "," +
+           num(e.fit.bracketed() ? e.fit.theta_hi : NAN) + "," + num(e.outside_share) + "\n";
   return s;
 }
 
@@ -70,12 +72,13 @@ std::string rules_csv(const RiskReport& r) {
 std::string damage_csv(const CampaignData& c, const RiskReport& r) {
   std::string s =
       "building,building_name,edp,unit,limit,status_pounding,theta_pounding_mps2,beta_pounding,"
-      "status_free,theta_free_mps2,beta_free,maf_pounding_per_year,maf_free_per_year,ratio\n";
+      "status_free,theta_free_mps2,beta_free,maf_pounding_per_year,maf_free_per_year,ratio,"
+      "maf_share_outside_campaign_pounding,maf_share_outside_campaign_free\n";
   for (const auto& d : r.damage)
     s += std::to_string(d.building) + "," + name_of(c, d.building) + "," + to_string(d.edp) + "," +
          unit_of(d.edp) + "," + num(d.limit) + "," + fit_fields(d.pounding) + "," +
          fit_fields(d.free) + "," + num(d.maf_pounding) + "," + num(d.maf_free) + "," +
-         num(d.ratio) + "\n";
+         num(d.ratio) + "," + num(d.outside_pounding) + "," + num(d.outside_free) + "\n";
   return s;
 }
 

@@ -1,5 +1,6 @@
 #include "risk/risk_integral.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "fragility/lognormal_fit.hpp"
@@ -16,13 +17,17 @@ double normal_mass(double z1, double z2) {
 
 }  // namespace
 
-double mean_annual_frequency(const HazardCurve& h, double theta, double beta) {
+double mean_annual_frequency(const HazardCurve& h, double theta, double beta, double x_lo,
+                             double x_hi) {
   const double mu = std::log(theta);
+  const double u_lo = x_lo > 0.0 ? std::log(x_lo) : -std::numeric_limits<double>::infinity();
+  const double u_hi = std::log(x_hi);
   double nu = 0.0;
   for (const auto& s : h.segments()) {
     // Closed form of the segment (header): the lognormal density shifted by b beta^2.
     const double shift = mu + s.b * beta * beta;
-    const double mass = normal_mass((s.lo - shift) / beta, (s.hi - shift) / beta);
+    const double lo = std::max(s.lo, u_lo), hi = std::min(s.hi, u_hi);
+    const double mass = normal_mass((lo - shift) / beta, (hi - shift) / beta);
     if (mass > 0.0) nu += std::exp(s.a + s.b * mu + 0.5 * s.b * s.b * beta * beta) * mass;
   }
   return nu;

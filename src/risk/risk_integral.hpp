@@ -16,12 +16,17 @@
 // which for one power law lambda = k0 x^-k over (0, inf) is Cornell et al.'s
 // nu = k0 theta^-k exp(k^2 beta^2 / 2) (their eq. 11 with the median demand at the capacity).
 // The probability of at least one event in T years (Poisson) is 1 - exp(-nu T).
+#include <limits>
+
 #include "risk/hazard_curve.hpp"
 
 namespace pound {
 
-/// nu [1/yr] of a lognormal fragility (theta [m/s^2], beta > 0) on the hazard curve.
-double mean_annual_frequency(const HazardCurve& h, double theta, double beta);
+/// nu [1/yr] of a lognormal fragility (theta [m/s^2], beta > 0) on the hazard curve; with
+/// x_lo, x_hi [m/s^2] only the part of the integral from intensities between them (to tell how
+/// much of nu comes from intensities a campaign did not simulate).
+double mean_annual_frequency(const HazardCurve& h, double theta, double beta, double x_lo = 0.0,
+                             double x_hi = std::numeric_limits<double>::infinity());
 
 /// 1 - exp(-nu T): the probability of at least one occurrence in `years` (Poisson arrivals).
 double probability_in_years(double maf, double years);
