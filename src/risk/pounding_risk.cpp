@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 #include "campaign/amplification.hpp"
@@ -438,8 +439,10 @@ RiskReport analyse_risk(const CampaignData& c, const HazardCurve& h, const RiskS
   for (const auto& dr : r.damage)
     for (double share : {dr.outside_pounding, dr.outside_free})
       if (share > 0.25) {
-        outside += (outside.empty() ? "" : ", ") + std::string(to_string(dr.edp)) + " " +
-                   std::to_string(dr.limit) + " (building " + std::to_string(dr.building + 1) + ")";
+        char limit[32];
+        std::snprintf(limit, sizeof limit, "%g", dr.limit);
+        outside += (outside.empty() ? "" : ", ") + std::string(to_string(dr.edp)) + " " + limit +
+                   " " + unit_of(dr.edp) + " (building " + std::to_string(dr.building + 1) + ")";
         break;
       }
   if (!outside.empty())
