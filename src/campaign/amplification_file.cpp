@@ -137,8 +137,11 @@ AmplificationTable compute_amplification(hid_t file, const std::string& path) {
     for (auto* v : {&out.mean, &out.median, &out.p16, &out.p84, &out.fraction_above_1})
       v->assign(G * B * F, 0.0);
     for (std::size_t b = 0; b < B; ++b) {
-      // This building's ratios, per group and floor.
+      // This building's ratios, per group and floor (each sized for its group at once).
       std::vector<std::vector<double>> values(G * F);
+      for (std::size_t k = 0; k < G; ++k)
+        for (std::size_t fl = 0; fl < F; ++fl)
+          values[k * F + fl].reserve(std::size_t(g.samples[k] - g.failed[k]));
       for (hsize_t row = 0; row < n; row += kBlockRows) {
         const hsize_t count = std::min<hsize_t>(kBlockRows, n - row);
         pd.rows(row, count, b, 1, bp);
@@ -183,6 +186,8 @@ AmplificationTable compute_amplification(hid_t file, const std::string& path) {
   t.contact_count.assign(S, 0);
   std::vector<long> pounded(S, 0);
   std::vector<std::vector<double>> force(S), force_pounded(S);
+  for (std::size_t at = 0; at < S; ++at)
+    force[at].reserve(std::size_t(g.samples[at / (P * L)] - g.failed[at / (P * L)]));
   for (hsize_t row = 0; row < n; row += kBlockRows) {
     const hsize_t count = std::min<hsize_t>(kBlockRows, n - row);
     id_imp.rows(row, count, 0, P, bp);
