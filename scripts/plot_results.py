@@ -4,7 +4,8 @@
 Run with Debian's python (python3-matplotlib, python3-h5py):
 
   /usr/bin/python3 scripts/plot_results.py --campaign RUN.h5 --fragility RUN-fragility \
-      --out RUN-fragility/plots [--motions motions.h5] [--histories histories.h5]
+      --out RUN-fragility/plots [--motions motions.h5] [--histories histories.h5] \
+      [--risk RUN-risk]
 
 Figures (one PNG each, units on every axis):
   fragility_<building>_<edp>.png  fitted curves with (solid) and without (dashed) pounding,
@@ -22,8 +23,20 @@ Figures (one PNG each, units on every axis):
   hysteresis.png                  (--histories holding /pounding/storey_shear) shear of the
                                   first storey of each building against its drift, with and
                                   without pounding (skipped when the file has no storey shears)
+  amplification_im_<building>.png (campaign files with /amplification) median and 16-84 %
+                                  band of the amplification of peak displacement, drift and
+                                  acceleration against the intensity, one line per floor
+  risk_fragility_pair<p>.png      (--risk, from 'pound risk --out DIR') P(pounding | IM) against
+                                  the gap at several intensities: fitted curves and observed
+                                  fractions
+  risk_probability_pair<p>.png    (--risk) probability of pounding in T years against the gap,
+                                  90 % bootstrap band, the target, the gap for it and the code
+                                  rules' gaps
+  hazard.png                      (--risk) the hazard curve used: its points and the
+                                  log-log interpolation, extended beyond the ends (dashed)
 Inputs: the campaign file (schema src/campaign/result_file.hpp), fragility.h5 of
-'pound fragility' (src/fragility/report_files.hpp); both are opened read-only.
+'pound fragility' (src/fragility/report_files.hpp), risk.h5 of 'pound risk'
+(src/risk/risk_files.hpp); all are opened read-only.
 """
 import argparse
 import os
@@ -210,6 +223,138 @@ def plot_amplification(campaign_path, out):
         save(fig, out, f"amplification_{b}.png")
 
 
+def plot_amplification_im(campaign_path, out):
+    """Median and 16-84 % band of the amplification against the intensity (/amplification)."""
+    with h5py.File(campaign_path, "r") as f:
+        if "amplification" not in f:
+            return
+        a = f["amplification"]
+        measure = text(f.attrs.get("intensity_measure", "pga"))
+        names = [n.strip() for n in text(f.attrs.get("building_names", "")).split(",")]
+        im = a["im"][:] / G
+        design = text(a.attrs.get("design", "stripes"))
+        stats = {m: {k: a[m][k][:] for k in ("median", "p16", "p84", "count")}
+                 for m in ("disp", "drift", "accel")}
+    labels = {"disp": "peak displacement", "drift": "peak storey drift",
+              "accel": "peak absolute acceleration"}
+    nb, nf = stats["disp"]["median"].shape[1:]
+    for b in range(nb):
+        fig, axes = plt.subplots(1, 3, figsize=(13, 4.2))
+        for ax, m in zip(axes, ("disp", "drift", "accel")):
+            colors = plt.cm.viridis(np.linspace(0, 0.9, nf))
+            for fl in range(nf):
+                n = stats[m]["count"][:, b, fl]
+                if not np.any(n > 0):
+                    continue  # a floor the building does not have
+                med, lo, hi = (stats[m][k][:, b, fl] for k in ("median", "p16", "p84"))
+                ax.fill_between(im, lo, hi, color=colors[fl], alpha=0.15, lw=0)
+                ax.plot(im, med, "o-", color=colors[fl], ms=3, lw=1.4,
+                        label=("storey " if m == "drift" else "floor ") + str(fl + 1))
+            ax.axhline(1.0, color="k", lw=0.8, ls=":")
+            ax.set_xlabel(f"{im_name(measure)} [g]" + ("" if design == "stripes" else " (bin)"))
+            ax.set_ylabel(f"{labels[m]}: pounding / free [-]")
+            ax.grid(True, alpha=0.3)
+        axes[0].legend(fontsize=8, loc="best")
+        bname = names[b] if b < len(names) else f"building {b + 1}"
+        fig.suptitle(f"Amplification by pounding of {bname}: median and 16-84 % band per "
+                     f"{'stripe' if design == 'stripes' else 'intensity bin'}", fontsize=11)
+        fig.tight_layout()
+        save(fig, out, f"amplification_im_{b}.png")
+
+
+def lognormal_cdf(x, theta, beta):
+    from math import erf, log, sqrt
+    return np.array([0.5 * (1 + erf(log(v / theta) / (beta * sqrt(2)))) for v in x])
+
+
+def plot_risk(risk_path, out):
+    """P(pounding) against the gap, probability in T years against the gap, the hazard used."""
+    with h5py.File(risk_path, "r") as f:
+        r = f["risk"]
+        years = float(r.attrs["years"])
+        target = float(r.attrs["target_probability"])
+        measure = text(r.attrs.get("intensity_measure", "pga"))
+        design_im = float(r.attrs["design_im_mps2"]) / G
+        hz = {k: r["hazard"][k][:] for k in ("im", "rate", "curve_im", "curve_rate")}
+        pairs = sorted(k for k in r if k.startswith("pair"))
+        data = {}
+        for k in pairs:
+            g = r[k]
+            data[k] = {n: g[n][:] for n in ("gap", "theta", "beta", "probability",
+                                            "probability_lo", "probability_hi", "observed_im",
+                                            "observed_n", "observed_z", "rule_gap",
+                                            "rule_probability")}
+            data[k]["rules"] = text(g.attrs.get("rules", "")).split(",")
+            data[k]["target_gap"] = float(g.attrs["gap_for_target_m"])
+            data[k]["band"] = (float(g.attrs["gap_band_lo_m"]), float(g.attrs["gap_band_hi_m"]))
+    name = im_name(measure)
+    # Hazard curve.
+    fig, ax = plt.subplots(figsize=(6, 4.4))
+    inside = (hz["curve_im"] >= hz["im"][0]) & (hz["curve_im"] <= hz["im"][-1])
+    ax.loglog(hz["curve_im"][inside] / G, hz["curve_rate"][inside], "-", color="tab:blue",
+              label="log-log interpolation")
+    for part in (hz["curve_im"] < hz["im"][0], hz["curve_im"] > hz["im"][-1]):
+        ax.loglog(hz["curve_im"][part] / G, hz["curve_rate"][part], "--", color="tab:blue")
+    ax.loglog(hz["im"] / G, hz["rate"], "o", color="k", ms=4, label="points of the curve")
+    ax.plot([], [], "--", color="tab:blue", label="end segments extended")
+    ax.axvline(design_im, color="tab:red", lw=0.9, ls=":", label=f"design {name} {design_im:.3g} g")
+    ax.set_xlabel(f"{name} [g]")
+    ax.set_ylabel("annual rate of exceedance [1/yr]")
+    ax.set_ylim(max(1e-7, np.min(hz["rate"]) / 10), None)
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8)
+    ax.set_title("Hazard curve used by pound risk", fontsize=11)
+    save(fig, out, "hazard.png")
+    for k in pairs:
+        d = data[k]
+        p = k.replace("pair", "")
+        # P(pounding | IM) against the gap at the observed intensities (fit: lines, data: dots).
+        fig, ax = plt.subplots(figsize=(6.4, 4.4))
+        ims = d["observed_im"]
+        pick = np.unique(np.linspace(0, len(ims) - 1, min(6, len(ims))).round().astype(int))
+        colors = plt.cm.plasma(np.linspace(0, 0.85, len(pick)))
+        for c, j in zip(colors, pick):
+            x = ims[j]
+            fit = np.array([lognormal_cdf([x], t, b)[0] if np.isfinite(t) else np.nan
+                            for t, b in zip(d["theta"], d["beta"])])
+            ax.plot(d["gap"] * 1000, fit, "-", color=c, lw=1.5, label=f"{name} {x / G:.3g} g")
+            n = d["observed_n"][:, j]
+            with np.errstate(invalid="ignore", divide="ignore"):
+                ax.plot(d["gap"] * 1000, d["observed_z"][:, j] / n, "o", color=c, ms=3)
+        ax.set_xlabel("gap [mm]")
+        ax.set_ylabel(f"P(pounding | {name}) [-]")
+        ax.set_ylim(-0.02, 1.02)
+        ax.grid(True, alpha=0.3)
+        ax.legend(fontsize=8, title="lines: lognormal fit per gap; dots: observed", title_fontsize=8)
+        ax.set_title(f"Pair {p}: probability of pounding given the intensity", fontsize=11)
+        save(fig, out, f"risk_fragility_pair{p}.png")
+        # Probability in T years against the gap.
+        fig, ax = plt.subplots(figsize=(6.4, 4.4))
+        ok = np.isfinite(d["probability"])
+        ax.fill_between(d["gap"][ok] * 1000, d["probability_lo"][ok], d["probability_hi"][ok],
+                        color="tab:blue", alpha=0.2, lw=0, label="90 % bootstrap band")
+        ax.semilogy(d["gap"][ok] * 1000, d["probability"][ok], "o-", color="tab:blue", ms=3,
+                    label=f"P(pounding in {years:g} years)")
+        ax.axhline(target, color="k", lw=0.9, ls="--", label=f"target {target:g}")
+        if np.isfinite(d["target_gap"]):
+            ax.axvline(d["target_gap"] * 1000, color="k", lw=1.2,
+                       label=f"gap for the target {d['target_gap'] * 1000:.0f} mm")
+            lo, hi = d["band"]
+            if np.isfinite(lo) and np.isfinite(hi):
+                ax.axvspan(lo * 1000, hi * 1000, color="k", alpha=0.08, lw=0)
+        for rule, gap, prob, c in zip(d["rules"], d["rule_gap"], d["rule_probability"],
+                                      ("tab:red", "tab:green", "tab:purple")):
+            ax.axvline(gap * 1000, color=c, lw=1.0, ls=":",
+                       label=f"{rule} at {design_im:.3g} g: {gap * 1000:.0f} mm"
+                             + (f", P = {prob:.3g}" if np.isfinite(prob) else ""))
+        ax.set_xlabel("gap [mm]")
+        ax.set_ylabel(f"probability of pounding in {years:g} years [-]")
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend(fontsize=7.5, loc="best")
+        ax.set_title(f"Pair {p}: pounding in {years:g} years against the gap", fontsize=11)
+        save(fig, out, f"risk_probability_pair{p}.png")
+
+
 def band(ax, tp, rows, color, label):
     """Median and 16/84 % band (percentiles over the rows at each period) of spectra [g]."""
     lo, med, hi = np.percentile(rows, [16, 50, 84], axis=0)
@@ -376,15 +521,20 @@ def main():
     p.add_argument("--out", required=True, help="folder for the PNGs")
     p.add_argument("--motions", help="motions.h5 of 'pound motion generate'")
     p.add_argument("--histories", help="HDF5 of 'pound simulate --histories'")
+    p.add_argument("--risk", help="output folder of 'pound risk' (risk.h5)")
     a = p.parse_args()
     os.makedirs(a.out, exist_ok=True)
     for path in [a.campaign, a.motions, a.histories] + (
-            [os.path.join(a.fragility, "fragility.h5")] if a.fragility else []):
+            [os.path.join(a.fragility, "fragility.h5")] if a.fragility else []) + (
+            [os.path.join(a.risk, "risk.h5")] if a.risk else []):
         if path and not os.path.isfile(path):
             sys.exit(f"plot_results.py: error: {path}: no such file")
     if a.fragility:
         plot_fragility(os.path.join(a.fragility, "fragility.h5"), a.out)
     plot_amplification(a.campaign, a.out)
+    plot_amplification_im(a.campaign, a.out)
+    if a.risk:
+        plot_risk(os.path.join(a.risk, "risk.h5"), a.out)
     if a.motions:
         plot_spectra(a.motions, a.out)
     if a.histories:

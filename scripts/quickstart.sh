@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Installs the Debian packages, builds pound (Release) and runs the default study end to end:
 # a Monte Carlo campaign on two MPI ranks (studies/fragility-default.ini), the fragility
-# analysis, and the figures.
+# analysis, the amplification summary, the figures, and last the pounding risk on the example
+# hazard curve of studies/hazard-los-angeles-pga.csv: the gap a 2 % probability of pounding in
+# 50 years needs, and the code rules' gaps with their probabilities.
 #   bash scripts/quickstart.sh               # the full default study (960 samples)
 #   bash scripts/quickstart.sh --samples 24  # a smoke run
 set -euo pipefail
@@ -31,8 +33,20 @@ build/bin/pound motion generate --spectrum ec8 --ec8-type 1 --ground-type C --ag
   --count 100 --duration 10 --dt 0.01 --seed 2026 --variability spectral \
   --sigma-model boore-atkinson-2008 --correlation baker-jayaram-2008 --out "$out/motions" >/dev/null
 build/bin/pound simulate --config studies/ch8-yielding.ini --histories "$out/ch8-histories.h5" >/dev/null
+echo "== build/bin/pound summary --input $out/campaign.h5"
+build/bin/pound summary --input "$out/campaign.h5" > "$out/summary.txt"
+head -n 12 "$out/summary.txt"
+echo "   (the whole table: $out/summary.txt)"
+# The risk run writes its files first and its table last, so that the answer ends the output.
+build/bin/pound risk --input "$out/campaign.h5" --hazard studies/hazard-los-angeles-pga.csv \
+  --out "$out/risk" > "$out/risk.txt"
 /usr/bin/python3 scripts/plot_results.py --campaign "$out/campaign.h5" --fragility "$out/fragility" \
-  --motions "$out/motions/motions.h5" --histories "$out/ch8-histories.h5" --out "$out/plots"
-echo "== results:  $out/campaign.h5 (samples, schema in docs/campaign.md)"
+  --motions "$out/motions/motions.h5" --histories "$out/ch8-histories.h5" --risk "$out/risk" \
+  --out "$out/plots"
+echo "== results:  $out/campaign.h5 (samples, /amplification; schema in docs/campaign.md)"
 echo "             $out/fragility/ (curves.csv, shift.csv, observations.csv, sensitivity.csv, fragility.h5)"
+echo "             $out/risk/ (risk_gaps.csv, code_rules.csv, damage_maf.csv, risk.h5; docs/risk.md)"
 echo "== pictures: $out/plots/*.png"
+echo "== build/bin/pound risk --input $out/campaign.h5 --hazard studies/hazard-los-angeles-pga.csv --out $out/risk"
+sed -n '1,/^Pounding at each gap/p' "$out/risk.txt" | sed '$d'
+sed -n '/^Damage limits/,$p' "$out/risk.txt"

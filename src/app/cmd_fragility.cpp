@@ -252,32 +252,14 @@ int run_fragility(int argc, const char* const* argv) {
   // Limits: the command line first, then the study's [fragility] section stored in the
   // campaign file, then the defaults (drift only).
   const CampaignData c = read_campaign(input);
-  std::vector<IniEntry> study;
-  try {
-    study = parse_ini(c.study, input + " (stored study)");
-  } catch (const InputError&) {
-    study.clear();  // an unreadable stored study only loses its limits
-  }
-  auto limits_of = [&](const std::string& cli, const std::string& study_key) {
-    if (opt.given(cli)) return limits(opt, cli);
-    for (const auto& e : study)
-      if (e.key == "fragility." + study_key) {
-        const auto v = parse_number_list(
-            e.value, e.file + ":" + std::to_string(e.line) + ": key '" + e.key + "'");
-        for (double x : v)
-          if (!(x > 0))
-            throw InputError(e.file + ": key '" + e.key + "': valid: limits > 0 in SI units");
-        return v;
-      }
-    return limits(opt, cli);
-  };
-  FragilitySettings s;
-  s.drift_limits = limits_of("drift-limits", "drift_limits");
-  s.disp_limits = limits_of("disp-limits", "disp_limits");
-  s.accel_limits = limits_of("accel-limits", "accel_limits");
-  s.force_limits = limits_of("force-limits", "force_limits");
-  s.residual_drift_limits = limits_of("residual-drift-limits", "residual_drift_limits");
-  s.ductility_limits = limits_of("ductility-limits", "ductility_limits");
+  FragilitySettings s = study_fragility_limits(c);
+  for (auto [cli, list] : {std::pair{"drift-limits", &s.drift_limits},
+                           {"disp-limits", &s.disp_limits},
+                           {"accel-limits", &s.accel_limits},
+                           {"force-limits", &s.force_limits},
+                           {"residual-drift-limits", &s.residual_drift_limits},
+                           {"ductility-limits", &s.ductility_limits}})
+    if (opt.given(cli)) *list = limits(opt, cli);
   const long reps = opt.get_int("replicates");
   if (reps < 10 || reps > 100000) throw opt.invalid("replicates", "valid: 10 to 100000");
   const long seed = opt.get_int("seed");

@@ -8,4 +8,6 @@ int run_motion(int argc, const char* const* argv);
 int run_campaign(int argc, const char* const* argv);
 int run_merge(int argc, const char* const* argv);
 int run_fragility(int argc, const char* const* argv);
+int run_summary(int argc, const char* const* argv);
+int run_risk(int argc, const char* const* argv);
 }  // namespace pound::app

@@ -28,6 +28,10 @@ const Command kCommands[] = {
     {"merge", pound::app::run_merge, "joins the parts of a campaign split with --sample-range"},
     {"fragility", pound::app::run_fragility,
      "fragility curves with and without pounding from a campaign file"},
+    {"summary", pound::app::run_summary,
+     "amplification statistics of a campaign file per intensity, building and floor"},
+    {"risk", pound::app::run_risk,
+     "pounding risk at every gap from a campaign and a hazard curve; the gap for a target"},
 };
 
 void usage(std::ostream& out) {
@@ -65,7 +69,8 @@ int main(int argc, char** argv) {
     }
   }
   std::cerr << "pound: error: unknown command '" << argv[1]
-            << "'; valid commands: impact, simulate, motion, campaign, fragility, merge (see "
+            << "'; valid commands: impact, simulate, motion, campaign, merge, fragility, summary, "
+               "risk (see "
                "'pound --help')\n";
   return 2;
 }

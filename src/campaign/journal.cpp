@@ -12,9 +12,17 @@
 namespace pound {
 namespace {
 
-constexpr char kMagic[8] = {'P', 'O', 'U', 'N', 'D', 'J', '0', '2'};
+constexpr char kMagic[8] = {'P', 'O', 'U', 'N', 'D', 'J', '0', '3'};
 // Journals of earlier formats: recognised to say so (their records are laid out differently).
-constexpr char kOldMagic[8] = {'P', 'O', 'U', 'N', 'D', 'J', '0', '1'};
+struct OldFormat {
+  char magic[8];
+  const char* lacks;  ///< what its records do not hold
+};
+constexpr OldFormat kOldFormats[] = {
+    {{'P', 'O', 'U', 'N', 'D', 'J', '0', '1'},
+     "the residual drift, ductility, hysteretic energy and free-run approach"},
+    {{'P', 'O', 'U', 'N', 'D', 'J', '0', '2'}, "the free-run approach of the facing floors"},
+};
 constexpr std::size_t kHeaderBytes = 8 + 4 * 8;
 
 std::uint64_t fnv(const char* p, std::size_t n) {
@@ -59,8 +67,8 @@ RecordLayout::RecordLayout(const CampaignStudy& st)
       levels(st.max_levels()) {}
 
 std::size_t RecordLayout::values() const {
-  // im, scale, parameters, the floor arrays, 2 contact arrays, wall seconds, rank
-  return 2 + parameters + floor_array_fields().size() * buildings * floors + 2 * pairs * levels + 2;
+  // im, scale, parameters, the floor arrays, 3 contact arrays, wall seconds, rank
+  return 2 + parameters + floor_array_fields().size() * buildings * floors + 3 * pairs * levels + 2;
 }
 
 std::size_t RecordLayout::record_bytes() const {
@@ -85,7 +93,7 @@ std::vector<char> encode_record(const SampleOutcome& o, const RecordLayout& l) {
   for (int i = 0; i < l.parameters; ++i) put(b, o.values.at(i));
   for (const auto& a : floor_array_fields())
     for (double x : o.*a.member) put(b, x);
-  for (const auto* v : {&o.peak_force, &o.impacts})
+  for (const auto* v : {&o.peak_force, &o.impacts, &o.approach_free})
     for (double x : *v) put(b, x);
   put(b, o.wall_seconds);
   put(b, static_cast<double>(o.rank));
@@ -116,7 +124,7 @@ bool decode_record(const char* bytes, const RecordLayout& l, SampleOutcome& o) {
     v.resize(bf);
     for (auto& x : v) x = get<double>(p);
   }
-  for (auto* v : {&o.peak_force, &o.impacts}) {
+  for (auto* v : {&o.peak_force, &o.impacts, &o.approach_free}) {
     v->resize(pl);
     for (auto& x : *v) x = get<double>(p);
   }
@@ -134,14 +142,13 @@ long for_each_record(const std::string& path, const CampaignStudy& st,
   const std::vector<char> want = header(st, l);
   std::vector<char> h(kHeaderBytes);
   const bool whole = std::fread(h.data(), 1, h.size(), f) == h.size();
-  if (whole && std::memcmp(h.data(), kOldMagic, 8) == 0) {
-    std::fclose(f);
-    throw InputError(
-        path +
-        ": a campaign journal written by an older pound (format POUNDJ01, without the "
-        "residual drift, ductility and hysteretic energy); it cannot be resumed, start "
-        "again with --force");
-  }
+  for (const auto& old : kOldFormats)
+    if (whole && std::memcmp(h.data(), old.magic, 8) == 0) {
+      std::fclose(f);
+      throw InputError(path + ": a campaign journal written by an older pound (format " +
+                       std::string(old.magic, 8) + ", without " + old.lacks +
+                       "); it cannot be resumed, start again with --force");
+    }
   if (!whole || std::memcmp(h.data(), kMagic, 8) != 0) {
     std::fclose(f);
     throw InputError(path + ": not a pound campaign journal");

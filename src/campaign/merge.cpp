@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "campaign/amplification_file.hpp"
 #include "core/error.hpp"
 #include "io/h5.hpp"
 
@@ -168,6 +169,8 @@ void merge_campaign_parts(const std::vector<std::string>& paths, const std::stri
   std::string from;
   for (const auto& p : parts) from += (from.empty() ? "" : ", ") + p.path;
   h5::attribute(f.id(), "/", "merged_from", from);
+  // The parts' /amplification describe their own samples: recomputed for the joined file.
+  write_amplification(f.id(), compute_amplification(f.id(), out));
 }
 
 }  // namespace pound

@@ -4,7 +4,8 @@
 // the parts must come from the same study, sample count and seed, and their ranges must cover
 // 0..N-1 exactly once. Every dataset under /samples, /response and /run is copied row by row
 // into place; the root attributes are those of the part holding sample 0, with sample_range
-// "0:N" and merged_from listing the parts.
+// "0:N" and merged_from listing the parts; /amplification is computed again for the joined
+// samples (amplification_file.hpp).
 #include <string>
 #include <vector>
 

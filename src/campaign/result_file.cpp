@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <vector>
 
+#include "campaign/amplification_file.hpp"
 #include "campaign/floor_arrays.hpp"
 #include "campaign/journal.hpp"
 #include "core/error.hpp"
@@ -106,6 +107,7 @@ void write_result_file(const std::string& path, const CampaignStudy& st,
                                                     nf, H5T_NATIVE_DOUBLE, a.unit));
     RowDataset force(fid, "/response/peak_force", n, np, nl, H5T_NATIVE_DOUBLE, "N");
     RowDataset impacts(fid, "/response/impacts", n, np, nl, H5T_NATIVE_DOUBLE, "-");
+    RowDataset approach(fid, "/response/approach_free", n, np, nl, H5T_NATIVE_DOUBLE, "m");
     RowDataset rank(fid, "/run/rank", n, 0, 0, H5T_NATIVE_INT);
     RowDataset wall(fid, "/run/wall_seconds", n, 0, 0, H5T_NATIVE_DOUBLE, "s");
 
@@ -137,6 +139,7 @@ void write_result_file(const std::string& path, const CampaignStudy& st,
         floors[i]->write(r, (o.*fields[i].member).data());
       force.write(r, o.peak_force.data());
       impacts.write(r, o.impacts.data());
+      approach.write(r, o.approach_free.data());
       rank.write(r, &o.rank);
       wall.write(r, &o.wall_seconds);
     });
@@ -168,6 +171,8 @@ void write_result_file(const std::string& path, const CampaignStudy& st,
   std::string names;
   for (const auto& b : st.row.buildings) names += (names.empty() ? "" : ", ") + b.name;
   h5::attribute(fid, "/", "building_names", names);
+  // The amplification statistics, read back from the rows just written (in blocks).
+  write_amplification(fid, compute_amplification(fid, path));
 }
 
 }  // namespace pound

@@ -21,6 +21,13 @@
 //   of floor j are those of storey j, between floor j-1 or the ground and floor j)
 //   /response/peak_force [N, pairs, levels]                                  N
 //   /response/impacts [N, pairs, levels]                                     count
+//                                      contact phases started (> 0: the faces touched; every
+//                                      phase, also the damped Sears model's below its 1 %
+//                                      impact threshold)
+//   /response/approach_free [N, pairs, levels]                               m
+//                                      peak of u_L - u_R of the facing floors in the free run:
+//                                      the smallest gap at that level the motion would not
+//                                      close (a pair pounds at gap g when any level exceeds g)
 //   (NaN where a building has fewer floors, a pair fewer levels, or the sample failed)
 //   /run/rank [N], /run/wall_seconds [N]   bookkeeping that differs between runs
 // Root attributes: study (resolved text), engine_version, git_revision, seed, samples,

@@ -83,6 +83,7 @@ SampleOutcome SampleRunner::run(const SampleDraw& d) {
     (out.*a.member).assign(static_cast<std::size_t>(nb * nf), kNaN);
   out.peak_force.assign(static_cast<std::size_t>(np * nl), kNaN);
   out.impacts.assign(static_cast<std::size_t>(np * nl), kNaN);
+  out.approach_free.assign(static_cast<std::size_t>(np * nl), kNaN);
   try {
     // The sample's building row, contact and Sears model.
     const SampleModel sm = model(d);
@@ -130,6 +131,9 @@ SampleOutcome SampleRunner::run(const SampleDraw& d) {
       const std::size_t i = static_cast<std::size_t>(s.pair * nl + s.floor - 1);
       out.peak_force[i] = s.peak_force;
       out.impacts[i] = s.impacts;
+      out.approach_free[i] = s.approach_free;
+      if (!std::isfinite(s.approach_free))
+        throw NumericalError("non-finite approach of the free run");
     }
   } catch (const NumericalError& e) {
     out.status = SampleStatus::numerical_failure;
@@ -141,7 +145,7 @@ SampleOutcome SampleRunner::run(const SampleDraw& d) {
   if (out.status != SampleStatus::ok) {
     // A failed sample carries no response numbers.
     for (const auto& a : floor_array_fields()) (out.*a.member).assign((out.*a.member).size(), kNaN);
-    for (auto* v : {&out.peak_force, &out.impacts}) v->assign(v->size(), kNaN);
+    for (auto* v : {&out.peak_force, &out.impacts, &out.approach_free}) v->assign(v->size(), kNaN);
   }
   out.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;

@@ -53,9 +53,15 @@ struct SampleOutcome {
   /// Hysteretic energy dissipated by the storey below the floor [J].
   std::vector<double> hysteretic_energy_pounding, hysteretic_energy_free;
   std::vector<double> peak_force;  ///< [N]
-  std::vector<double> impacts;     ///< counts, as doubles [-]
-  double wall_seconds = 0.0;       ///< run bookkeeping
-  int rank = 0;                    ///< run bookkeeping
+  /// Contact phases started in the pounding run, as doubles [-]: every phase, so > 0 exactly
+  /// when the faces touched (the damped Sears model's raw count, SiteResult::impacts, not its
+  /// thresholded SiteContacts::impacts).
+  std::vector<double> impacts;
+  /// Peak relative approach u_L - u_R of the facing floors in the free run [m]
+  /// (SiteResponse::approach_free): the smallest gap at that level this motion would not close.
+  std::vector<double> approach_free;
+  double wall_seconds = 0.0;  ///< run bookkeeping
+  int rank = 0;               ///< run bookkeeping
 };
 
 /// Runs samples of one study; keeps per-worker caches (the motion generator's FFT plans,

@@ -32,27 +32,35 @@ std::vector<Observation> observations(const ExceedanceDesign& d, const std::vect
   return obs;
 }
 
+BootstrapResampler::BootstrapResampler(const ExceedanceDesign& d, const BootstrapSettings& s)
+    : groups_(d.stripes() ? d.levels.size() : 1), seed_(s.seed) {
+  // The groups that are resampled: each stripe, or all analyses.
+  for (std::size_t i = 0; i < d.im.size(); ++i) {
+    if (d.stripes() && d.stripe[i] < 0) continue;
+    groups_[d.stripes() ? std::size_t(d.stripe[i]) : 0].push_back(i);
+  }
+}
+
+void BootstrapResampler::rows(int r, std::vector<std::size_t>& rows) const {
+  const CounterRng rng(seed_, stream_id("fragility.bootstrap"));
+  rows.clear();
+  std::uint64_t draw = 0;
+  for (const auto& g : groups_)
+    for (std::size_t k = 0; k < g.size(); ++k) {
+      const double u = rng.uniform(std::uint64_t(r), draw++);
+      rows.push_back(g[std::min(g.size() - 1, std::size_t(u * double(g.size())))]);
+    }
+}
+
 std::vector<std::vector<LognormalFit>> bootstrap_fits(
     const ExceedanceDesign& d, const std::vector<std::vector<char>>& outcomes,
     const BootstrapSettings& s) {
-  // The groups that are resampled: each stripe, or all analyses.
-  std::vector<std::vector<std::size_t>> groups(d.stripes() ? d.levels.size() : 1);
-  for (std::size_t i = 0; i < d.im.size(); ++i) {
-    if (d.stripes() && d.stripe[i] < 0) continue;
-    groups[d.stripes() ? std::size_t(d.stripe[i]) : 0].push_back(i);
-  }
-  const CounterRng rng(s.seed, stream_id("fragility.bootstrap"));
+  const BootstrapResampler resampler(d, s);
   std::vector<std::vector<LognormalFit>> fits(outcomes.size());
   for (auto& f : fits) f.reserve(std::size_t(std::max(0, s.replicates)));
   std::vector<std::size_t> rows;
   for (int r = 0; r < s.replicates; ++r) {
-    rows.clear();
-    std::uint64_t draw = 0;
-    for (const auto& g : groups)
-      for (std::size_t k = 0; k < g.size(); ++k) {
-        const double u = rng.uniform(std::uint64_t(r), draw++);
-        rows.push_back(g[std::min(g.size() - 1, std::size_t(u * double(g.size())))]);
-      }
+    resampler.rows(r, rows);
     for (std::size_t c = 0; c < outcomes.size(); ++c)
       fits[c].push_back(fit_lognormal(observations(d, outcomes[c], rows)));
   }

@@ -37,6 +37,19 @@ struct BootstrapSettings {
   std::uint64_t seed = 1;  ///< generator seed
 };
 
+/// The analyses each bootstrap replicate draws (the draws of bootstrap_fits), for analyses
+/// that refit other outcomes on the same replicates (pound risk: pounding at any gap).
+class BootstrapResampler {
+ public:
+  BootstrapResampler(const ExceedanceDesign& d, const BootstrapSettings& s);
+  /// The analyses of replicate r (as many from each stripe as it holds), into `rows`.
+  void rows(int replicate, std::vector<std::size_t>& rows) const;
+
+ private:
+  std::vector<std::vector<std::size_t>> groups_;  ///< per stripe (or one): its analyses
+  std::uint64_t seed_;
+};
+
 /// fits[c][r]: curve c (outcomes[c], per analysis) fitted to replicate r.
 std::vector<std::vector<LognormalFit>> bootstrap_fits(
     const ExceedanceDesign& d, const std::vector<std::vector<char>>& outcomes,

@@ -160,6 +160,9 @@ CampaignData read_campaign(const std::string& path) {
   if (c.floor_arrays.empty())
     throw r.missing(std::string("/response/") + floor_array_fields().front().name);
   c.peak_force = floor_array(r, "/response/peak_force", c.samples);
+  c.impacts = floor_array(r, "/response/impacts", c.samples);
+  if (r.exists("/response/approach_free"))
+    c.approach_free = floor_array(r, "/response/approach_free", c.samples);
 
   c.study = r.text_attribute("study");
   c.intensity_measure = r.text_attribute("intensity_measure");

@@ -48,6 +48,12 @@ struct CampaignData {
   std::map<std::string, FloorArray> floor_arrays;
   /// Peak pounding force [samples][pairs][levels] [N]; pair p lies between buildings p, p+1.
   FloorArray peak_force;
+  /// Contact phases started in the pounding run [samples][pairs][levels] [-] (> 0: contact).
+  FloorArray impacts;
+  /// Peak approach u_L - u_R of the facing floors in the free run [samples][pairs][levels]
+  /// [m]; empty (samples = 0) in a file written before it existed (has_approach()).
+  FloorArray approach_free;
+  bool has_approach() const { return approach_free.samples == samples && samples > 0; }
 
   bool has(const std::string& name) const { return floor_arrays.count(name) > 0; }
   /// The per-floor array of that name; throws InputError naming the file and the missing

@@ -7,6 +7,8 @@
 
 #include "core/error.hpp"
 #include "fragility/rank_correlation.hpp"
+#include "io/ini.hpp"
+#include "io/options.hpp"
 #include "sampling/normal.hpp"
 
 namespace pound {
@@ -37,9 +39,38 @@ const EdpInfo& info(Edp e) {
   throw std::logic_error("unknown EDP");
 }
 
+}  // namespace
+
+FragilitySettings study_fragility_limits(const CampaignData& c) {
+  FragilitySettings s;
+  std::vector<IniEntry> study;
+  try {
+    study = parse_ini(c.study, c.path + " (stored study)");
+  } catch (const InputError&) {
+    return s;  // an unreadable stored study only loses its limits
+  }
+  const std::pair<const char*, std::vector<double>*> lists[] = {
+      {"fragility.drift_limits", &s.drift_limits},
+      {"fragility.disp_limits", &s.disp_limits},
+      {"fragility.accel_limits", &s.accel_limits},
+      {"fragility.force_limits", &s.force_limits},
+      {"fragility.residual_drift_limits", &s.residual_drift_limits},
+      {"fragility.ductility_limits", &s.ductility_limits}};
+  for (const auto& e : study)
+    for (const auto& [key, list] : lists)
+      if (e.key == key) {
+        *list = parse_number_list(e.value,
+                                  e.file + ":" + std::to_string(e.line) + ": key '" + e.key + "'");
+        for (double x : *list)
+          if (!(x > 0))
+            throw InputError(e.file + ": key '" + e.key + "': valid: limits > 0 in SI units");
+      }
+  return s;
+}
+
 // Analyses that succeeded, with their stripe (nearest level within 1e-5 relative: the file
 // stores the levels as text with six decimals, the samples' IM in full precision).
-ExceedanceDesign design_of(const CampaignData& c, std::vector<std::size_t>* used) {
+ExceedanceDesign exceedance_design(const CampaignData& c, std::vector<std::size_t>* used) {
   ExceedanceDesign d;
   std::vector<double> sum(c.levels.size(), 0.0);
   std::vector<long> count(c.levels.size(), 0);
@@ -61,9 +92,12 @@ ExceedanceDesign design_of(const CampaignData& c, std::vector<std::size_t>* used
   return d;
 }
 
+namespace {}  // namespace
+
 // Observed fractions for the plots: the stripes, or about ten equal-count IM bins (geometric
 // mean IM of each bin) when the intensity is continuous.
-std::vector<Observation> observed(const ExceedanceDesign& d, const std::vector<char>& exceed) {
+std::vector<Observation> observed_fractions(const ExceedanceDesign& d,
+                                            const std::vector<char>& exceed) {
   if (d.stripes()) return observations(d, exceed);
   std::vector<std::size_t> order;
   for (std::size_t i = 0; i < d.im.size(); ++i)
@@ -87,6 +121,8 @@ std::vector<Observation> observed(const ExceedanceDesign& d, const std::vector<c
   }
   return out;
 }
+
+namespace {
 
 void rank_sensitivity(const CampaignData& c, const std::vector<std::size_t>& used,
                       FragilityReport* r) {
@@ -174,7 +210,7 @@ FragilityReport analyse_fragility(const CampaignData& c, const FragilitySettings
   FragilityReport r;
   r.samples = c.samples;
   std::vector<std::size_t> used;
-  const ExceedanceDesign d = design_of(c, &used);
+  const ExceedanceDesign d = exceedance_design(c, &used);
   r.used = used.size();
   for (int st : c.status) r.failed += st != 0;
   r.stripes = d.stripes();
@@ -215,7 +251,7 @@ FragilityReport analyse_fragility(const CampaignData& c, const FragilitySettings
             fc.left_out += z[k] == kLeftOut;
           }
           fc.fit = fit_lognormal(observations(d, z));
-          fc.observed = observed(d, z);
+          fc.observed = observed_fractions(d, z);
           r.curves.push_back(fc);
           outcomes.push_back(z);
         }

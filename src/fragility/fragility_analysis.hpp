@@ -84,6 +84,24 @@ struct FragilityReport {
   std::vector<std::string> unranked;        ///< sampled labels left out (e.g. model)
 };
 
+/// The damage-state limits of the study's [fragility] section stored in the campaign file
+/// (drift_limits, disp_limits, accel_limits, force_limits, residual_drift_limits,
+/// ductility_limits; SI units), each list absent from it keeping its FragilitySettings default.
+/// Throws InputError naming the key when a limit is not > 0 or not a number; an unreadable
+/// stored study only loses its limits.
+FragilitySettings study_fragility_limits(const CampaignData& c);
+
+/// The analyses that succeeded (their rows into `used`) and their design: each on the stripe
+/// whose level matches its IM within 1e-5 (the stripe's IM is the mean of its analyses'), or
+/// continuous intensities when the campaign has no stripes. Throws InputError naming the file
+/// when a sample's IM lies on no stripe.
+ExceedanceDesign exceedance_design(const CampaignData& c, std::vector<std::size_t>* used);
+
+/// Observed fractions for reports and plots: per stripe, or (continuous intensities) about ten
+/// equal-count IM bins at the geometric mean IM of each; analyses marked kLeftOut not counted.
+std::vector<Observation> observed_fractions(const ExceedanceDesign& d,
+                                            const std::vector<char>& exceed);
+
 /// Throws InputError when no sample succeeded, the limits are not positive or the file lacks
 /// the dataset of an EDP with limits (naming the file and the dataset).
 FragilityReport analyse_fragility(const CampaignData& c, const FragilitySettings& s);

@@ -11,6 +11,7 @@
 #include "sears/sears_row_layout.hpp"
 #include "sears/sears_simulation.hpp"
 #include "sears/translation_bound.hpp"
+#include "solver/hermite.hpp"
 
 namespace pound::sears {
 namespace {
@@ -78,7 +79,10 @@ class SearsRowSolver {
   void wake_dormant(int k);
   void wake_all_dormant();
   bool site_dormant(int s) const;
-  double overlap_bound(int s) const;
+  double overlap_bound(int s) const { return approach_bound(s) - a.sites[s].gap; }
+  // Approach u_L - u_R of the faces of site s (floors plus internal vibration); with a dormant
+  // slab, its upper bound.
+  double approach_bound(int s) const;
   void wake_site(int s);
   // Steps.
   void newmark_predict(double h, const NewmarkOperator& op, double t_next);
@@ -130,7 +134,10 @@ class SearsRowSolver {
   std::vector<char> pred_valid;  // pred[k] holds predict(begin) of slab k for this step
   std::vector<double> modal_bound;
   std::vector<double> site_approach;  // TranslationBound::approach per site, contact_free() [m]
-  bool modal_bound_valid = false;     // modal_bound holds since the last fine step
+  // Runs without contacts: each site's face approach and its rate at the last step's end, for
+  // the peak approach between steps (SiteResult::peak_approach) [m], [m/s].
+  std::vector<double> free_approach, free_approach_rate;
+  bool modal_bound_valid = false;  // modal_bound holds since the last fine step
 
   // Sleeping slabs (event stepping, docs/speed.md): during a run of fine steps, a slab none of
   // whose sites carries a force at the start of the coarse interval is not stepped. Its faces
@@ -248,6 +255,13 @@ SearsRowSolver::SearsRowSolver(const SearsRowProblem& p_in, const SearsRowModel&
   dw0.resize(nf);
   swing.assign(nf, 0.0);
   accel_bound.assign(nf, 0.0);
+  free_approach.assign(ns, 0.0);
+  free_approach_rate.assign(ns, 0.0);
+  for (int s = 0; s < ns && !p.contacts; ++s) {
+    free_approach[s] = approach_bound(s);
+    free_approach_rate[s] = v(a.sites[s].dof_left) - v(a.sites[s].dof_right);
+    r.sites[s].peak_approach = free_approach[s];
+  }
 }
 
 void SearsRowSolver::loads(const Eigen::VectorXd& f, std::vector<EndLoads>& to) const {
@@ -376,12 +390,13 @@ bool SearsRowSolver::site_dormant(int s) const {
   return dormant[L.site_left_floor[s]] || dormant[L.site_right_floor[s]];
 }
 
-// Overlap now at site s; with a dormant slab, its upper bound.
-double SearsRowSolver::overlap_bound(int s) const {
+// Approach of the faces now at site s (the overlap plus the gap); with a dormant slab, its
+// upper bound.
+double SearsRowSolver::approach_bound(int s) const {
   const int kl = L.site_left_floor[s], kr = L.site_right_floor[s];
   const double wl = dormant[kl] ? dw0[kl].right + swing[kl] : disp[kl].right;
   const double wr = dormant[kr] ? dw0[kr].left - swing[kr] : disp[kr].left;
-  return u(a.sites[s].dof_left) - u(a.sites[s].dof_right) + wl - wr - a.sites[s].gap;
+  return u(a.sites[s].dof_left) - u(a.sites[s].dof_right) + wl - wr;
 }
 
 void SearsRowSolver::wake_site(int s) {  // both slabs of site s awake, delta(s) exact
@@ -545,6 +560,17 @@ void SearsRowSolver::record_sites(bool coarse, double h, double t_next) {
     }
     if (coarse && p.contacts && d > 0.0) ++out.counts.bound_violations;
     SiteResult& sr = r.sites[s];
+    if (!p.contacts) {
+      // Without contacts the modes stay at rest (coarse_step, fine_step with zero loads) and
+      // the faces move with the floors: the approach is that of the floors, its peak between
+      // the step's ends from their cubic Hermite interpolant (solver/hermite.hpp).
+      const double ap = approach_bound(s);
+      const double rate = v(a.sites[s].dof_left) - v(a.sites[s].dof_right);
+      const Hermite c{free_approach[s], ap, h * free_approach_rate[s], h * rate};
+      sr.peak_approach = std::max(sr.peak_approach, c.max_over_step());
+      free_approach[s] = ap;
+      free_approach_rate[s] = rate;
+    }
     const double step_impulse = 0.5 * (F(s) + F_next(s)) * h;
     sr.impulse += step_impulse;
     sr.peak_force = std::max(sr.peak_force, F_next(s));

@@ -54,6 +54,7 @@ RowSimulation summarize_runs(const BuildingRow& row, RowResult free, RowResult p
     s.peak_force = sr.peak_force;
     s.peak_penetration = sr.peak_penetration;
     s.first_contact = sr.first_contact;
+    s.approach_free = out.free.sites[k].peak_approach;
     out.sites.push_back(s);
   }
   return out;

@@ -36,6 +36,10 @@ struct SiteResponse {
   double peak_force = 0.0;        ///< [N]
   double peak_penetration = 0.0;  ///< [m]
   double first_contact = -1.0;    ///< [s]
+  /// Peak relative approach u_L - u_R of the two facing floors in the FREE run [m]: before its
+  /// first contact a pounding run is the free run, so this is the smallest gap at this level
+  /// that the motion would not close (SiteResult::peak_approach).
+  double approach_free = 0.0;
 };
 
 struct RowSimulation {

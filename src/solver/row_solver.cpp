@@ -549,6 +549,17 @@ void Solver::update_peaks(const Eigen::VectorXd& y0, const Eigen::VectorXd& y1, 
                     h * gap_rate(y1, i)};
     r_.sites[i].peak_penetration = std::max(r_.sites[i].peak_penetration, c.max_over_step());
   }
+  // Free run: the peak approach u_L - u_R of each site from the same interpolant the contact
+  // events are located on (find_event), so that a pounding run of this motion touches at a
+  // site exactly when this peak exceeds its gap (up to the location tolerance).
+  for (int i = 0; i < ns_ && !pounding_; ++i) {
+    const auto& s = row_.sites[i];
+    const Hermite c{y0(s.dof_left) - y0(s.dof_right), y1(s.dof_left) - y1(s.dof_right),
+                    h * gap_rate(y0, i), h * gap_rate(y1, i)};
+    double& peak = r_.sites[i].peak_approach;
+    if (std::max(c.g0, c.g1) + 4.0 / 27.0 * (std::fabs(c.m0) + std::fabs(c.m1)) > peak)
+      peak = std::max(peak, c.max_over_step());
+  }
 }
 
 // A rejected step: the next try from t has length hn [s].
@@ -578,6 +589,8 @@ void Solver::start() {
   y_ = Eigen::VectorXd::Zero(N_);
   if (p_.u0.size()) y_.head(n_) = p_.u0;
   if (p_.v0.size()) y_.segment(n_, n_) = p_.v0;
+  for (int i = 0; i < ns_ && !pounding_; ++i)
+    r_.sites[i].peak_approach = y_(row_.sites[i].dof_left) - y_(row_.sites[i].dof_right);
   // Storeys loaded monotonically from rest to the initial drifts.
   for (int i = 0; i < n_ && !linear_; ++i) {
     const RowStorey& st = storeys_[i];

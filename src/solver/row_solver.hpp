@@ -7,6 +7,7 @@
 // stereomechanical model the velocity) is discontinuous. Steps also end on every sample of the
 // ground-motion record, where ag(t) has kinks. Kernel only: no files, no printing.
 #include <Eigen/Dense>
+#include <limits>
 #include <vector>
 
 #include "contact/contact_law.hpp"
@@ -23,6 +24,11 @@ struct SiteResult {
   double impulse = 0.0;           ///< total impulse transmitted [N s]
   double first_contact = -1.0;    ///< time of the first contact [s], -1 when none
   double last_separation = -1.0;  ///< time of the last separation [s], -1 when none
+  /// Largest relative approach u_L - u_R of the site's floors over a run WITHOUT contact laws
+  /// (the free run) [m]: the smallest at-rest gap that this motion would not close (its peak
+  /// between steps from the cubic Hermite interpolant, as the contact events are located).
+  /// NaN in a run with contacts.
+  double peak_approach = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// Time histories, one entry per accepted step and per event.

@@ -78,7 +78,8 @@ void expect_same_numbers(const std::string& a, const std::string& b) {
                         "/response/hysteretic_energy_pounding",
                         "/response/hysteretic_energy_free",
                         "/response/peak_force",
-                        "/response/impacts"}) {
+                        "/response/impacts",
+                        "/response/approach_free"}) {
     EXPECT_EQ(read_raw(a, p), read_raw(b, p)) << p << " differs between " << a << " and " << b;
   }
 }
@@ -232,6 +233,18 @@ TEST(CampaignRun, PartsOfASplitCampaignMergeIntoTheSingleRun) {
   ASSERT_EQ(sh(std::string(POUND_BINARY) + " merge --out " + merged + " --parts " + parts), 0);
   expect_same_numbers(ref, merged);  // the residual drift, ductility and energy included
   expect_new_response_datasets(merged, 30);
+  // /amplification is computed again for the joined samples: the single run's, bit for bit
+  // (the parts' own describe only their samples).
+  for (const char* p :
+       {"/amplification/im", "/amplification/samples", "/amplification/failed",
+        "/amplification/disp/count", "/amplification/disp/median", "/amplification/drift/p16",
+        "/amplification/accel/p84", "/amplification/disp/fraction_above_1",
+        "/amplification/contact/count", "/amplification/contact/pounded_fraction",
+        "/amplification/contact/force_median"})
+    EXPECT_EQ(read_raw(ref, p), read_raw(merged, p)) << p;
+  EXPECT_NE(read_raw(dir() + "/part0.h5", "/amplification/disp/count"),
+            read_raw(merged, "/amplification/disp/count"));
+  EXPECT_EQ(units_of(merged, "/response/approach_free"), "m");
   // A gap is refused and leaves no file.
   const std::string bad = dir() + "/bad-merge.h5";
   EXPECT_EQ(sh(std::string(POUND_BINARY) + " merge --out " + bad + " --parts " + dir() +

@@ -63,15 +63,17 @@ SampleOutcome outcome(const CampaignStudy& st, long id) {
   o.residual_drift_free[3] = 4.9e-324;     // denormal kept
   o.peak_force.assign(pl, 1000.0 * id);
   o.impacts.assign(pl, 3.0);
+  o.approach_free.assign(pl, 0.0125 + 0.001 * id);
   return o;
 }
 
 TEST(Journal, RecordsRoundTripAndATornTailIsDropped) {
   const CampaignStudy st = tiny_study();
   const RecordLayout layout(st);
-  // im, scale, e, 12 per-floor arrays of 2 x 2, peak force and impacts of 1 x 1, wall, rank.
+  // im, scale, e, 12 per-floor arrays of 2 x 2, peak force, impacts and approach of 1 x 1,
+  // wall, rank.
   EXPECT_EQ(floor_array_fields().size(), 12u);
-  EXPECT_EQ(layout.values(), 2u + 1u + 12u * 2u * 2u + 2u * 1u * 1u + 2u);
+  EXPECT_EQ(layout.values(), 2u + 1u + 12u * 2u * 2u + 3u * 1u * 1u + 2u);
   const std::string path = test::process_scratch_dir() / "journal";
   {
     JournalWriter w(path, st, false);
@@ -91,6 +93,7 @@ TEST(Journal, RecordsRoundTripAndATornTailIsDropped) {
   EXPECT_EQ(got[2].status, SampleStatus::numerical_failure);
   EXPECT_EQ(got[2].message, "sample 2: diverged");
   EXPECT_EQ(got[1].peak_force[0], 1000.0);
+  EXPECT_EQ(got[2].approach_free[0], 0.0125 + 0.002);
   EXPECT_TRUE(std::isnan(got[1].disp_pounding[1]));
   // Every per-floor array comes back bit for bit (NaN, -0 and denormals included).
   for (long id : {0L, 1L, 2L}) {
@@ -116,31 +119,34 @@ TEST(Journal, RecordsRoundTripAndATornTailIsDropped) {
 }
 
 TEST(Journal, AJournalOfTheOldFormatSaysSo) {
-  // A journal written before the residual drift, ductility and energy arrays (POUNDJ01) has
-  // shorter records: it is refused with one line saying why and what to do.
+  // A journal written before the residual drift, ductility and energy arrays (POUNDJ01) or
+  // before the free-run approach (POUNDJ02) has shorter records: it is refused with one line
+  // saying why and what to do.
   const CampaignStudy st = tiny_study();
   const std::string path = test::process_scratch_dir() / "journal-old";
-  { JournalWriter w(path, st, false); }
-  {
-    std::fstream f(path, std::ios::in | std::ios::out | std::ios::binary);
-    f.write("POUNDJ01", 8);
-  }
-  for (const bool append : {false, true}) {
-    try {
-      if (append) {
-        JournalWriter w(path, st, true);
-      } else {
-        read_journal(path, st);
+  for (const char* magic : {"POUNDJ01", "POUNDJ02"})
+    for (const bool append : {false, true}) {
+      { JournalWriter w(path, st, false); }
+      {
+        std::fstream f(path, std::ios::in | std::ios::out | std::ios::binary);
+        f.write(magic, 8);
       }
-      ADD_FAILURE() << "an old journal was accepted";
-    } catch (const InputError& e) {
-      const std::string m = e.what();
-      EXPECT_NE(m.find(path), std::string::npos) << m;
-      EXPECT_NE(m.find("older pound"), std::string::npos) << m;
-      EXPECT_NE(m.find("--force"), std::string::npos) << m;
-      EXPECT_EQ(m.find('\n'), std::string::npos) << m;
+      try {
+        if (append) {
+          JournalWriter w(path, st, true);
+        } else {
+          read_journal(path, st);
+        }
+        ADD_FAILURE() << "an old journal was accepted";
+      } catch (const InputError& e) {
+        const std::string m = e.what();
+        EXPECT_NE(m.find(path), std::string::npos) << m;
+        EXPECT_NE(m.find("older pound"), std::string::npos) << m;
+        EXPECT_NE(m.find(magic), std::string::npos) << m;
+        EXPECT_NE(m.find("--force"), std::string::npos) << m;
+        EXPECT_EQ(m.find('\n'), std::string::npos) << m;
+      }
     }
-  }
   std::remove(path.c_str());
 }
 

@@ -1,0 +1,319 @@
+// pound risk --input RUN.h5 --hazard HAZARD.csv [--gaps LIST] [--years 50]
+//            [--target-probability 0.02] [--design-im G] [--out DIR] [--json]
+// The pounding risk of every gap from one campaign and a site's hazard curve: the mean annual
+// frequency of pounding and its probability in T years per gap, the smallest gap meeting a
+// target (bootstrap band), the code rules' gaps and their probabilities, and the damage
+// limits' mean annual frequencies with and without pounding. Parses options, calls src/risk,
+// reports; the campaign file is opened read-only, the results go to DIR (default RUN-risk/).
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "app/commands.hpp"
+#include "core/error.hpp"
+#include "fragility/campaign_reader.hpp"
+#include "io/json.hpp"
+#include "io/options.hpp"
+#include "motion/ground_motion.hpp"
+#include "risk/hazard_curve.hpp"
+#include "risk/pounding_risk.hpp"
+#include "risk/risk_files.hpp"
+
+namespace pound::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<OptionSpec> specs() {
+  return {
+      {"input", "", "", "campaign result file (HDF5) of 'pound campaign' or 'pound merge'"},
+      {"hazard", "", "",
+       "hazard curve CSV: header 'pga [g], annual_rate [1/yr]' (or sa(T), m/s2), then points"},
+      {"gaps", "m", "",
+       "gaps to evaluate, increasing, >= 0 (default: 40 from 0 to the largest "
+       "free-run approach of the pair)"},
+      {"years", "yr", "50", "exposure time T of the probabilities 1 - exp(-nu T)"},
+      {"target-probability", "-", "0.02",
+       "probability of pounding in T years that the gap for the target may not exceed, in (0, 1)"},
+      {"design-im", "g", "",
+       "intensity of the code rules (default: the hazard's 475-year intensity, 10 % in 50 years)"},
+      {"out", "", "", "output folder (default: RUN-risk/ beside RUN.h5)"},
+      {"replicates", "-", "1000", "bootstrap replicates of the 90 % bands"},
+      {"seed", "-", "1", "seed of the bootstrap draws"},
+      {"json", "", "", "print one JSON object instead of the tables", true},
+  };
+}
+
+std::string fmt(const char* f, double x) {
+  if (!std::isfinite(x)) return "-";
+  char b[64];
+  std::snprintf(b, sizeof b, f, x);
+  return b;
+}
+
+std::string pair_name(const CampaignData& c, std::size_t p) {
+  auto name = [&](std::size_t b) {
+    return b < c.building_names.size() ? c.building_names[b] : "building" + std::to_string(b + 1);
+  };
+  return name(p) + " | " + name(p + 1);
+}
+
+std::string limit_text(Edp e, double x) {
+  if (e == Edp::drift || e == Edp::residual_drift) return fmt("%.3g %%", 100 * x);
+  if (e == Edp::ductility) return fmt("%.4g", x);
+  return fmt("%.4g ", x) + unit_of(e);
+}
+
+void print_text(const CampaignData& c, const HazardCurve& h, const RiskReport& r,
+                const RiskSettings& s, const std::vector<BuildingMode>& modes,
+                const std::vector<std::string>& files) {
+  const std::string im = c.intensity_measure == "sa" ? "Sa(T1)" : "PGA";
+  const std::string T = fmt("%g", s.years);
+  std::printf("Pounding risk: %s on the hazard curve %s (%s, %zu points, %s-%s g)\n",
+              c.path.c_str(), h.source.c_str(), im.c_str(), h.im.size(),
+              fmt("%.4g", h.im.front() / kGravity).c_str(),
+              fmt("%.4g", h.im.back() / kGravity).c_str());
+  std::printf("  hazard: %s\n", h.extrapolation_rule().c_str());
+  std::printf(
+      "  %zu samples, %zu failed (not used), %zu %s; exposure %s years; target "
+      "P(pounding in %s years) <= %g\n\n",
+      r.samples, r.failed, r.groups, r.stripes ? "stripes" : "IM bins", T.c_str(), T.c_str(),
+      s.target_probability);
+  std::printf(
+      "Gap needed for the target (the same gap at every level of a pair; %g %% "
+      "bootstrap band, %d replicates)\n",
+      100 * s.confidence, s.bootstrap.replicates);
+  std::printf("  %-4s  %-24s %10s  %-22s %s\n", "pair", "buildings", "gap [m]", "band [m]",
+              "status");
+  for (const auto& p : r.pairs)
+    std::printf(
+        "  %-4zu  %-24s %10s  [%8s, %8s]  %s\n", p.pair + 1, pair_name(c, p.pair).c_str(),
+        ((p.target_status == TargetStatus::at_most ? "<= " : "") + fmt("%.4f", p.gap_for_target))
+            .c_str(),
+        fmt("%.4f", p.gap_band.lo).c_str(), fmt("%.4f", p.gap_band.hi).c_str(),
+        to_string(p.target_status));
+  std::printf("\nCode rules at %s %s g (%s), from the median free-run peak displacements\n",
+              im.c_str(), fmt("%.4g", r.design_im / kGravity).c_str(),
+              r.design_im_given ? "--design-im" : "the hazard's 475-year intensity");
+  std::printf("  %-4s  %-5s %10s %6s %10s %14s %22s\n", "pair", "rule", "gap [m]", "level",
+              "pounding", "nu [1/yr]", ("P(pounding in " + T + " y)").c_str());
+  for (const auto& p : r.pairs) {
+    if (!p.rules_computed) {
+      std::printf("  %-4zu  not computed: %s\n", p.pair + 1, p.rules_note.c_str());
+      continue;
+    }
+    for (const auto& k : p.rules)
+      std::printf("  %-4zu  %-5s %10s %6d %10ld %14s %22s\n", p.pair + 1, to_string(k.rule),
+                  fmt("%.4f", k.gap).c_str(), k.level, k.estimate.pounding,
+                  k.estimate.fit.finite() ? fmt("%.3e", k.estimate.maf).c_str()
+                                          : to_string(k.estimate.fit.status),
+                  fmt("%.4f", k.estimate.probability).c_str());
+    const std::size_t bl = p.pair, br = p.pair + 1;
+    std::printf("        rho = %s (Der Kiureghian 1981; T1 %s / %s s, damping %s / %s)\n",
+                fmt("%.4f", p.rho).c_str(), fmt("%.3f", modes[bl].period_s).c_str(),
+                fmt("%.3f", modes[br].period_s).c_str(), fmt("%.3f", modes[bl].damping).c_str(),
+                fmt("%.3f", modes[br].damping).c_str());
+    std::string ml, mr;
+    for (std::size_t l = 0; l < p.median_left.size(); ++l) {
+      ml += (l ? ", " : "") + fmt("%.4f", p.median_left[l]);
+      mr += (l ? ", " : "") + fmt("%.4f", p.median_right[l]);
+    }
+    std::printf("        median free peak displacements by level [m]: %s | %s\n", ml.c_str(),
+                mr.c_str());
+  }
+  for (const auto& p : r.pairs) {
+    std::printf(
+        "\nPounding at each gap, pair %zu (%s): P(pounding | %s) = Phi(ln(x / theta) / "
+        "beta)\n",
+        p.pair + 1, pair_name(c, p.pair).c_str(), im.c_str());
+    std::printf("  %9s %9s  %-16s %10s %7s %12s %12s  %-20s\n", "gap [m]", "pounding", "status",
+                "theta [g]", "beta", "nu [1/yr]", ("P(" + T + " y)").c_str(), "90 % band");
+    for (const auto& e : p.grid)
+      std::printf("  %9s %4ld/%-4ld  %-16s %10s %7s %12s %12s  [%7s, %7s]\n",
+                  fmt("%.4f", e.gap).c_str(), e.pounding, e.analyses, to_string(e.fit.status),
+                  e.fit.finite() ? fmt("%.4f", e.fit.theta / kGravity).c_str() : "-",
+                  e.fit.finite() ? fmt("%.3f", e.fit.beta).c_str() : "-",
+                  fmt("%.3e", e.maf).c_str(), fmt("%.4f", e.probability).c_str(),
+                  fmt("%.4f", e.probability_band.lo).c_str(),
+                  fmt("%.4f", e.probability_band.hi).c_str());
+  }
+  std::printf(
+      "\nDamage limits: mean annual frequency of exceedance with and without pounding "
+      "(at the campaign's own gaps)\n");
+  std::printf("  %-12s %-15s %-10s %12s %12s %8s %12s %12s\n", "building", "edp", "limit",
+              "nu pounding", "nu free", "ratio", ("P" + T + " pound").c_str(),
+              ("P" + T + " free").c_str());
+  for (const auto& d : r.damage)
+    std::printf(
+        "  %-12s %-15s %-10s %12s %12s %8s %12s %12s\n", c.building_names[d.building].c_str(),
+        to_string(d.edp), limit_text(d.edp, d.limit).c_str(),
+        d.pounding.finite() ? fmt("%.3e", d.maf_pounding).c_str() : to_string(d.pounding.status),
+        d.edp == Edp::force ? "-"
+        : d.free.finite()   ? fmt("%.3e", d.maf_free).c_str()
+                            : to_string(d.free.status),
+        fmt("%.3f", d.ratio).c_str(), fmt("%.4f", -std::expm1(-d.maf_pounding * s.years)).c_str(),
+        fmt("%.4f", -std::expm1(-d.maf_free * s.years)).c_str());
+  if (!r.notes.empty()) {
+    std::printf("\nWhat could not be estimated:\n");
+    for (const auto& n : r.notes) std::printf("  - %s\n", n.c_str());
+  }
+  std::printf("\nFiles:");
+  for (const auto& f : files) std::printf(" %s", f.c_str());
+  std::printf("\n");
+}
+
+void print_json(const CampaignData& c, const HazardCurve& h, const RiskReport& r,
+                const RiskSettings& s, const std::string& dir,
+                const std::vector<std::string>& files) {
+  JsonWriter w;
+  w.begin_object();
+  w.field("input", c.path).field("hazard", h.source).field("out", dir);
+  w.field("intensity_measure", c.intensity_measure).field("im_units", "m/s^2");
+  w.field("hazard_rule", h.extrapolation_rule());
+  w.field("years", s.years).field("target_probability", s.target_probability);
+  w.field("design_im", r.design_im)
+      .field("design_im_source", r.design_im_given ? "--design-im" : "hazard 475-year");
+  w.field("samples", long(r.samples)).field("failed", long(r.failed)).field("used", long(r.used));
+  w.field("bootstrap_replicates", s.bootstrap.replicates);
+  w.key("pairs").begin_array();
+  for (const auto& p : r.pairs) {
+    w.begin_object().field("pair", long(p.pair + 1));
+    std::vector<double> gaps, maf, prob;
+    w.key("status").begin_array();
+    for (const auto& e : p.grid) {
+      gaps.push_back(e.gap);
+      maf.push_back(e.maf);
+      prob.push_back(e.probability);
+      w.value(to_string(e.fit.status));
+    }
+    w.end_array();
+    w.key("gaps_m").array(gaps);
+    w.key("maf_pounding").array(maf);
+    w.key("probability_pounding").array(prob);
+    w.key("gap_for_target_m");
+    std::isfinite(p.gap_for_target) ? w.value(p.gap_for_target) : w.null();
+    w.field("gap_for_target_status", to_string(p.target_status));
+    w.key("gap_for_target_band_m");
+    if (std::isfinite(p.gap_band.lo) && std::isfinite(p.gap_band.hi))
+      w.array({p.gap_band.lo, p.gap_band.hi});
+    else
+      w.null();
+    w.field("gap_band_finite", long(p.gap_band.finite));
+    w.field("rho", p.rho);
+    w.key("code_rules").begin_array();
+    for (const auto& k : p.rules)
+      w.begin_object()
+          .field("rule", to_string(k.rule))
+          .field("gap_m", k.gap)
+          .field("level", long(k.level))
+          .field("status", to_string(k.estimate.fit.status))
+          .field("maf_pounding", k.estimate.maf)
+          .field("probability_pounding", k.estimate.probability)
+          .end_object();
+    w.end_array();
+    w.end_object();
+  }
+  w.end_array();
+  w.key("damage").begin_array();
+  for (const auto& d : r.damage)
+    w.begin_object()
+        .field("building", long(d.building))
+        .field("edp", to_string(d.edp))
+        .field("limit", d.limit)
+        .field("status_pounding", to_string(d.pounding.status))
+        .field("status_free", to_string(d.free.status))
+        .field("maf_pounding", d.maf_pounding)
+        .field("maf_free", d.maf_free)
+        .field("ratio", d.ratio)
+        .end_object();
+  w.end_array();
+  w.key("notes").begin_array();
+  for (const auto& n : r.notes) w.value(n);
+  w.end_array();
+  w.key("files").begin_array();
+  for (const auto& f : files) w.value(f);
+  w.end_array();
+  w.end_object();
+  std::cout << w.str() << "\n";
+}
+
+}  // namespace
+
+int run_risk(int argc, const char* const* argv) {
+  Options opt("risk",
+              "Pounding risk at every gap from a campaign and a site's hazard curve: mean annual "
+              "frequency, probability in T years, the gap for a target, code rules, damage limits.",
+              specs());
+  opt.parse(argc, argv);
+  if (opt.help_requested()) {
+    std::cout << opt.help_text();
+    return 0;
+  }
+  if (!opt.given("input") || !opt.given("hazard"))
+    throw InputError("command line: --input RUN.h5 and --hazard HAZARD.csv are required");
+  RiskSettings s;
+  s.years = opt.get_double("years");
+  if (!(s.years > 0)) throw opt.invalid("years", "valid: a number of years > 0");
+  s.target_probability = opt.get_double("target-probability");
+  if (!(s.target_probability > 0 && s.target_probability < 1))
+    throw opt.invalid("target-probability", "valid: a probability in (0, 1)");
+  if (opt.given("gaps")) {
+    s.gaps = opt.get_doubles("gaps");
+    for (std::size_t i = 0; i < s.gaps.size(); ++i)
+      if (!(s.gaps[i] >= 0) || (i > 0 && !(s.gaps[i] > s.gaps[i - 1])))
+        throw opt.invalid("gaps", "valid: increasing gaps >= 0 in m");
+    if (s.gaps.empty()) throw opt.invalid("gaps", "valid: at least one gap >= 0 in m");
+  }
+  if (opt.given("design-im")) {
+    s.design_im = opt.get_double("design-im") * kGravity;
+    if (!(s.design_im > 0)) throw opt.invalid("design-im", "valid: an intensity > 0 in g");
+  }
+  const long reps = opt.get_int("replicates");
+  if (reps < 10 || reps > 100000) throw opt.invalid("replicates", "valid: 10 to 100000");
+  const long seed = opt.get_int("seed");
+  if (seed < 0) throw opt.invalid("seed", "valid: a whole number >= 0");
+  s.bootstrap.replicates = int(reps);
+  s.bootstrap.seed = std::uint64_t(seed);
+
+  // Everything is read and computed before any file is written.
+  const std::string input = opt.get_path("input");
+  const CampaignData c = read_campaign(input);
+  const HazardCurve h = read_hazard_curve(opt.get_path("hazard"));
+  check_hazard_measure(c, h);
+  std::vector<BuildingMode> modes;
+  try {
+    modes = study_first_modes(c);
+  } catch (const InputError&) {
+    modes.clear();  // the code rules say they could not be computed
+  }
+  const RiskReport r = analyse_risk(c, h, s, modes, study_fragility_limits(c));
+
+  std::string dir;
+  if (opt.given("out")) {
+    dir = opt.get_path("out");
+  } else {
+    fs::path p(input);
+    dir = (p.parent_path() / (p.stem().string() + "-risk")).string();
+  }
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec || !fs::is_directory(dir))
+    throw InputError(opt.where("out") + ": cannot create the folder " + dir);
+  for (const char* name : {"risk_gaps.csv", "code_rules.csv", "damage_maf.csv", "risk.h5"})
+    if (fs::equivalent(fs::path(dir) / name, input, ec))
+      throw InputError(opt.where("out") + ": " + dir + "/" + name +
+                       " is the campaign file; choose another output folder");
+  const auto files = write_risk_files(dir, c, h, r, RiskRunInfo{input, opt.resolved_text(), s});
+  if (opt.flag("json"))
+    print_json(c, h, r, s, dir, files);
+  else
+    print_text(c, h, r, s, modes, files);
+  if (r.failed)
+    std::fprintf(stderr, "risk: %zu of %zu samples failed and are excluded\n", r.failed, r.samples);
+  return 0;
+}
+
+}  // namespace pound::app

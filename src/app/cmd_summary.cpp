@@ -1,0 +1,203 @@
+// pound summary --input RUN.h5 [--floors] [--json]: the amplification statistics of a campaign
+// file (/amplification, campaign/amplification_file.hpp) as a compact table. The file is opened
+// read-only; one written before /amplification existed gets it computed in memory.
+#include <hdf5.h>
+
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "app/commands.hpp"
+#include "campaign/amplification_file.hpp"
+#include "core/error.hpp"
+#include "io/h5.hpp"
+#include "io/json.hpp"
+#include "io/options.hpp"
+#include "motion/ground_motion.hpp"
+
+namespace pound::app {
+namespace {
+
+std::string fmt(const char* f, double x) {
+  if (!std::isfinite(x)) return "-";
+  char b[64];
+  std::snprintf(b, sizeof b, f, x);
+  return b;
+}
+
+std::vector<std::string> split_names(const std::string& s, std::size_t n) {
+  std::vector<std::string> out;
+  std::size_t start = 0;
+  while (start <= s.size() && !s.empty()) {
+    const auto comma = s.find(',', start);
+    std::string item =
+        s.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    const auto b = item.find_first_not_of(' '), e = item.find_last_not_of(' ');
+    out.push_back(b == std::string::npos ? "" : item.substr(b, e - b + 1));
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  for (std::size_t i = out.size(); i < n; ++i) out.push_back("building" + std::to_string(i + 1));
+  return out;
+}
+
+// "median [p16, p84] share" of one floor.
+std::string cell(const AmplificationMeasure& m, std::size_t at) {
+  if (m.count[at] == 0) return "-";
+  return fmt("%.3f", m.median[at]) + " [" + fmt("%.3f", m.p16[at]) + ", " + fmt("%.3f", m.p84[at]) +
+         "] " + fmt("%.2f", m.fraction_above_1[at]);
+}
+
+void print_text(const AmplificationTable& t, const std::vector<std::string>& names,
+                const std::string& measure, bool floors, bool computed) {
+  const std::string im = measure == "sa" ? "Sa(T1)" : "PGA";
+  std::printf(
+      "Amplification by pounding, peak with / peak without: median [16 %%, 84 %%] and share of "
+      "samples above 1\n(%s; %s the floor (storey for drift) whose median is largest%s)\n",
+      t.stripes ? (im + " stripes").c_str() : (im + " bins of equal count").c_str(),
+      floors ? "every floor;" : "per building",
+      computed ? "; computed now: the file has no "
+                 "/amplification (written by an older pound)"
+               : "");
+  std::printf("  %-5s %9s %5s %5s  %-10s %-6s %-30s %-6s %-30s %-6s %-30s\n", "group",
+              (im + " [g]").c_str(), "n", "fail", "building", "floor", "disp", "storey", "drift",
+              "floor", "accel");
+  for (std::size_t g = 0; g < t.groups; ++g)
+    for (std::size_t b = 0; b < t.buildings; ++b) {
+      // The floors shown: all, or per measure the one with the largest median.
+      std::vector<std::vector<std::size_t>> rows;
+      if (floors) {
+        for (std::size_t f = 0; f < t.floors; ++f) rows.push_back({f, f, f});
+      } else {
+        std::vector<std::size_t> pick;
+        for (const auto& m : t.measures) {
+          std::size_t best = 0;
+          double top = -1.0;
+          for (std::size_t f = 0; f < t.floors; ++f) {
+            const double x = m.median[t.at(g, b, f)];
+            if (m.count[t.at(g, b, f)] > 0 && x > top) top = x, best = f;
+          }
+          pick.push_back(best);
+        }
+        rows.push_back(pick);
+      }
+      for (const auto& r : rows) {
+        bool any = false;
+        for (std::size_t k = 0; k < 3; ++k) any |= t.measures[k].count[t.at(g, b, r[k])] > 0;
+        if (!any) continue;  // a floor the building does not have
+        std::printf("  %-5zu %9s %5ld %5ld  %-10s", g + 1, fmt("%.4g", t.im[g] / kGravity).c_str(),
+                    t.samples[g], t.failed[g], names[b].c_str());
+        for (std::size_t k = 0; k < 3; ++k)
+          std::printf(" %-6zu %-30s", r[k] + 1, cell(t.measures[k], t.at(g, b, r[k])).c_str());
+        std::printf("\n");
+      }
+    }
+  std::printf(
+      "\nContacts: share of samples that pounded at each level, median peak force over all "
+      "samples and over those that pounded [kN]\n");
+  std::printf("  %-5s %9s  %-5s %-6s %9s %12s %14s\n", "group", (im + " [g]").c_str(), "pair",
+              "level", "pounded", "force [kN]", "if pounded");
+  for (std::size_t g = 0; g < t.groups; ++g)
+    for (std::size_t p = 0; p < t.pairs; ++p)
+      for (std::size_t l = 0; l < t.levels; ++l) {
+        const std::size_t at = t.site(g, p, l);
+        if (t.contact_count[at] == 0) continue;
+        std::printf("  %-5zu %9s  %-5zu %-6zu %9s %12s %14s\n", g + 1,
+                    fmt("%.4g", t.im[g] / kGravity).c_str(), p + 1, l + 1,
+                    fmt("%.3f", t.pounded_fraction[at]).c_str(),
+                    fmt("%.4g", t.force_median[at] / 1e3).c_str(),
+                    fmt("%.4g", t.force_median_pounded[at] / 1e3).c_str());
+      }
+  if (t.failed_total)
+    std::printf("\n(%ld failed samples are counted in n and fail, not used)\n", t.failed_total);
+}
+
+void print_json(const AmplificationTable& t, const std::string& input,
+                const std::vector<std::string>& names, bool computed) {
+  JsonWriter w;
+  w.begin_object().field("input", input).field("design", t.stripes ? "stripes" : "bins");
+  w.field("computed_now", computed).field("failed", t.failed_total).field("im_units", "m/s^2");
+  w.key("building_names").begin_array();
+  for (std::size_t b = 0; b < t.buildings; ++b) w.value(names[b]);
+  w.end_array();
+  w.key("groups").begin_array();
+  for (std::size_t g = 0; g < t.groups; ++g) {
+    w.begin_object().field("im", t.im[g]).field("im_lo", t.im_lo[g]).field("im_hi", t.im_hi[g]);
+    w.field("samples", t.samples[g]).field("failed", t.failed[g]);
+    w.key("buildings").begin_array();
+    for (std::size_t b = 0; b < t.buildings; ++b) {
+      w.begin_object().field("building", long(b)).key("floors").begin_array();
+      for (std::size_t f = 0; f < t.floors; ++f) {
+        const std::size_t at = t.at(g, b, f);
+        w.begin_object().field("floor", long(f + 1));
+        for (const auto& m : t.measures)
+          w.key(m.name)
+              .begin_object()
+              .field("count", m.count[at])
+              .field("mean", m.mean[at])
+              .field("median", m.median[at])
+              .field("p16", m.p16[at])
+              .field("p84", m.p84[at])
+              .field("fraction_above_1", m.fraction_above_1[at])
+              .end_object();
+        w.end_object();
+      }
+      w.end_array().end_object();
+    }
+    w.end_array();
+    w.key("contacts").begin_array();
+    for (std::size_t p = 0; p < t.pairs; ++p)
+      for (std::size_t l = 0; l < t.levels; ++l) {
+        const std::size_t at = t.site(g, p, l);
+        w.begin_object().field("pair", long(p + 1)).field("level", long(l + 1));
+        w.field("count", t.contact_count[at]).field("pounded_fraction", t.pounded_fraction[at]);
+        w.field("force_median_N", t.force_median[at]);
+        w.field("force_median_pounded_N", t.force_median_pounded[at]).end_object();
+      }
+    w.end_array().end_object();
+  }
+  w.end_array().end_object();
+  std::cout << w.str() << "\n";
+}
+
+}  // namespace
+
+int run_summary(int argc, const char* const* argv) {
+  Options opt(
+      "summary", "The amplification statistics of a campaign file (/amplification) as a table.",
+      {{"input", "", "", "campaign result file (HDF5) of 'pound campaign' or 'pound merge'"},
+       {"floors", "", "", "one row per floor instead of the largest median", true},
+       {"json", "", "", "print one JSON object instead of the tables", true}});
+  opt.parse(argc, argv);
+  if (opt.help_requested()) {
+    std::cout << opt.help_text();
+    return 0;
+  }
+  if (!opt.given("input")) throw InputError("command line: --input RUN.h5 is required");
+  const std::string input = opt.get_path("input");
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  if (H5Fis_hdf5(input.c_str()) <= 0)
+    throw InputError(input +
+                     ": cannot open as an HDF5 file; give a campaign result file written "
+                     "by 'pound campaign --out'");
+  const hid_t f = H5Fopen(input.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  if (f < 0) throw InputError(input + ": cannot open for reading");
+  struct Closer {
+    hid_t f;
+    ~Closer() { H5Fclose(f); }
+  } closer{f};
+  AmplificationTable t;
+  const bool stored = read_amplification(f, input, &t);
+  if (!stored) t = compute_amplification(f, input);
+  const auto names = split_names(h5::root_attribute_text(f, "building_names"), t.buildings);
+  if (opt.flag("json"))
+    print_json(t, input, names, !stored);
+  else
+    print_text(t, names, h5::root_attribute_text(f, "intensity_measure"), opt.flag("floors"),
+               !stored);
+  return 0;
+}
+
+}  // namespace pound::app

@@ -1,0 +1,343 @@
+#include "campaign/amplification_file.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.hpp"
+#include "io/h5.hpp"
+#include "io/options.hpp"
+
+namespace pound {
+namespace {
+
+constexpr hsize_t kBlockRows = 65536;  // rows read at a time
+
+struct Measure {
+  const char* name;
+  const char* pounding;
+  const char* free;
+};
+constexpr Measure kMeasures[] = {
+    {"disp", "/response/peak_disp_pounding", "/response/peak_disp_free"},
+    {"drift", "/response/peak_drift_pounding", "/response/peak_drift_free"},
+    {"accel", "/response/peak_accel_pounding", "/response/peak_accel_free"},
+};
+
+// An open dataset of the file, closed at scope exit.
+class Dataset {
+ public:
+  Dataset(hid_t file, const std::string& name, const std::string& path) : name_(name) {
+    if (H5Lexists(file, name.c_str(), H5P_DEFAULT) <= 0 ||
+        (id_ = H5Dopen2(file, name.c_str(), H5P_DEFAULT)) < 0)
+      throw InputError(path + ": no dataset " + name +
+                       "; not a campaign result file of 'pound campaign' (schema in "
+                       "src/campaign/result_file.hpp)");
+    const hid_t s = H5Dget_space(id_);
+    dims_.resize(std::size_t(std::max(0, H5Sget_simple_extent_ndims(s))));
+    H5Sget_simple_extent_dims(s, dims_.data(), nullptr);
+    H5Sclose(s);
+  }
+  ~Dataset() { H5Dclose(id_); }
+  Dataset(const Dataset&) = delete;
+  Dataset& operator=(const Dataset&) = delete;
+  const std::vector<hsize_t>& dims() const { return dims_; }
+
+  // The whole of a 1-D dataset, converted to T's native type.
+  template <class T>
+  std::vector<T> all(hid_t mem_type) const {
+    std::vector<T> v(dims_.empty() ? 0 : dims_[0]);
+    if (!v.empty() && H5Dread(id_, mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) < 0)
+      throw InputError("HDF5: reading " + name_ + " failed");
+    return v;
+  }
+  // Rows [row, row + count) of a 3-D dataset [N, a, b], columns [a0, a0 + na) of its second
+  // dimension, as doubles, row-major.
+  void rows(hsize_t row, hsize_t count, hsize_t a0, hsize_t na, std::vector<double>& out) const {
+    const hsize_t start[3] = {row, a0, 0}, n[3] = {count, na, dims_[2]};
+    out.resize(std::size_t(count * na * dims_[2]));
+    const hid_t fs = H5Dget_space(id_);
+    H5Sselect_hyperslab(fs, H5S_SELECT_SET, start, nullptr, n, nullptr);
+    const hid_t ms = H5Screate_simple(3, n, nullptr);
+    const herr_t st = H5Dread(id_, H5T_NATIVE_DOUBLE, ms, fs, H5P_DEFAULT, out.data());
+    H5Sclose(ms);
+    H5Sclose(fs);
+    if (st < 0) throw InputError("HDF5: reading " + name_ + " failed");
+  }
+
+ private:
+  std::string name_;
+  hid_t id_ = -1;
+  std::vector<hsize_t> dims_;
+};
+
+void write_array(hid_t file, const std::string& name, hid_t mem_type, const void* data,
+                 std::vector<hsize_t> dims, const std::string& units = "") {
+  h5::ensure_group(file, name.substr(0, name.rfind('/')));
+  const hid_t space = H5Screate_simple(int(dims.size()), dims.data(), nullptr);
+  const hid_t ds =
+      H5Dcreate2(file, name.c_str(), mem_type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  if (ds < 0) throw InputError("HDF5: cannot create dataset " + name);
+  hsize_t total = 1;
+  for (hsize_t d : dims) total *= d;
+  const herr_t st = total ? H5Dwrite(ds, mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) : 0;
+  H5Dclose(ds);
+  H5Sclose(space);
+  if (st < 0) throw InputError("HDF5: writing " + name + " failed");
+  if (!units.empty()) h5::attribute(file, name, "units", units);
+}
+
+void write_doubles(hid_t f, const std::string& name, const std::vector<double>& v,
+                   std::vector<hsize_t> dims, const std::string& units = "") {
+  write_array(f, name, H5T_NATIVE_DOUBLE, v.data(), std::move(dims), units);
+}
+void write_longs(hid_t f, const std::string& name, const std::vector<long>& v,
+                 std::vector<hsize_t> dims) {
+  write_array(f, name, H5T_NATIVE_LONG, v.data(), std::move(dims));
+}
+
+}  // namespace
+
+AmplificationTable compute_amplification(hid_t file, const std::string& path) {
+  AmplificationTable t;
+  const auto id = Dataset(file, "/samples/id", path).all<long>(H5T_NATIVE_LONG);
+  const auto status = Dataset(file, "/samples/status", path).all<int>(H5T_NATIVE_INT);
+  const auto im = Dataset(file, "/samples/im", path).all<double>(H5T_NATIVE_DOUBLE);
+  const std::size_t n = id.size();
+  if (status.size() != n || im.size() != n)
+    throw InputError(path + ": /samples/id, status and im differ in length");
+  std::vector<char> ok(n);
+  for (std::size_t s = 0; s < n; ++s) ok[s] = status[s] == 0;
+  const std::string levels_text = h5::root_attribute_text(file, "im_levels_mps2");
+  const std::vector<double> levels =
+      levels_text.empty() ? std::vector<double>{}
+                          : parse_number_list(levels_text, path + ": attribute im_levels_mps2");
+  const IntensityGroups g = intensity_groups(levels, id, ok, im);
+  t.stripes = g.stripes;
+  t.groups = g.im.size();
+  t.im = g.im;
+  t.im_lo = g.im_lo;
+  t.im_hi = g.im_hi;
+  t.samples = g.samples;
+  t.failed = g.failed;
+  t.failed_total = g.failed_total;
+  const std::size_t G = t.groups;
+
+  std::vector<double> bp, bf;
+  for (const Measure& m : kMeasures) {
+    const Dataset pd(file, m.pounding, path), fd(file, m.free, path);
+    if (pd.dims().size() != 3 || pd.dims() != fd.dims() || pd.dims()[0] != n)
+      throw InputError(path + ": " + m.pounding + " and " + m.free +
+                       " must both have the shape [samples, buildings, floors]");
+    t.buildings = pd.dims()[1];
+    t.floors = pd.dims()[2];
+    const std::size_t B = t.buildings, F = t.floors;
+    AmplificationMeasure out;
+    out.name = m.name;
+    out.count.assign(G * B * F, 0);
+    for (auto* v : {&out.mean, &out.median, &out.p16, &out.p84, &out.fraction_above_1})
+      v->assign(G * B * F, 0.0);
+    for (std::size_t b = 0; b < B; ++b) {
+      // This building's ratios, per group and floor (each sized for its group at once).
+      std::vector<std::vector<double>> values(G * F);
+      for (std::size_t k = 0; k < G; ++k)
+        for (std::size_t fl = 0; fl < F; ++fl)
+          values[k * F + fl].reserve(std::size_t(g.samples[k] - g.failed[k]));
+      for (hsize_t row = 0; row < n; row += kBlockRows) {
+        const hsize_t count = std::min<hsize_t>(kBlockRows, n - row);
+        pd.rows(row, count, b, 1, bp);
+        fd.rows(row, count, b, 1, bf);
+        for (hsize_t i = 0; i < count; ++i) {
+          const std::size_t s = std::size_t(row + i);
+          const int k = g.of_sample[s];
+          if (!ok[s] || k < 0) continue;  // failed samples are counted, not used
+          for (std::size_t f = 0; f < F; ++f) {
+            const double p = bp[i * F + f], q = bf[i * F + f];
+            if (std::isfinite(p) && std::isfinite(q) && q > 0.0)
+              values[std::size_t(k) * F + f].push_back(p / q);
+          }
+        }
+      }
+      for (std::size_t k = 0; k < G; ++k)
+        for (std::size_t f = 0; f < F; ++f) {
+          std::vector<double>& v = values[k * F + f];
+          const ValueSummary s = summarize(v);
+          const std::size_t at = t.at(k, b, f);
+          out.count[at] = s.count;
+          out.mean[at] = s.mean;
+          out.median[at] = s.median;
+          out.p16[at] = s.p16;
+          out.p84[at] = s.p84;
+          out.fraction_above_1[at] = s.fraction_above_1;
+          std::vector<double>().swap(v);
+        }
+    }
+    t.measures.push_back(std::move(out));
+  }
+
+  // Contacts per group, pair and level.
+  const Dataset id_imp(file, "/response/impacts", path),
+      id_force(file, "/response/peak_force", path);
+  if (id_imp.dims().size() != 3 || id_imp.dims() != id_force.dims() || id_imp.dims()[0] != n)
+    throw InputError(path + ": /response/impacts and /response/peak_force must both have the " +
+                     "shape [samples, pairs, levels]");
+  t.pairs = id_imp.dims()[1];
+  t.levels = id_imp.dims()[2];
+  const std::size_t P = t.pairs, L = t.levels, S = G * P * L;
+  t.contact_count.assign(S, 0);
+  std::vector<long> pounded(S, 0);
+  std::vector<std::vector<double>> force(S), force_pounded(S);
+  for (std::size_t at = 0; at < S; ++at)
+    force[at].reserve(std::size_t(g.samples[at / (P * L)] - g.failed[at / (P * L)]));
+  for (hsize_t row = 0; row < n; row += kBlockRows) {
+    const hsize_t count = std::min<hsize_t>(kBlockRows, n - row);
+    id_imp.rows(row, count, 0, P, bp);
+    id_force.rows(row, count, 0, P, bf);
+    for (hsize_t i = 0; i < count; ++i) {
+      const std::size_t s = std::size_t(row + i);
+      const int k = g.of_sample[s];
+      if (!ok[s] || k < 0) continue;
+      for (std::size_t j = 0; j < P * L; ++j) {
+        const double imp = bp[i * P * L + j], fo = bf[i * P * L + j];
+        if (!std::isfinite(imp)) continue;  // no such level
+        const std::size_t at = std::size_t(k) * P * L + j;
+        ++t.contact_count[at];
+        pounded[at] += imp > 0.0;
+        if (std::isfinite(fo)) {
+          force[at].push_back(fo);
+          if (imp > 0.0) force_pounded[at].push_back(fo);
+        }
+      }
+    }
+  }
+  const double nan = std::nan("");
+  for (std::size_t at = 0; at < S; ++at) {
+    t.pounded_fraction.push_back(
+        t.contact_count[at] ? double(pounded[at]) / double(t.contact_count[at]) : nan);
+    t.force_median.push_back(summarize(force[at]).median);
+    t.force_median_pounded.push_back(summarize(force_pounded[at]).median);
+  }
+  return t;
+}
+
+void write_amplification(hid_t file, const AmplificationTable& t) {
+  const std::string root = "/amplification";
+  h5::ensure_group(file, root);
+  h5::attribute(file, root, "design", t.stripes ? "stripes" : "bins");
+  h5::attribute(file, root, "failed", double(t.failed_total));
+  h5::attribute(file, root, "quantiles",
+                "linear interpolation between order statistics (Hyndman & Fan 1996, type 7)");
+  h5::attribute(file, root, "definition",
+                "amplification = peak with pounding / peak without pounding of each floor "
+                "(drift: of the storey below it), samples with a finite, positive free value; "
+                "failed samples are counted in 'failed', not used");
+  const hsize_t G = t.groups;
+  write_doubles(file, root + "/im", t.im, {G}, "m/s^2");
+  write_doubles(file, root + "/im_lo", t.im_lo, {G}, "m/s^2");
+  write_doubles(file, root + "/im_hi", t.im_hi, {G}, "m/s^2");
+  write_longs(file, root + "/samples", t.samples, {G});
+  write_longs(file, root + "/failed", t.failed, {G});
+  const std::vector<hsize_t> gbf = {G, t.buildings, t.floors}, gpl = {G, t.pairs, t.levels};
+  for (const auto& m : t.measures) {
+    const std::string p = root + "/" + m.name;
+    write_longs(file, p + "/count", m.count, gbf);
+    write_doubles(file, p + "/mean", m.mean, gbf, "-");
+    write_doubles(file, p + "/median", m.median, gbf, "-");
+    write_doubles(file, p + "/p16", m.p16, gbf, "-");
+    write_doubles(file, p + "/p84", m.p84, gbf, "-");
+    write_doubles(file, p + "/fraction_above_1", m.fraction_above_1, gbf, "-");
+  }
+  write_longs(file, root + "/contact/count", t.contact_count, gpl);
+  write_doubles(file, root + "/contact/pounded_fraction", t.pounded_fraction, gpl, "-");
+  write_doubles(file, root + "/contact/force_median", t.force_median, gpl, "N");
+  write_doubles(file, root + "/contact/force_median_pounded", t.force_median_pounded, gpl, "N");
+}
+
+bool read_amplification(hid_t file, const std::string& path, AmplificationTable* t) {
+  if (H5Lexists(file, "/amplification", H5P_DEFAULT) <= 0) return false;
+  std::string design;
+  {
+    const hid_t a = H5Aopen_by_name(file, "/amplification", "design", H5P_DEFAULT, H5P_DEFAULT);
+    if (a >= 0) {
+      const hid_t ty = H5Aget_type(a);
+      const hid_t mem = H5Tcopy(H5T_C_S1);
+      H5Tset_size(mem, H5T_VARIABLE);
+      H5Tset_cset(mem, H5Tget_cset(ty));
+      char* s = nullptr;
+      if (H5Aread(a, mem, &s) >= 0 && s) design = s;
+      H5free_memory(s);
+      H5Tclose(mem);
+      H5Tclose(ty);
+      H5Aclose(a);
+    }
+    const hid_t b = H5Aopen_by_name(file, "/amplification", "failed", H5P_DEFAULT, H5P_DEFAULT);
+    if (b >= 0) {
+      double x = 0.0;
+      H5Aread(b, H5T_NATIVE_DOUBLE, &x);
+      t->failed_total = long(x);
+      H5Aclose(b);
+    }
+  }
+  t->stripes = design != "bins";
+  const std::string root = "/amplification";
+  t->im = Dataset(file, root + "/im", path).all<double>(H5T_NATIVE_DOUBLE);
+  t->im_lo = Dataset(file, root + "/im_lo", path).all<double>(H5T_NATIVE_DOUBLE);
+  t->im_hi = Dataset(file, root + "/im_hi", path).all<double>(H5T_NATIVE_DOUBLE);
+  t->samples = Dataset(file, root + "/samples", path).all<long>(H5T_NATIVE_LONG);
+  t->failed = Dataset(file, root + "/failed", path).all<long>(H5T_NATIVE_LONG);
+  t->groups = t->im.size();
+  // A 3-D dataset read whole (it is small: groups x buildings x floors).
+  auto whole = [&](const std::string& name, hid_t type, void* out, std::vector<hsize_t>* dims) {
+    const Dataset d(file, name, path);
+    if (d.dims().size() != 3) throw InputError(path + ": " + name + " is not [G, a, b]");
+    *dims = d.dims();
+    const hid_t ds = H5Dopen2(file, name.c_str(), H5P_DEFAULT);
+    const herr_t st = H5Dread(ds, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, out);
+    H5Dclose(ds);
+    if (st < 0) throw InputError(path + ": reading " + name + " failed");
+  };
+  auto sized = [](const std::vector<hsize_t>& d) { return std::size_t(d[0] * d[1] * d[2]); };
+  t->measures.clear();
+  for (const Measure& m : kMeasures) {
+    AmplificationMeasure a;
+    a.name = m.name;
+    const std::string p = root + "/" + m.name;
+    std::vector<hsize_t> dims;
+    {
+      const Dataset d(file, p + "/count", path);
+      dims = d.dims();
+    }
+    if (dims.size() != 3) throw InputError(path + ": " + p + "/count is not [G, B, F]");
+    t->buildings = dims[1];
+    t->floors = dims[2];
+    a.count.resize(sized(dims));
+    whole(p + "/count", H5T_NATIVE_LONG, a.count.data(), &dims);
+    for (auto [v, name] : {std::pair{&a.mean, "/mean"},
+                           {&a.median, "/median"},
+                           {&a.p16, "/p16"},
+                           {&a.p84, "/p84"},
+                           {&a.fraction_above_1, "/fraction_above_1"}}) {
+      v->resize(sized(dims));
+      whole(p + name, H5T_NATIVE_DOUBLE, v->data(), &dims);
+    }
+    t->measures.push_back(std::move(a));
+  }
+  std::vector<hsize_t> dims;
+  {
+    const Dataset d(file, root + "/contact/count", path);
+    dims = d.dims();
+  }
+  if (dims.size() != 3) throw InputError(path + ": " + root + "/contact/count is not [G, P, L]");
+  t->pairs = dims[1];
+  t->levels = dims[2];
+  t->contact_count.resize(sized(dims));
+  whole(root + "/contact/count", H5T_NATIVE_LONG, t->contact_count.data(), &dims);
+  for (auto [v, name] : {std::pair{&t->pounded_fraction, "/contact/pounded_fraction"},
+                         {&t->force_median, "/contact/force_median"},
+                         {&t->force_median_pounded, "/contact/force_median_pounded"}}) {
+    v->resize(sized(dims));
+    whole(root + name, H5T_NATIVE_DOUBLE, v->data(), &dims);
+  }
+  return true;
+}
+
+}  // namespace pound

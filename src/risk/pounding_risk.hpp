@@ -1,0 +1,123 @@
+#pragma once
+// Pounding risk of a campaign at every gap (docs/risk.md). Before its first contact a pounding
+// run is the free run, so a pair with the at-rest gap g (the same at each of its levels)
+// pounds in a sample exactly when the free-run approach of one of its levels exceeds g
+// (/response/approach_free). For every gap of a grid this gives one pounding outcome per
+// sample, fitted as pound fragility fits (lognormal, maximum likelihood, Baker 2015:
+// fragility/lognormal_fit.hpp), and integrated over the site's hazard curve into the mean
+// annual frequency of pounding nu(g) (risk_integral.hpp); then the probability in T years,
+// the smallest gap whose probability is at most a target (with a bootstrap band:
+// fragility/bootstrap.hpp), the code rules' gaps (code_rules.hpp) and their probabilities,
+// and the mean annual frequencies of the damage limits with and without pounding. Pure: data
+// in, numbers out.
+#include <string>
+#include <vector>
+
+#include "fragility/bootstrap.hpp"
+#include "fragility/campaign_reader.hpp"
+#include "fragility/fragility_analysis.hpp"
+#include "fragility/lognormal_fit.hpp"
+#include "risk/code_rules.hpp"
+#include "risk/hazard_curve.hpp"
+
+namespace pound {
+
+struct RiskSettings {
+  double years = 50.0;               ///< exposure time T [yr]
+  double target_probability = 0.02;  ///< of pounding in T years, in (0, 1) [-]
+  std::vector<double> gaps;          ///< gap grid [m], increasing; empty: the default grid
+  int gap_points = 40;               ///< default grid: 0 to the largest approach [-]
+  double design_im = 0.0;            ///< of the code rules [m/s^2]; 0: the 475-year intensity
+  BootstrapSettings bootstrap;       ///< replicates and seed of the bands
+  double confidence = 0.90;          ///< of the bands [-]
+};
+
+/// First mode of a building: period [s] and damping ratio [-] (for the DDC correlation).
+struct BuildingMode {
+  double period_s = 0.0;
+  double damping = 0.05;
+};
+
+/// The first modes of the study's buildings with their nominal (not sampled) properties, from
+/// the study text stored in the campaign file.
+std::vector<BuildingMode> study_first_modes(const CampaignData& c);
+
+/// Throws InputError (naming the hazard file) when its measure is not the campaign's: PGA
+/// against PGA, sa(T) against Sa(T1) with T within 1 % of the campaign's im_period_s.
+void check_hazard_measure(const CampaignData& c, const HazardCurve& h);
+
+/// Pounding of one pair at one gap.
+struct GapEstimate {
+  double gap = 0.0;          ///< [m]
+  long analyses = 0;         ///< samples with a free-run approach
+  long pounding = 0;         ///< of them, samples whose approach exceeds the gap
+  LognormalFit fit;          ///< P(pounding | IM) (Baker 2015)
+  double maf = 0.0;          ///< nu [1/yr]; NaN without a finite fit
+  double probability = 0.0;  ///< in T years; NaN without a finite fit
+  /// Share of nu from intensities outside the campaign's (below its lowest stripe or above its
+  /// highest): there the fitted fragility is extrapolated [-].
+  double outside_share = 0.0;
+  Interval probability_band;          ///< bootstrap percentile band
+  std::vector<Observation> observed;  ///< per stripe (or IM bin) [m/s^2], n, pounding
+};
+
+/// How the gap for the target was found.
+enum class TargetStatus {
+  found,        ///< bracketed by the grid and refined on the samples' approaches
+  at_most,      ///< the smallest gap with an estimate already meets the target: an upper bound
+  not_reached,  ///< no gap with an estimate meets it
+  no_estimate   ///< no gap of the grid has a finite fit
+};
+const char* to_string(TargetStatus s);
+
+struct CodeRuleResult {
+  SeparationRule rule = SeparationRule::abs;
+  double gap = 0.0;      ///< the largest over the pair's levels [m]
+  int level = 0;         ///< the level that gives it (1-based)
+  GapEstimate estimate;  ///< pounding at that gap
+};
+
+struct PairRisk {
+  std::size_t pair = 0;           ///< 0-based: buildings pair and pair + 1
+  std::vector<GapEstimate> grid;  ///< increasing gaps
+  double gap_for_target = 0.0;    ///< [m]; NaN unless found or at_most
+  TargetStatus target_status = TargetStatus::no_estimate;
+  Interval gap_band;  ///< bootstrap band of gap_for_target [m]
+  int bootstrap_replicates = 0;
+  // Code rules at the design intensity.
+  bool rules_computed = false;
+  std::string rules_note;                         ///< why not, when not computed
+  std::vector<double> median_left, median_right;  ///< per level: median free peak disp [m]
+  double rho = 0.0;                   ///< Der Kiureghian correlation of the first modes [-]
+  std::vector<CodeRuleResult> rules;  ///< abs, srss, ddc
+};
+
+/// A damage limit's mean annual frequency of exceedance with and without pounding.
+struct DamageRisk {
+  std::size_t building = 0;
+  Edp edp = Edp::drift;
+  double limit = 0.0;                         ///< [unit_of(edp)]
+  LognormalFit pounding, free;                ///< free: no_data for the force
+  double maf_pounding = 0.0, maf_free = 0.0;  ///< [1/yr]; NaN without a finite fit
+  double ratio = 0.0;                         ///< maf_pounding / maf_free; NaN when either is
+  /// Share of each nu from intensities outside the campaign's (GapEstimate::outside_share).
+  double outside_pounding = 0.0, outside_free = 0.0;
+};
+
+struct RiskReport {
+  std::size_t samples = 0, failed = 0, used = 0;
+  bool stripes = true;
+  std::size_t groups = 0;        ///< stripes or IM bins
+  double design_im = 0.0;        ///< [m/s^2]
+  bool design_im_given = false;  ///< false: the hazard's 475-year intensity
+  std::vector<PairRisk> pairs;
+  std::vector<DamageRisk> damage;
+  std::vector<std::string> notes;  ///< what could not be estimated, and why
+};
+
+/// Throws InputError when the file has no /response/approach_free, no sample succeeded, the
+/// settings are out of range, or a given design intensity lies outside the campaign's.
+RiskReport analyse_risk(const CampaignData& c, const HazardCurve& h, const RiskSettings& s,
+                        const std::vector<BuildingMode>& modes, const FragilitySettings& limits);
+
+}  // namespace pound

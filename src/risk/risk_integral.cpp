@@ -1,0 +1,40 @@
+#include "risk/risk_integral.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "fragility/lognormal_fit.hpp"
+
+namespace pound {
+namespace {
+
+// Phi(z2) - Phi(z1) for z1 <= z2 without cancellation in the upper tail.
+double normal_mass(double z1, double z2) {
+  if (!(z2 > z1)) return 0.0;
+  if (z1 > 0.0) return std::exp(log_normal_cdf(-z1)) - std::exp(log_normal_cdf(-z2));
+  return std::exp(log_normal_cdf(z2)) - std::exp(log_normal_cdf(z1));
+}
+
+}  // namespace
+
+double mean_annual_frequency(const HazardCurve& h, double theta, double beta, double x_lo,
+                             double x_hi) {
+  const double mu = std::log(theta);
+  const double u_lo = x_lo > 0.0 ? std::log(x_lo) : -std::numeric_limits<double>::infinity();
+  const double u_hi = std::log(x_hi);
+  double nu = 0.0;
+  for (const auto& s : h.segments()) {
+    // Closed form of the segment (header): the lognormal density shifted by b beta^2.
+    const double shift = mu + s.b * beta * beta;
+    const double lo = std::max(s.lo, u_lo), hi = std::min(s.hi, u_hi);
+    const double mass = normal_mass((lo - shift) / beta, (hi - shift) / beta);
+    if (mass > 0.0) nu += std::exp(s.a + s.b * mu + 0.5 * s.b * s.b * beta * beta) * mass;
+  }
+  return nu;
+}
+
+double probability_in_years(double maf, double years) {
+  return -std::expm1(-maf * years);
+}
+
+}  // namespace pound

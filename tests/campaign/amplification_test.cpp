@@ -1,0 +1,157 @@
+// Amplification statistics: the percentiles of a known sample, the intensity groups (stripes by
+// sample id, equal-count bins), and /amplification computed from a made-up result file whose
+// ratios are known, failed samples counted and not used, written and read back.
+#include "campaign/amplification.hpp"
+
+#include <gtest/gtest.h>
+#include <hdf5.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "../support/scratch_dir.hpp"
+#include "campaign/amplification_file.hpp"
+#include "io/h5.hpp"
+
+namespace pound {
+namespace {
+
+TEST(Amplification, SummaryOfAKnownSample) {
+  std::vector<double> v;
+  for (int i = 101; i >= 1; --i) v.push_back(i);  // 101 .. 1: order does not matter
+  const ValueSummary s = summarize(v);
+  EXPECT_EQ(s.count, 101);
+  EXPECT_DOUBLE_EQ(s.mean, 51.0);
+  EXPECT_DOUBLE_EQ(s.median, 51.0);
+  EXPECT_DOUBLE_EQ(s.p16, 17.0);  // 1 + 0.16 x 100 (type 7)
+  EXPECT_DOUBLE_EQ(s.p84, 85.0);
+  EXPECT_DOUBLE_EQ(s.fraction_above_1, 100.0 / 101.0);  // 1 itself is not above 1
+  std::vector<double> two = {1.0, 2.0};
+  EXPECT_DOUBLE_EQ(summarize(two).p16, 1.16);  // interpolated between the two
+  std::vector<double> none;
+  EXPECT_EQ(summarize(none).count, 0);
+  EXPECT_TRUE(std::isnan(summarize(none).median));
+}
+
+TEST(Amplification, StripesBySampleIdAndBinsOfEqualCount) {
+  // A part file of samples 7 .. 18 of a three-stripe campaign: sample i is on stripe i mod 3.
+  std::vector<long> id;
+  std::vector<char> ok;
+  std::vector<double> im;
+  for (long i = 7; i < 19; ++i) {
+    id.push_back(i);
+    ok.push_back(i != 10);  // sample 10 failed (no IM)
+    im.push_back(i == 10 ? 0.0 : double(i % 3 + 1) * (1.0 + 1e-9 * double(i)));
+  }
+  const IntensityGroups s = intensity_groups({1.0, 2.0, 3.0}, id, ok, im);
+  ASSERT_TRUE(s.stripes);
+  EXPECT_EQ(s.samples, (std::vector<long>{4, 4, 4}));
+  EXPECT_EQ(s.failed, (std::vector<long>{0, 1, 0}));  // 10 mod 3 = 1
+  EXPECT_EQ(s.failed_total, 1);
+  EXPECT_EQ(s.of_sample[3], 1);
+  EXPECT_NEAR(s.im[2], 3.0, 1e-7);
+  // A sampled scale: 100 samples in 100 / 20 = 5 bins of 20, at their geometric mean IM.
+  std::vector<long> ids(100);
+  std::vector<char> oks(100, 1);
+  std::vector<double> ims(100);
+  for (int i = 0; i < 100; ++i) ids[i] = i, ims[i] = std::exp(0.01 * ((i * 37) % 100));
+  const IntensityGroups b = intensity_groups({}, ids, oks, ims);
+  ASSERT_FALSE(b.stripes);
+  ASSERT_EQ(b.im.size(), 5u);
+  for (int k = 0; k < 5; ++k) {
+    EXPECT_EQ(b.samples[k], 20);
+    EXPECT_NEAR(b.im[k], std::exp(0.01 * (20 * k + 9.5)), 1e-12) << k;  // mean of ln
+    EXPECT_NEAR(b.im_lo[k], std::exp(0.01 * 20 * k), 1e-12);
+  }
+}
+
+// A dataset of doubles [n, a, b].
+void put(hid_t f, const std::string& name, const std::vector<double>& v, hsize_t n, hsize_t a,
+         hsize_t b) {
+  h5::ensure_group(f, "/response");
+  const hsize_t dims[3] = {n, a, b};
+  const hid_t sp = H5Screate_simple(3, dims, nullptr);
+  const hid_t d =
+      H5Dcreate2(f, name.c_str(), H5T_NATIVE_DOUBLE, sp, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  H5Dwrite(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data());
+  H5Dclose(d);
+  H5Sclose(sp);
+}
+
+TEST(Amplification, FromAResultFileWithKnownRatios) {
+  // 30 samples on two stripes; building 1 has two floors, building 2 one (NaN above). Sample s
+  // has the ratio 1 + 0.01 s at every floor of building 1 and 0.9 at building 2; sample 5
+  // failed. Contact at sample s when s is even, with the force 1000 s N.
+  const std::string path = test::process_scratch_dir() / "amp.h5";
+  const hsize_t n = 30;
+  {
+    h5::File file(path);
+    const hid_t f = file.id();
+    std::vector<int> status(n, 0);
+    status[5] = 1;
+    std::vector<double> im(n), id(n);
+    for (hsize_t s = 0; s < n; ++s) im[s] = s % 2 ? 4.0 : 2.0, id[s] = double(s);
+    h5::write(f, "/samples/status", status);
+    h5::write(f, "/samples/im", im, n);
+    h5::write(f, "/samples/id", id, n);
+    h5::attribute(f, "/", "im_levels_mps2", "2.000000, 4.000000");
+    const double nan = std::nan("");
+    for (const char* m : {"disp", "drift", "accel"}) {
+      std::vector<double> p(n * 4), q(n * 4);
+      for (hsize_t s = 0; s < n; ++s) {
+        const bool failed = s == 5;
+        const double free[4] = {0.01, 0.02, 0.03, nan};
+        const double ratio[4] = {1 + 0.01 * double(s), 1 + 0.01 * double(s), 0.9, nan};
+        for (int k = 0; k < 4; ++k) {
+          q[s * 4 + k] = failed ? nan : free[k];
+          p[s * 4 + k] = failed ? nan : free[k] * ratio[k];
+        }
+      }
+      put(f, std::string("/response/peak_") + m + "_pounding", p, n, 2, 2);
+      put(f, std::string("/response/peak_") + m + "_free", q, n, 2, 2);
+    }
+    std::vector<double> impacts(n), force(n);
+    for (hsize_t s = 0; s < n; ++s) {
+      impacts[s] = s == 5 ? nan : s % 2 == 0 ? 2.0 : 0.0;
+      force[s] = s == 5 ? nan : s % 2 == 0 ? 1000.0 * double(s) : 0.0;
+    }
+    put(f, "/response/impacts", impacts, n, 1, 1);
+    put(f, "/response/peak_force", force, n, 1, 1);
+    const AmplificationTable t = compute_amplification(f, path);
+    write_amplification(f, t);
+  }
+  const hid_t f = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  AmplificationTable t;
+  ASSERT_TRUE(read_amplification(f, path, &t));
+  H5Fclose(f);
+  ASSERT_EQ(t.groups, 2u);
+  EXPECT_TRUE(t.stripes);
+  EXPECT_EQ(t.samples, (std::vector<long>{15, 15}));
+  EXPECT_EQ(t.failed, (std::vector<long>{0, 1}));
+  EXPECT_EQ(t.failed_total, 1);
+  ASSERT_EQ(t.measures.size(), 3u);
+  for (const auto& m : t.measures) {
+    // Stripe 0: even samples 0 .. 28, ratios 1.00 .. 1.28 (median 1.14, 14 of 15 above 1).
+    EXPECT_EQ(m.count[t.at(0, 0, 0)], 15) << m.name;
+    EXPECT_NEAR(m.median[t.at(0, 0, 1)], 1.14, 1e-12) << m.name;
+    EXPECT_NEAR(m.mean[t.at(0, 0, 0)], 1.14, 1e-12);
+    EXPECT_NEAR(m.p16[t.at(0, 0, 0)], 1.0 + 0.02 * 0.16 * 14, 1e-12);
+    EXPECT_NEAR(m.fraction_above_1[t.at(0, 0, 0)], 14.0 / 15.0, 1e-12);
+    // Stripe 1: odd samples without the failed sample 5.
+    EXPECT_EQ(m.count[t.at(1, 0, 0)], 14) << m.name;
+    EXPECT_NEAR(m.median[t.at(1, 1, 0)], 0.9, 1e-12);
+    EXPECT_EQ(m.fraction_above_1[t.at(1, 1, 0)], 0.0);
+    EXPECT_EQ(m.count[t.at(1, 1, 1)], 0);  // building 2 has no second floor
+    EXPECT_TRUE(std::isnan(m.median[t.at(1, 1, 1)]));
+  }
+  EXPECT_EQ(t.contact_count[t.site(0, 0, 0)], 15);
+  EXPECT_DOUBLE_EQ(t.pounded_fraction[t.site(0, 0, 0)], 1.0);
+  EXPECT_DOUBLE_EQ(t.pounded_fraction[t.site(1, 0, 0)], 0.0);
+  EXPECT_DOUBLE_EQ(t.force_median[t.site(0, 0, 0)], 14000.0);
+  EXPECT_DOUBLE_EQ(t.force_median[t.site(1, 0, 0)], 0.0);
+  EXPECT_TRUE(std::isnan(t.force_median_pounded[t.site(1, 0, 0)]));
+}
+
+}  // namespace
+}  // namespace pound

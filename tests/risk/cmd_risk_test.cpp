@@ -1,0 +1,159 @@
+// pound risk end to end on a small campaign made here: the JSON fields the issue lists, the
+// files, the campaign file byte for byte unchanged, and bad input: one line, exit 2, no file.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "../support/scratch_dir.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string& dir() {
+  return pound::test::process_scratch_dir().path();
+}
+
+int sh(const std::string& cmd) {
+  ::setenv("ASAN_OPTIONS", "detect_leaks=0", 0);  // Open MPI's components leak at exit
+  const int s = std::system(cmd.c_str());
+  return WIFEXITED(s) ? WEXITSTATUS(s) : -1;
+}
+
+std::string slurp(const std::string& path) {
+  std::ifstream f(path, std::ios::binary);
+  std::stringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
+
+// A 48-sample campaign of the smoke study (stripes 0.1-0.4 g), made once.
+const std::string& campaign() {
+  static const std::string out = [] {
+    const std::string o = dir() + "/run.h5";
+    EXPECT_EQ(sh(std::string(POUND_BINARY) + " campaign --config " + POUND_SOURCE_DIR +
+                 "/studies/campaign-smoke.ini --samples 48 --quiet --out " + o + " 2>" + dir() +
+                 "/campaign.log"),
+              0)
+        << slurp(dir() + "/campaign.log");
+    return o;
+  }();
+  return out;
+}
+
+// A power-law hazard, rate 1/475 at 0.3 g and slope 3, in the unit and measure of the header.
+std::string hazard(const std::string& name, const std::string& header = "pga [g]",
+                   double sign = 1.0, double slope = 3.0) {
+  const std::string path = dir() + "/" + name;
+  std::ofstream f(path);
+  f << "# a test curve\n" << header << ", annual_rate [1/yr]\n";
+  for (double x : {0.02, 0.05, 0.1, 0.2, 0.4, 0.8, 1.6})
+    f << x << ", " << sign * std::pow(x / 0.3, -slope) / 475.0 << "\n";
+  return path;
+}
+
+std::string risk(const std::string& args) {
+  return std::string(POUND_BINARY) + " risk --input " + campaign() + " " + args;
+}
+
+TEST(CmdRisk, JsonFieldsFilesAndUntouchedCampaign) {
+  const std::string before = slurp(campaign());
+  ASSERT_FALSE(before.empty());
+  const std::string out = dir() + "/risk", json = dir() + "/risk.json";
+  ASSERT_EQ(sh(risk("--hazard " + hazard("h.csv") + " --out " + out + " --replicates 50 --json > " +
+                    json + " 2>" + dir() + "/risk.log")),
+            0)
+      << slurp(dir() + "/risk.log");
+  EXPECT_EQ(slurp(campaign()), before);  // the campaign file is byte for byte the same
+  for (const char* f : {"risk_gaps.csv", "code_rules.csv", "damage_maf.csv", "risk.h5"})
+    EXPECT_TRUE(fs::exists(out + "/" + f)) << f;
+  for (const auto& e : fs::directory_iterator(out))
+    EXPECT_EQ(e.path().string().find(".tmp."), std::string::npos) << e.path();
+  // The fields of the issue, checked by Python's json module: years, target_probability, and
+  // per pair its number, the gap grid (40 gaps from 0), nu and the probability per gap (null
+  // where no finite fit), the gap for the target and its band (null or [lo, hi]), and the
+  // three code rules with their gaps and probabilities.
+  const std::string check =
+      "import json, sys\n"
+      "d = json.load(open(sys.argv[1]))\n"
+      "assert d['years'] == 50 and d['target_probability'] == 0.02, d\n"
+      "assert len(d['pairs']) == 1\n"
+      "p = d['pairs'][0]\n"
+      "assert p['pair'] == 1\n"
+      "g = p['gaps_m']\n"
+      "assert len(g) == 40 and g[0] == 0 and all(b > a for a, b in zip(g, g[1:]))\n"
+      "assert len(p['maf_pounding']) == 40 and len(p['probability_pounding']) == 40\n"
+      "for s, m, q in zip(p['status'], p['maf_pounding'], p['probability_pounding']):\n"
+      "    assert (s == 'ok') == (m is not None) == (q is not None), (s, m, q)\n"
+      "    assert q is None or 0 <= q <= 1\n"
+      "assert p['gap_for_target_m'] is None or p['gap_for_target_m'] >= 0\n"
+      "b = p['gap_for_target_band_m']\n"
+      "assert b is None or (len(b) == 2 and b[0] <= b[1])\n"
+      "assert [r['rule'] for r in p['code_rules']] == ['abs', 'srss', 'ddc']\n"
+      "r = {x['rule']: x for x in p['code_rules']}\n"
+      "assert r['abs']['gap_m'] > r['srss']['gap_m'] >= r['ddc']['gap_m'] > 0\n"
+      "for x in p['code_rules']:\n"
+      "    q = x['probability_pounding']\n"
+      "    assert q is None or 0 <= q <= 1\n"
+      "assert len(d['files']) == 4 and len(d['damage']) == 8\n";
+  std::ofstream(dir() + "/check.py") << check;
+  EXPECT_EQ(sh("/usr/bin/python3 " + dir() + "/check.py " + json + " 2>" + dir() + "/py.log"), 0)
+      << slurp(dir() + "/py.log") << slurp(json);
+  // The table is printed first without --json.
+  ASSERT_EQ(sh(risk("--hazard " + hazard("h.csv") + " --out " + out + " --replicates 20 > " +
+                    dir() + "/risk.txt 2>&1")),
+            0);
+  const std::string text = slurp(dir() + "/risk.txt");
+  EXPECT_LT(text.find("Gap needed for the target"), text.find("Code rules"));
+  EXPECT_LT(text.find("Code rules"), text.find("Pounding at each gap"));
+  EXPECT_NE(text.find("log-log"), std::string::npos);  // the rule beyond the ends is stated
+}
+
+TEST(CmdRisk, BadInputIsOneLineExitTwoAndNoFile) {
+  const struct {
+    std::string args;
+    const char* says;
+  } cases[] = {
+      {"--hazard " + hazard("rising.csv", "pga [g]", 1.0, -1.0), "must fall strictly"},
+      {"--hazard " + hazard("negative.csv", "pga [g]", -1.0), "finite number > 0"},
+      {"--hazard " + hazard("sa.csv", "sa(0.5) [g]"), "the campaign's intensity measure is PGA"},
+      {"--hazard " + hazard("unit.csv", "pga [gal]"), "valid: g, m/s2"},
+      {"--hazard " + hazard("h2.csv") + " --target-probability 1.5",
+       "valid: a probability in (0, 1)"},
+      {"--hazard " + hazard("h3.csv") + " --target-probability 0",
+       "valid: a probability in (0, 1)"},
+      {"--hazard " + dir() + "/missing.csv", "missing.csv"},
+      {"--hazard " + hazard("h4.csv") + " --gaps 0.02,0.01", "increasing gaps"},
+      {"--hazard " + hazard("h5.csv") + " --design-im 3", "outside the campaign's intensities"},
+      {"--hazard " + hazard("h6.csv") + " --years -5", "years"},
+      {"--hazard " + hazard("h7.csv") + " --no-such-option 1", "no-such-option"},
+  };
+  int k = 0;
+  for (const auto& c : cases) {
+    const std::string out = dir() + "/bad" + std::to_string(k++), log = out + ".log";
+    EXPECT_EQ(sh(risk(c.args + " --out " + out + " 2>" + log + " >/dev/null")), 2) << c.args;
+    const std::string m = slurp(log);
+    EXPECT_NE(m.find(c.says), std::string::npos) << c.args << ": " << m;
+    EXPECT_EQ(std::count(m.begin(), m.end(), '\n'), 1) << m;
+    EXPECT_FALSE(fs::exists(out)) << c.args;
+  }
+  // A campaign file without the approach (written before it existed) says so.
+  const std::string old = dir() + "/old.h5", log = dir() + "/old.log";
+  fs::copy_file(campaign(), old, fs::copy_options::overwrite_existing);
+  ASSERT_EQ(sh("/usr/bin/python3 -c \"import h5py; f = h5py.File('" + old +
+               "', 'a'); del f['response/approach_free']\""),
+            0);
+  EXPECT_EQ(sh(std::string(POUND_BINARY) + " risk --input " + old + " --hazard " +
+               hazard("h8.csv") + " --out " + dir() + "/old-risk 2>" + log),
+            2);
+  EXPECT_NE(slurp(log).find("approach_free"), std::string::npos) << slurp(log);
+  EXPECT_FALSE(fs::exists(dir() + "/old-risk"));
+}
+
+}  // namespace
