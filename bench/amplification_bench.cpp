@@ -2,7 +2,8 @@
 // result file of N samples laid out as the default study's (2 buildings of up to 5 floors, one
 // pair of 3 levels, 12 stripes, 1 % failed samples). The file is written in blocks, so the
 // process's peak resident memory before the statistics is that of the program itself; the
-// growth after them is the writer's. Usage: bench_amplification [N] [scratch folder]
+// growth after them is the writer's (bounded: about 35-40 MB whatever N, docs/campaign.md). Usage:
+// bench_amplification [N] [scratch folder]
 #include <hdf5.h>
 #include <sys/resource.h>
 

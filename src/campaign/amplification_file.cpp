@@ -11,6 +11,12 @@ namespace pound {
 namespace {
 
 constexpr hsize_t kBlockRows = 65536;  // rows read at a time
+// Values kept for quantiles in one pass over the response (32 MB), shared by its cells, and the
+// least a cell keeps; a cell with fewer values than it may keep has exact quantiles.
+constexpr std::size_t kQuantileValues = std::size_t(1) << 22;
+constexpr std::size_t kCellValues = 4096;
+// Successful samples' IMs kept for the edges of the IM bins of a sampled scale (8 MB).
+constexpr long kImValues = 1L << 20;
 
 struct Measure {
   const char* name;
@@ -49,6 +55,19 @@ class Dataset {
     if (!v.empty() && H5Dread(id_, mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) < 0)
       throw InputError("HDF5: reading " + name_ + " failed");
     return v;
+  }
+  // Rows [row, row + count) of a 1-D dataset, converted to T's native type.
+  template <class T>
+  void rows1(hsize_t row, hsize_t count, hid_t mem_type, std::vector<T>& out) const {
+    out.resize(std::size_t(count));
+    if (count == 0) return;
+    const hid_t fs = H5Dget_space(id_);
+    H5Sselect_hyperslab(fs, H5S_SELECT_SET, &row, nullptr, &count, nullptr);
+    const hid_t ms = H5Screate_simple(1, &count, nullptr);
+    const herr_t st = H5Dread(id_, mem_type, ms, fs, H5P_DEFAULT, out.data());
+    H5Sclose(ms);
+    H5Sclose(fs);
+    if (st < 0) throw InputError("HDF5: reading " + name_ + " failed");
   }
   // Rows [row, row + count) of a 3-D dataset [N, a, b], columns [a0, a0 + na) of its second
   // dimension, as doubles, row-major.
@@ -95,23 +114,86 @@ void write_longs(hid_t f, const std::string& name, const std::vector<long>& v,
   write_array(f, name, H5T_NATIVE_LONG, v.data(), std::move(dims));
 }
 
-}  // namespace
+// The sample table (/samples/id, status, im), read in blocks of rows.
+class SampleTable {
+ public:
+  SampleTable(hid_t file, const std::string& path)
+      : id_(file, "/samples/id", path),
+        status_(file, "/samples/status", path),
+        im_(file, "/samples/im", path) {
+    n_ = id_.dims().empty() ? 0 : id_.dims()[0];
+    for (const Dataset* d : {&id_, &status_, &im_})
+      if (d->dims().size() != 1 || d->dims()[0] != n_)
+        throw InputError(path + ": /samples/id, status and im differ in length");
+  }
+  hsize_t rows() const { return n_; }
+  // Rows [row, row + count).
+  void read(hsize_t row, hsize_t count) {
+    id_.rows1(row, count, H5T_NATIVE_LONG, id);
+    status_.rows1(row, count, H5T_NATIVE_INT, status);
+    im_.rows1(row, count, H5T_NATIVE_DOUBLE, im);
+  }
+  std::vector<long> id;
+  std::vector<int> status;
+  std::vector<double> im;
 
-AmplificationTable compute_amplification(hid_t file, const std::string& path) {
-  AmplificationTable t;
-  const auto id = Dataset(file, "/samples/id", path).all<long>(H5T_NATIVE_LONG);
-  const auto status = Dataset(file, "/samples/status", path).all<int>(H5T_NATIVE_INT);
-  const auto im = Dataset(file, "/samples/im", path).all<double>(H5T_NATIVE_DOUBLE);
-  const std::size_t n = id.size();
-  if (status.size() != n || im.size() != n)
-    throw InputError(path + ": /samples/id, status and im differ in length");
-  std::vector<char> ok(n);
-  for (std::size_t s = 0; s < n; ++s) ok[s] = status[s] == 0;
+ private:
+  Dataset id_, status_, im_;
+  hsize_t n_ = 0;
+};
+
+// How the file's samples fall into intensity groups (amplification.hpp), from streamed passes
+// over the sample table: with a sampled scale, the bins' edges come from the successful
+// samples' IMs, or from every m-th of them when there are more than kImValues.
+IntensityGroups group_samples(hid_t file, const std::string& path, SampleTable& table,
+                              IntensityGrouping* grouping) {
   const std::string levels_text = h5::root_attribute_text(file, "im_levels_mps2");
   const std::vector<double> levels =
       levels_text.empty() ? std::vector<double>{}
                           : parse_number_list(levels_text, path + ": attribute im_levels_mps2");
-  const IntensityGroups g = intensity_groups(levels, id, ok, im);
+  const hsize_t n = table.rows();
+  if (!levels.empty()) {
+    *grouping = stripe_grouping(levels.size());
+  } else {
+    long n_ok = 0;
+    for (hsize_t row = 0; row < n; row += kBlockRows) {
+      table.read(row, std::min<hsize_t>(kBlockRows, n - row));
+      for (int st : table.status) n_ok += st == 0;
+    }
+    const long stride = std::max<long>(1, (n_ok + kImValues - 1) / kImValues);
+    std::vector<double> sorted;
+    long seen = 0;
+    for (hsize_t row = 0; row < n; row += kBlockRows) {
+      table.read(row, std::min<hsize_t>(kBlockRows, n - row));
+      for (std::size_t i = 0; i < table.status.size(); ++i)
+        if (table.status[i] == 0 && seen++ % stride == 0) sorted.push_back(table.im[i]);
+    }
+    std::sort(sorted.begin(), sorted.end());
+    *grouping = bin_grouping(sorted, n_ok);
+  }
+  GroupTally tally(*grouping);
+  for (hsize_t row = 0; row < n; row += kBlockRows) {
+    table.read(row, std::min<hsize_t>(kBlockRows, n - row));
+    for (std::size_t i = 0; i < table.id.size(); ++i)
+      tally.add(table.id[i], table.status[i] == 0, table.im[i]);
+  }
+  return tally.result(levels);
+}
+
+// Values a statistics cell keeps for its quantiles: the budget of one pass (kQuantileValues)
+// shared by its cells, at least kCellValues each.
+std::size_t cell_capacity(std::size_t cells) {
+  return std::max(kCellValues, kQuantileValues / std::max<std::size_t>(1, cells));
+}
+
+}  // namespace
+
+AmplificationTable compute_amplification(hid_t file, const std::string& path) {
+  AmplificationTable t;
+  SampleTable table(file, path);
+  const hsize_t n = table.rows();
+  IntensityGrouping grouping;
+  const IntensityGroups g = group_samples(file, path, table, &grouping);
   t.stripes = g.stripes;
   t.groups = g.im.size();
   t.im = g.im;
@@ -121,6 +203,7 @@ AmplificationTable compute_amplification(hid_t file, const std::string& path) {
   t.failed = g.failed;
   t.failed_total = g.failed_total;
   const std::size_t G = t.groups;
+  auto successful = [&](std::size_t k) { return g.samples[k] - g.failed[k]; };
 
   std::vector<double> bp, bf;
   for (const Measure& m : kMeasures) {
@@ -137,30 +220,30 @@ AmplificationTable compute_amplification(hid_t file, const std::string& path) {
     for (auto* v : {&out.mean, &out.median, &out.p16, &out.p84, &out.fraction_above_1})
       v->assign(G * B * F, 0.0);
     for (std::size_t b = 0; b < B; ++b) {
-      // This building's ratios, per group and floor (each sized for its group at once).
-      std::vector<std::vector<double>> values(G * F);
+      // This building's ratios, per group and floor.
+      std::vector<CellValues> cells;
       for (std::size_t k = 0; k < G; ++k)
         for (std::size_t fl = 0; fl < F; ++fl)
-          values[k * F + fl].reserve(std::size_t(g.samples[k] - g.failed[k]));
+          cells.emplace_back(successful(k), cell_capacity(G * F));
       for (hsize_t row = 0; row < n; row += kBlockRows) {
         const hsize_t count = std::min<hsize_t>(kBlockRows, n - row);
+        table.read(row, count);
         pd.rows(row, count, b, 1, bp);
         fd.rows(row, count, b, 1, bf);
         for (hsize_t i = 0; i < count; ++i) {
-          const std::size_t s = std::size_t(row + i);
-          const int k = g.of_sample[s];
-          if (!ok[s] || k < 0) continue;  // failed samples are counted, not used
+          const bool ok = table.status[i] == 0;
+          const int k = grouping.group(table.id[i], ok, table.im[i]);
+          if (!ok || k < 0) continue;  // failed samples are counted, not used
           for (std::size_t f = 0; f < F; ++f) {
             const double p = bp[i * F + f], q = bf[i * F + f];
             if (std::isfinite(p) && std::isfinite(q) && q > 0.0)
-              values[std::size_t(k) * F + f].push_back(p / q);
+              cells[std::size_t(k) * F + f].add(p / q);
           }
         }
       }
       for (std::size_t k = 0; k < G; ++k)
         for (std::size_t f = 0; f < F; ++f) {
-          std::vector<double>& v = values[k * F + f];
-          const ValueSummary s = summarize(v);
+          const ValueSummary s = cells[k * F + f].summary();
           const std::size_t at = t.at(k, b, f);
           out.count[at] = s.count;
           out.mean[at] = s.mean;
@@ -168,7 +251,6 @@ AmplificationTable compute_amplification(hid_t file, const std::string& path) {
           out.p16[at] = s.p16;
           out.p84[at] = s.p84;
           out.fraction_above_1[at] = s.fraction_above_1;
-          std::vector<double>().swap(v);
         }
     }
     t.measures.push_back(std::move(out));
@@ -185,17 +267,20 @@ AmplificationTable compute_amplification(hid_t file, const std::string& path) {
   const std::size_t P = t.pairs, L = t.levels, S = G * P * L;
   t.contact_count.assign(S, 0);
   std::vector<long> pounded(S, 0);
-  std::vector<std::vector<double>> force(S), force_pounded(S);
-  for (std::size_t at = 0; at < S; ++at)
-    force[at].reserve(std::size_t(g.samples[at / (P * L)] - g.failed[at / (P * L)]));
+  std::vector<CellValues> force, force_pounded;
+  for (std::size_t at = 0; at < S; ++at) {
+    force.emplace_back(successful(at / (P * L)), cell_capacity(2 * S));
+    force_pounded.emplace_back(successful(at / (P * L)), cell_capacity(2 * S));
+  }
   for (hsize_t row = 0; row < n; row += kBlockRows) {
     const hsize_t count = std::min<hsize_t>(kBlockRows, n - row);
+    table.read(row, count);
     id_imp.rows(row, count, 0, P, bp);
     id_force.rows(row, count, 0, P, bf);
     for (hsize_t i = 0; i < count; ++i) {
-      const std::size_t s = std::size_t(row + i);
-      const int k = g.of_sample[s];
-      if (!ok[s] || k < 0) continue;
+      const bool ok = table.status[i] == 0;
+      const int k = grouping.group(table.id[i], ok, table.im[i]);
+      if (!ok || k < 0) continue;
       for (std::size_t j = 0; j < P * L; ++j) {
         const double imp = bp[i * P * L + j], fo = bf[i * P * L + j];
         if (!std::isfinite(imp)) continue;  // no such level
@@ -203,8 +288,8 @@ AmplificationTable compute_amplification(hid_t file, const std::string& path) {
         ++t.contact_count[at];
         pounded[at] += imp > 0.0;
         if (std::isfinite(fo)) {
-          force[at].push_back(fo);
-          if (imp > 0.0) force_pounded[at].push_back(fo);
+          force[at].add(fo);
+          if (imp > 0.0) force_pounded[at].add(fo);
         }
       }
     }
@@ -213,8 +298,8 @@ AmplificationTable compute_amplification(hid_t file, const std::string& path) {
   for (std::size_t at = 0; at < S; ++at) {
     t.pounded_fraction.push_back(
         t.contact_count[at] ? double(pounded[at]) / double(t.contact_count[at]) : nan);
-    t.force_median.push_back(summarize(force[at]).median);
-    t.force_median_pounded.push_back(summarize(force_pounded[at]).median);
+    t.force_median.push_back(force[at].summary().median);
+    t.force_median_pounded.push_back(force_pounded[at].summary().median);
   }
   return t;
 }

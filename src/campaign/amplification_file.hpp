@@ -15,9 +15,11 @@
 //   /amplification/contact/force_median [G, P, L]        N, over those samples (0: no contact)
 //   /amplification/contact/force_median_pounded [G, P, L] N, over the samples that pounded
 //
-// Memory: the sample table (id, status, IM: 20 bytes a sample) and, one building at a time,
-// that building's ratios (8 bytes a sample and floor), read from the file in blocks of 65,536
-// rows; never the whole response arrays.
+// Memory does not grow with the sample count: every array is read in blocks of 65,536 rows;
+// the quantiles of a pass (one building's ratios, or the contacts) come from at most 2^22
+// values (32 MB) shared by its cells, at least 4,096 a cell: exact while a cell has no more,
+// else a systematic subsample (CellValues, amplification.hpp); the bins of a sampled scale
+// take their edges from at most 2^20 IMs. Count, mean and fraction above 1 use every value.
 #include <hdf5.h>
 
 #include <string>

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <hdf5.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -64,6 +65,70 @@ TEST(Amplification, StripesBySampleIdAndBinsOfEqualCount) {
     EXPECT_NEAR(b.im[k], std::exp(0.01 * (20 * k + 9.5)), 1e-12) << k;  // mean of ln
     EXPECT_NEAR(b.im_lo[k], std::exp(0.01 * 20 * k), 1e-12);
   }
+}
+
+TEST(Amplification, CellValuesAreExactUpToTheirCapacityAndASystematicSubsampleBeyond) {
+  // Up to the capacity: the summary of every value, as summarize gives it.
+  CellValues exact(7, 7);
+  std::vector<double> v = {1.3, 0.7, 1.0, 2.0, 1.1, 0.9, 1.5};
+  for (double x : v) exact.add(x);
+  EXPECT_TRUE(exact.exact());
+  const ValueSummary a = exact.summary(), b = summarize(v);
+  EXPECT_EQ(a.count, 7);
+  EXPECT_EQ(a.median, b.median);
+  EXPECT_EQ(a.p16, b.p16);
+  EXPECT_EQ(a.p84, b.p84);
+  EXPECT_DOUBLE_EQ(a.mean, b.mean);
+  EXPECT_DOUBLE_EQ(a.fraction_above_1, 4.0 / 7.0);
+  // 100,000 values of a shuffled uniform sequence on (0, 2), capacity 1000: every 100th value
+  // is kept. Count, mean and the fraction above 1 stay exact; the quantiles come from 1000
+  // values, within a few standard errors (sqrt(p (1 - p) / 1000) x 2 = 0.023 at p = 0.16)
+  // of the exact 0.32, 1 and 1.68.
+  const long n = 100000;
+  CellValues sub(n, 1000);
+  EXPECT_FALSE(sub.exact());
+  double sum = 0.0;
+  long above = 0;
+  for (long i = 0; i < n; ++i) {
+    const double x = 2.0 * (double((i * 7919) % n) + 0.5) / double(n);  // a permutation
+    sum += x;
+    above += x > 1.0;
+    sub.add(x);
+  }
+  const ValueSummary s = sub.summary();
+  EXPECT_EQ(s.count, n);
+  EXPECT_DOUBLE_EQ(s.mean, sum / double(n));
+  EXPECT_DOUBLE_EQ(s.fraction_above_1, double(above) / double(n));
+  EXPECT_NEAR(s.median, 1.0, 0.07);
+  EXPECT_NEAR(s.p16, 0.32, 0.07);
+  EXPECT_NEAR(s.p84, 1.68, 0.07);
+  EXPECT_NE(s.median, 1.0);  // not the exact quantile: a subsample was used
+  // No values: NaN statistics, count 0.
+  CellValues none(10, 4);
+  EXPECT_EQ(none.summary().count, 0);
+}
+
+TEST(Amplification, BinEdgesFromASubsampleOfTheIntensities) {
+  // 10,000 successful samples with IMs exp(u), u uniform on a grid: 10 bins. Edges from every
+  // 10th IM (a subsample of 1000) put 1000 +- 10 samples in each bin, and a failed sample in
+  // none.
+  std::vector<double> all;
+  for (int i = 0; i < 10000; ++i) all.push_back(std::exp(1e-4 * double((i * 7907) % 10000)));
+  std::vector<double> sub;
+  for (std::size_t i = 0; i < all.size(); i += 10) sub.push_back(all[i]);
+  std::sort(sub.begin(), sub.end());
+  const IntensityGrouping g = bin_grouping(sub, long(all.size()));
+  ASSERT_FALSE(g.stripes);
+  ASSERT_EQ(g.groups, 10u);
+  ASSERT_EQ(g.edges.size(), 9u);
+  GroupTally tally(g);
+  for (std::size_t i = 0; i < all.size(); ++i) tally.add(long(i), true, all[i]);
+  tally.add(10000, false, 0.0);
+  const IntensityGroups r = tally.result({});
+  for (std::size_t k = 0; k < 10; ++k) EXPECT_NEAR(double(r.samples[k]), 1000.0, 10.0) << k;
+  EXPECT_EQ(r.failed_total, 1);
+  EXPECT_EQ(g.group(5, false, 1.5), -1);
+  EXPECT_EQ(stripe_grouping(3).group(10, false, 0.0), 1);  // a stripe keeps its failed samples
 }
 
 // A dataset of doubles [n, a, b].
