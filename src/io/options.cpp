@@ -3,12 +3,12 @@
 #include <algorithm>
 #include <boost/program_options.hpp>
 #include <cctype>
-#include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
 
 #include "io/ini.hpp"
+#include "io/number.hpp"
 
 namespace po = boost::program_options;
 
@@ -61,11 +61,9 @@ std::string trim(const std::string& s) {
 
 double parse_number(const std::string& text, const std::string& where) {
   const std::string t = trim(text);
-  errno = 0;
-  char* end = nullptr;
-  const double v = std::strtod(t.c_str(), &end);
-  if (t.empty() || end != t.c_str() + t.size() || errno == ERANGE || !std::isfinite(v))
-    throw InputError(where + ": '" + t + "' is not a finite number");
+  double v = 0.0;
+  if (!read_decimal(t, &v))
+    throw InputError(where + ": '" + t + "' is not a finite number (valid: " + kNumberForm + ")");
   return v;
 }
 
