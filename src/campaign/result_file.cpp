@@ -168,6 +168,7 @@ void write_result_file(const std::string& path, const CampaignStudy& st,
   std::string names;
   for (const auto& b : st.row.buildings) names += (names.empty() ? "" : ", ") + b.name;
   h5::attribute(fid, "/", "building_names", names);
+  f.close();  // a failed write (disk full) is reported here, before the file is renamed
 }
 
 }  // namespace pound
