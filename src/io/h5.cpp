@@ -178,6 +178,9 @@ std::vector<std::string> group_members(hid_t file, const std::string& group) {
     for (hsize_t i = 0; i < info.nlinks; ++i) {
       const ssize_t len =
           H5Lget_name_by_idx(g, ".", H5_INDEX_NAME, H5_ITER_INC, i, nullptr, 0, H5P_DEFAULT);
+      // A damaged group (found by fuzz_campaign_file) may count links it cannot name: -1 made
+      // a string of 2^64 - 1 characters. The members before it are the ones there are.
+      if (len < 0) break;
       std::string name(std::size_t(len), '\0');
       H5Lget_name_by_idx(g, ".", H5_INDEX_NAME, H5_ITER_INC, i, name.data(), std::size_t(len) + 1,
                          H5P_DEFAULT);
