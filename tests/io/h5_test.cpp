@@ -46,5 +46,35 @@ TEST(H5, MergeOfTheDamagedFileEndsCleanly) {
   EXPECT_EQ(H5Fget_obj_count(H5F_OBJ_ALL, H5F_OBJ_ALL), 0);
 }
 
+// Found by fuzz_campaign_file: an attribute of several values was read into room for one (the
+// overflow happened inside HDF5's conversion, where the sanitizers do not look). Such an
+// attribute reads as absent ("").
+TEST(H5, AnAttributeOfSeveralValuesReadsAsAbsent) {
+  const std::string path = test::process_scratch_dir() / "attributes.h5";
+  {
+    h5::File f(path);
+    hsize_t three = 3;
+    const double v[3] = {4, 5, 6};
+    const hid_t s = H5Screate_simple(1, &three, nullptr);
+    const hid_t a = H5Acreate2(f.id(), "seed", H5T_NATIVE_DOUBLE, s, H5P_DEFAULT, H5P_DEFAULT);
+    H5Awrite(a, H5T_NATIVE_DOUBLE, v);
+    H5Aclose(a);
+    const hid_t str = H5Tcopy(H5T_C_S1);
+    H5Tset_size(str, 4);
+    const hid_t b = H5Acreate2(f.id(), "study", str, s, H5P_DEFAULT, H5P_DEFAULT);
+    H5Awrite(b, str, "abcdefghijkl");
+    H5Aclose(b);
+    H5Tclose(str);
+    H5Sclose(s);
+    h5::attribute(f.id(), "/", "one", 7.0);
+    f.close();
+  }
+  const hid_t f = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  EXPECT_EQ(h5::root_attribute_text(f, "seed"), "");
+  EXPECT_EQ(h5::root_attribute_text(f, "study"), "");
+  EXPECT_EQ(h5::root_attribute_text(f, "one"), "7");
+  H5Fclose(f);
+}
+
 }  // namespace
 }  // namespace pound
