@@ -3,12 +3,14 @@
 #include <hdf5.h>
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "core/error.hpp"
 #include "io/h5.hpp"
+#include "io/number.hpp"
 
 namespace pound {
 namespace {
@@ -93,14 +95,15 @@ void merge_campaign_parts(const std::vector<std::string>& paths, const std::stri
     const std::string sd = required_attribute(q.file, "seed", path);
     const std::string range = required_attribute(q.file, "sample_range", path);
     const double n = sample_count(q.file);
+    // LO:HI, two whole decimal numbers (io/number.hpp; "12abc" and "0x10" are refused).
     const auto colon = range.find(':');
-    try {
-      if (colon == std::string::npos) throw std::invalid_argument("no colon");
-      q.lo = std::stol(range.substr(0, colon));
-      q.hi = std::stol(range.substr(colon + 1));
-    } catch (const std::logic_error&) {  // std::stol's invalid_argument and out_of_range
+    double lo = -1, hi = -1;
+    if (colon == std::string::npos || !read_decimal(range.substr(0, colon), &lo) ||
+        !read_decimal(range.substr(colon + 1), &hi) || lo != std::floor(lo) ||
+        hi != std::floor(hi) || !(lo >= 0 && hi >= lo && hi <= 1e15))
       throw InputError(path + ": bad sample_range '" + range + "' (expected LO:HI)");
-    }
+    q.lo = static_cast<long>(lo);
+    q.hi = static_cast<long>(hi);
     if (parts.size() == 1) {
       study = st;
       seed = sd;

@@ -83,5 +83,16 @@ TEST(Merge, DamagedPartsAreRefusedWithOneLineAndEveryIdentifierClosed) {
   EXPECT_EQ(H5Fget_obj_count(H5F_OBJ_ALL, H5F_OBJ_ALL), 0);
 }
 
+TEST(Merge, ASampleRangeIsTwoWholeDecimalNumbers) {
+  for (const std::string bad : {"0x0:4", "0:4abc", " 0:4", "0:4.5", "4:0", "0:1e99"}) {
+    const std::string p = part("range.h5", 4, true);
+    const hid_t f = H5Fopen(p.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+    H5Adelete(f, "sample_range");
+    h5::attribute(f, "/", "sample_range", bad);
+    H5Fclose(f);
+    EXPECT_EQ(error_of(p), p + ": bad sample_range '" + bad + "' (expected LO:HI)") << bad;
+  }
+}
+
 }  // namespace
 }  // namespace pound
