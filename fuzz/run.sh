@@ -85,7 +85,7 @@ for h in "${harnesses[@]}"; do
     [[ $rc -eq 0 && $(ls "$w/artifacts" | wc -l) -eq $before ]] && break
     # The first stack frame that is neither the sanitizers', libFuzzer's nor the C library's.
     frame=$(sed -n '/ERROR: \(libFuzzer\|AddressSanitizer\|LeakSanitizer\)\|runtime error/,$p' "$w/last.log" |
-      grep -E '^ +#[0-9]+ ' | grep -vE '__sanitizer|fuzzer::|libc\.so|raise|abort|pthread_kill|__asan|__ubsan' |
+      grep -E '^ +#[0-9]+ ' | grep -vE '__sanitizer|__interceptor_|fuzzer::|libc\.so|raise|abort|pthread_kill|__asan|__ubsan' |
       head -n 1)
     if [[ $frame == *libhdf5* ]]; then
       hdf5_faults=$(( hdf5_faults + 1 ))
