@@ -194,6 +194,7 @@ CampaignSummary master(const CampaignStudy& st, const CampaignRunOptions& opt, M
                        int size) {
   int active = size - 1;
   CampaignSummary sum;
+  g_write_error.clear();  // of an earlier run in this process
   try {
     sum = master_loop(st, opt, comm, size, active);
   } catch (const WriteError& e) {  // the journal could not be created or opened
