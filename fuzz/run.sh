@@ -87,6 +87,16 @@ for h in "${harnesses[@]}"; do
     frame=$(sed -n '/ERROR: \(libFuzzer\|AddressSanitizer\|LeakSanitizer\)\|runtime error/,$p' "$w/last.log" |
       grep -E '^ +#[0-9]+ ' | grep -vE '__sanitizer|__interceptor_|fuzzer::|libc\.so|raise|abort|pthread_kill|__asan|__ubsan' |
       head -n 1)
+    # Out of memory: libFuzzer lists the live allocations; HDF5's when libhdf5 holds them and
+    # no frame of pound's code does (HDF5 itself grows to 10 GB reading some damaged files).
+    if grep -q 'ERROR: libFuzzer: out-of-memory' "$w/last.log"; then
+      frame=$(sed -n '/ERROR: libFuzzer: out-of-memory/,$p' "$w/last.log" | grep -E '^ +#[0-9]+ ')
+      if grep -q libhdf5 <<<"$frame" && ! grep -q 'in pound::' <<<"$frame"; then
+        frame="out of memory, live allocations in libhdf5"
+      else
+        frame="out of memory: $(grep 'in pound::' <<<"$frame" | head -n 1)"
+      fi
+    fi
     if [[ $frame == *libhdf5* ]]; then
       hdf5_faults=$(( hdf5_faults + 1 ))
       echo "   fault inside libhdf5 (input kept, harness goes on): $frame" | cut -c1-160
