@@ -85,7 +85,7 @@ for h in "${harnesses[@]}"; do
     [[ $rc -eq 0 && $(ls "$w/artifacts" | wc -l) -eq $before ]] && break
     # The first stack frame that is neither the sanitizers', libFuzzer's nor the C library's.
     frame=$(sed -n '/ERROR: \(libFuzzer\|AddressSanitizer\|LeakSanitizer\)\|runtime error/,$p' "$w/last.log" |
-      grep -E '^ +#[0-9]+ ' | grep -vE '__sanitizer|__interceptor_|fuzzer::|libc\.so|raise|abort|pthread_kill|__asan|__ubsan' |
+      grep -E '^ +#[0-9]+ ' | grep -vE '__sanitizer|__interceptor_|fuzzer::|libc\.so|sysdeps/|raise|abort|pthread_kill|__asan|__ubsan' |
       head -n 1)
     # Out of memory: libFuzzer lists the live allocations; HDF5's when libhdf5 holds them and
     # no frame of pound's code does (HDF5 itself grows to 10 GB reading some damaged files).

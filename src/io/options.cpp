@@ -307,9 +307,12 @@ int Options::count_numbered(const std::string& prefix) const {
   for (const auto& kv : values_) {
     if (kv.first.compare(0, prefix.size(), prefix) != 0) continue;
     std::size_t k = prefix.size();
+    // Found by fuzz_study: building2000000000000.masses overflowed the int (undefined
+    // behaviour). A number held at 10^9 still names a building past the last one given, which
+    // the study then reports as missing.
     int num = 0;
     while (k < kv.first.size() && std::isdigit(static_cast<unsigned char>(kv.first[k])))
-      num = num * 10 + (kv.first[k++] - '0');
+      num = std::min(num * 10 + (kv.first[k++] - '0'), 1000000000);
     if (k > prefix.size() && k < kv.first.size() && kv.first[k] == '.') n = std::max(n, num);
   }
   return n;

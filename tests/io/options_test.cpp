@@ -135,5 +135,16 @@ TEST(Options, ADirectoryGivenAsTheStudyFileIsNamedSo) {
   }
 }
 
+// Found by fuzz_study (issue 14): a building number past the range of an int overflowed while
+// counting the buildings (undefined behaviour). It counts as a building past the last one.
+TEST(Options, AHugeBuildingNumberIsCountedWithoutOverflow) {
+  Options o("simulate", "", specs());
+  o.parse({"--building1.masses", "1", "--building2000000000000.masses", "1"});
+  EXPECT_EQ(o.count_numbered("building"), 1000000000);
+  Options p("simulate", "", specs());
+  p.parse({"--building1.masses", "1", "--building12.masses", "1"});
+  EXPECT_EQ(p.count_numbered("building"), 12);
+}
+
 }  // namespace
 }  // namespace pound
