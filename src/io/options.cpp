@@ -311,8 +311,10 @@ int Options::count_numbered(const std::string& prefix) const {
     // behaviour). A number held at 10^9 still names a building past the last one given, which
     // the study then reports as missing.
     int num = 0;
-    while (k < kv.first.size() && std::isdigit(static_cast<unsigned char>(kv.first[k])))
-      num = std::min(num * 10 + (kv.first[k++] - '0'), 1000000000);
+    while (k < kv.first.size() && std::isdigit(static_cast<unsigned char>(kv.first[k]))) {
+      const int digit = kv.first[k++] - '0';
+      num = num >= 100000000 ? 1000000000 : num * 10 + digit;
+    }
     if (k > prefix.size() && k < kv.first.size() && kv.first[k] == '.') n = std::max(n, num);
   }
   return n;
