@@ -83,9 +83,10 @@ for h in "${harnesses[@]}"; do
     r=$(sed -n 's/^stat::number_of_executed_units: *//p' "$w/last.log" | tail -n 1)
     runs=$(( runs + ${r:-0} ))
     [[ $rc -eq 0 && $(ls "$w/artifacts" | wc -l) -eq $before ]] && break
-    # The first stack frame that is neither the sanitizers', libFuzzer's nor the C library's.
+    # The first stack frame that is neither the sanitizers', libFuzzer's, the C library's nor
+    # an allocator's (the caller of malloc or new decides).
     frame=$(sed -n '/ERROR: \(libFuzzer\|AddressSanitizer\|LeakSanitizer\)\|runtime error/,$p' "$w/last.log" |
-      grep -E '^ +#[0-9]+ ' | grep -vE '__sanitizer|__interceptor_|fuzzer::|libc\.so|sysdeps/|raise|abort|pthread_kill|__asan|__ubsan' |
+      grep -E '^ +#[0-9]+ ' | grep -vE '__sanitizer|__interceptor_|fuzzer::|libc\.so|sysdeps/|raise|abort|pthread_kill|__asan|__ubsan| in (malloc|calloc|realloc|free|operator new|operator delete)' |
       head -n 1)
     # Out of memory: libFuzzer lists the live allocations; HDF5's when libhdf5 holds them and
     # no frame of pound's code does (HDF5 itself grows to 10 GB reading some damaged files).
