@@ -1,12 +1,17 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages pound needs. Idempotent: when everything is present it
 # returns in about a second without touching apt.
+#   bash scripts/install-deps.sh          # build, tests, figures
+#   bash scripts/install-deps.sh --fuzz   # and clang 14 with its libFuzzer and sanitizer
+#                                         # runtimes (fuzz/run.sh, docs/fuzzing.md)
 set -euo pipefail
 PKGS=(build-essential cmake pkg-config
       libopenmpi-dev openmpi-bin
       libeigen3-dev libhdf5-dev libboost-program-options-dev libfftw3-dev
       libgtest-dev librandom123-dev clang-format
       python3 python3-numpy python3-matplotlib python3-h5py)
+# clang-14 is the compiler; libclang-rt-14-dev holds libclang_rt.fuzzer, .asan and .ubsan.
+if [ "${1:-}" = "--fuzz" ]; then PKGS+=(clang-14 libclang-rt-14-dev); fi
 missing=()
 for p in "${PKGS[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -8,7 +8,9 @@
 # used or changed), submits the real scripts on a small study and checks:
 #   1. campaign.sbatch (srun --mpi=pmix) runs a campaign to completion (the reference);
 #   2. a campaign.sbatch job with a time limit shorter than the campaign (--time=1 with
-#      --signal=B:USR1@58) is stopped by Slurm's signal, keeps its journal and exits 75;
+#      --signal=B:USR1@58) is stopped by Slurm's signal, keeps its journal and exits 75
+#      (Slurm may send the signal in the job's first second: the script passes it on once
+#      the campaign reports its start, so the outcome does not depend on the machine's speed);
 #      campaign-mpirun.sbatch resumes it and is stopped again with
 #      `scancel --signal=USR1 --batch`; a third submission completes it; the final file has
 #      every sample exactly once and equals the reference (/samples, /response);
@@ -277,15 +279,17 @@ grep -q "DUE TO TIME LIMIT" "$J/cut-1.out" && { show_log "$J/cut-1.out"; die "jo
 [[ -f "$cut.journal" && ! -e "$cut" ]] || die "job $b: expected the journal and no result file"
 ok "job $b stopped on Slurm's SIGUSR1 before its time limit: $(grep -o 'interrupted after [0-9]* of [0-9]* samples' "$J/cut-1.out"), exit 75, journal kept (RunTime $(job_field "$b" RunTime))"
 
-jsize=$(stat -c %s "$cut.journal")
 c=$(submit --nodes=1 --ntasks-per-node=2 --time=10 -o "$J/cut-2.out" \
   slurm/campaign-mpirun.sbatch "$study" "$cut" --samples "$samples")
 say "job $c: campaign-mpirun.sbatch, resubmitted; stopped with scancel --signal=USR1 --batch once it runs"
-for _ in $(seq 600); do
-  [[ -f "$cut.journal" ]] && (( $(stat -c %s "$cut.journal") > jsize )) && break
+# Wait until the campaign reports that it has started (rank 0 creates $cut.started when every
+# rank runs with its stop handlers), however long the machine takes to start it.
+for _ in $(seq 1500); do
+  [[ -e "$cut.started" ]] && break
   [[ -z "$(squeue -h -j "$c" -o %i)" ]] && break
   sleep 0.2
 done
+[[ -e "$cut.started" ]] || { show_log "$J/cut-2.out"; die "job $c: the campaign did not report its start within 300 s"; }
 scancel --signal=USR1 --batch "$c"
 wait_job "$c" 200
 expect_job "$c" FAILED 75:0 "$J/cut-2.out"

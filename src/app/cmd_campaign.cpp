@@ -71,9 +71,32 @@ std::string check_output(const std::string& out, bool resume, bool force, bool* 
   return "";
 }
 
+// The command that resumes this run (without --force and --resume).
+std::string resume_command(int argc, const char* const* argv, int ranks) {
+  std::string cmd = "mpirun -np " + std::to_string(ranks) + " pound campaign";
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--force" || a == "--resume") continue;
+    cmd += " " + a;
+  }
+  return cmd;
+}
+
+// --started-file: every rank has passed MPI start-up with its stop handlers (installed before
+// MPI_Init), so a stop signal from now on is honoured. The file says so to job scripts.
+void announce_start(const std::string& path) {
+  std::FILE* f = std::fopen(path.c_str(), "w");
+  const bool ok = f && std::fputs("started\n", f) >= 0;
+  if (!(f && std::fclose(f) == 0 && ok))
+    std::fprintf(stderr, "campaign: warning: cannot create the started file %s\n", path.c_str());
+}
+
 }  // namespace
 
 int run_campaign(int argc, const char* const* argv) {
+  // Before MPI start-up: a stop request that comes while the ranks start (srun passing on
+  // Slurm's signal in the job's first second) is kept, and honoured once the campaign runs.
+  install_stop_handlers();
   MPI_Init(nullptr, nullptr);
   int rank = 0, size = 1;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
@@ -90,6 +113,9 @@ int run_campaign(int argc, const char* const* argv) {
   specs.push_back({"resume", "", "", "complete an interrupted campaign from its journal", true});
   specs.push_back({"force", "", "", "overwrite an existing result file", true});
   specs.push_back({"quiet", "", "", "no progress lines", true});
+  specs.push_back({"started-file", "", "",
+                   "FILE that rank 0 creates once every rank runs and honours stop signals (job "
+                   "scripts wait for it before passing a signal on)"});
   Options opt("campaign",
               "Monte Carlo campaign: samples of buildings in a row with and without pounding, "
               "spread over MPI ranks (mpirun -np N pound campaign ...).",
@@ -170,7 +196,7 @@ int run_campaign(int argc, const char* const* argv) {
       p = e == std::string::npos ? text.size() : e + 1;
     }
   }
-  install_stop_handlers();
+  if (rank == 0 && opt.given("started-file")) announce_start(opt.get_string("started-file"));
   CampaignRunOptions ro;
   ro.out = out;
   ro.resume = opt.flag("resume");
@@ -185,18 +211,19 @@ int run_campaign(int argc, const char* const* argv) {
   }
   int code = 0;
   if (rank == 0) {
-    if (sum.interrupted) {
-      std::string cmd = "mpirun -np " + std::to_string(size) + " pound campaign";
-      for (int i = 1; i < argc; ++i) {
-        const std::string a = argv[i];
-        if (a == "--force" || a == "--resume") continue;
-        cmd += " " + a;
-      }
+    if (sum.interrupted && !sum.stop_reason.empty()) {
+      std::fprintf(stderr,
+                   "campaign: stopped after %ld of %ld samples (%ld failed): %s. The journal "
+                   "%s.journal keeps them; free some space (or raise the file size limit) and "
+                   "resume with: %s --resume\n",
+                   sum.done, sum.total, sum.failed, sum.stop_reason.c_str(), out.c_str(),
+                   resume_command(argc, argv, size).c_str());
+    } else if (sum.interrupted) {
       std::fprintf(
           stderr,
           "campaign: interrupted after %ld of %ld samples (%ld failed); the journal %s.journal "
           "keeps them. Resume with: %s --resume\n",
-          sum.done, sum.total, sum.failed, out.c_str(), cmd.c_str());
+          sum.done, sum.total, sum.failed, out.c_str(), resume_command(argc, argv, size).c_str());
     } else {
       std::fprintf(stderr,
                    "campaign: done: %ld samples, %ld failed, written to %s (peak memory per "

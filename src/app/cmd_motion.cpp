@@ -97,6 +97,10 @@ int run_spectrum(int argc, const char* const* argv) {
       {"format", "", "automatic", "automatic, at2, columns or fixed-width"},
       {"units", "", "", "units of the record when its header does not say: g, m/s2, cm/s2"},
       {"dt", "s", "", "sample spacing of a one-column record"},
+      {"accept-any-pga", "", "",
+       "accept a record whose peak acceleration is above 10 g or below 1e-6 g (refused by "
+       "default as wrong units or values)",
+       true},
       {"truncate", "s", "", "use only the first seconds of the record"},
       {"scale", "-", "1", "factor applied to the record"},
       {"baseline", "", "", "baseline-correct the record first", true},
@@ -116,6 +120,8 @@ int run_spectrum(int argc, const char* const* argv) {
   spec.format = parse_motion_format(o.get_string("format"), o.where("format"));
   if (o.given("units")) spec.units = parse_accel_units(o.get_string("units"), o.where("units"));
   if (o.given("dt")) spec.dt = o.get_positive("dt");
+  spec.check_pga = !o.flag("accept-any-pga");
+  spec.check_pga_key = "--accept-any-pga";
   GroundMotion m = read_motion(spec);
   if (o.given("truncate")) m = truncate(m, o.get_positive("truncate"));
   m = scale(m, o.get_double("scale"));
@@ -388,6 +394,7 @@ int run_generate(int argc, const char* const* argv) {
     h5::attribute(f.id(), "/", "config", o.resolved_text());
     h5::attribute(f.id(), "/", "engine_version", kVersion);
     h5::attribute(f.id(), "/", "git_revision", kGitRevision);
+    f.close();
   }
   out.commit();
 

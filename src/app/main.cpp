@@ -1,5 +1,7 @@
 // pound: probabilistic seismic pounding assessment. Dispatches to the subcommands and turns
 // every error into one line on stderr and a non-zero exit code.
+#include <hdf5.h>
+
 #include <cstring>
 #include <exception>
 #include <iostream>
@@ -45,6 +47,11 @@ void usage(std::ostream& out) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // HDF5 1.10.8 closes the files still registered when the process exits; a file whose close
+  // failed on a full disk is one, and closing it again crashes (H5F__close_cb). Every file is
+  // closed by its owner (a failed one is then deleted), so the library's exit handler is not
+  // needed. Must come before any other HDF5 call.
+  H5dont_atexit();
   if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h")) {
     usage(std::cout);
     return argc < 2 ? 2 : 0;

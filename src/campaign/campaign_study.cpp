@@ -186,17 +186,12 @@ CampaignStudy campaign_from_options(const Options& opt, long samples_override, l
     const auto& dir = opt.config_path();
     const auto slash = dir.rfind('/');
     for (const auto& f : files) {
-      MotionFileSpec spec;
-      spec.path = (f[0] == '/' || slash == std::string::npos || !opt.given("motion.records") ||
-                   opt.where("motion.records").rfind("command line", 0) == 0)
-                      ? f
-                      : dir.substr(0, slash + 1) + f;
-      spec.format =
-          parse_motion_format(opt.get_string("motion.format"), opt.where("motion.format"));
-      if (opt.given("motion.units"))
-        spec.units = parse_accel_units(opt.get_string("motion.units"), opt.where("motion.units"));
-      if (opt.given("motion.dt")) spec.dt = opt.get_positive("motion.dt");
-      GroundMotion g = read_motion(spec);
+      const std::string path =
+          (f[0] == '/' || slash == std::string::npos || !opt.given("motion.records") ||
+           opt.where("motion.records").rfind("command line", 0) == 0)
+              ? f
+              : dir.substr(0, slash + 1) + f;
+      GroundMotion g = read_motion(motion_file_spec(opt, path));
       if (opt.given("motion.duration")) g = truncate(g, opt.get_positive("motion.duration"));
       st.records.push_back(std::move(g));
     }
@@ -240,8 +235,9 @@ CampaignStudy campaign_from_options(const Options& opt, long samples_override, l
   }
   // The study as resolved; run-control options (output, resume, ...) are not part of it, the
   // sample count and seed are stored on their own.
-  st.resolved = opt.resolved_text({"out", "resume", "force", "quiet", "samples", "seed",
-                                   "sample-range", "chunk", "campaign.samples", "campaign.seed"});
+  st.resolved =
+      opt.resolved_text({"out", "resume", "force", "quiet", "started-file", "samples", "seed",
+                         "sample-range", "chunk", "campaign.samples", "campaign.seed"});
   return st;
 }
 

@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 
@@ -129,7 +130,10 @@ bool decode_record(const char* bytes, const RecordLayout& l, SampleOutcome& o) {
     for (auto& x : *v) x = get<double>(p);
   }
   o.wall_seconds = get<double>(p);
-  o.rank = static_cast<int>(get<double>(p));
+  // Found by fuzz_journal: a rank no int holds (in a record no pound writes, checksum right)
+  // overflowed the conversion, undefined behaviour; it reads -1.
+  const double rank = get<double>(p);
+  o.rank = rank >= 0.0 && rank <= 2147483647.0 ? static_cast<int>(rank) : -1;
   o.message.assign(p, strnlen(p, RecordLayout::kMessageBytes));
   return true;
 }
@@ -141,7 +145,12 @@ long for_each_record(const std::string& path, const CampaignStudy& st,
   const RecordLayout l(st);
   const std::vector<char> want = header(st, l);
   std::vector<char> h(kHeaderBytes);
-  const bool whole = std::fread(h.data(), 1, h.size(), f) == h.size();
+  const std::size_t got = std::fread(h.data(), 1, h.size(), f);
+  const bool whole = got == h.size();
+  if (!whole && std::equal(h.begin(), h.begin() + static_cast<long>(got), want.begin())) {
+    std::fclose(f);
+    return 0;  // cut short inside its header (a full disk at the start): no record yet
+  }
   for (const auto& old : kOldFormats)
     if (whole && std::memcmp(h.data(), old.magic, 8) == 0) {
       std::fclose(f);
@@ -179,43 +188,67 @@ std::vector<SampleOutcome> read_journal(const std::string& path, const CampaignS
   return out;
 }
 
-JournalWriter::JournalWriter(const std::string& path, const CampaignStudy& st, bool append)
+JournalWriter::JournalWriter(const std::string& path, const CampaignStudy& st, bool append,
+                             std::function<void(const WriteError&)> on_write_error)
     : path_(path) {
+  long end = 0;
   if (append) {
-    const long end = for_each_record(path, st, [](const SampleOutcome&) {});
-    if (::truncate(path.c_str(), end) != 0)
-      throw InputError(path + ": cannot cut the torn tail of the journal (" + std::strerror(errno) +
-                       ")");
+    end = for_each_record(path, st, [](const SampleOutcome&) {});
+    if (::truncate(path.c_str(), end) != 0) fail("cannot cut the torn tail of the journal");
     f_ = std::fopen(path.c_str(), "ab");
   } else {
     f_ = std::fopen(path.c_str(), "wb");
-    if (f_) {
-      const auto h = header(st, RecordLayout(st));
-      std::fwrite(h.data(), 1, h.size(), f_);
-      std::fflush(f_);
-    }
   }
-  if (!f_)
-    throw InputError(path + ": cannot write the campaign journal (" + std::strerror(errno) + ")");
+  if (!f_) fail("cannot write the campaign journal");
+  if (end == 0) {  // new, or cut short inside its header
+    const auto h = header(st, RecordLayout(st));
+    this->append(h.data(), h.size());
+  }
+  on_write_error_ = std::move(on_write_error);
+}
+
+template <class Step>
+void JournalWriter::guarded(Step step) {
+  if (failed_) return;
+  if (!on_write_error_) return step();
+  try {
+    step();
+  } catch (const WriteError& e) {
+    failed_ = true;
+    on_write_error_(e);
+  }
 }
 
 JournalWriter::~JournalWriter() {
-  if (f_) {
-    std::fflush(f_);
-    ::fsync(fileno(f_));
-    std::fclose(f_);
-  }
+  if (f_) std::fclose(f_);  // after close() failed or an error elsewhere: nothing to report
+}
+
+void JournalWriter::fail(const char* what) const {
+  throw WriteError(path_ + ": " + what + " (" + std::strerror(errno) + ")");
 }
 
 void JournalWriter::append(const char* bytes, std::size_t n) {
-  if (n && std::fwrite(bytes, 1, n, f_) != n)
-    throw InputError(path_ + ": write failed (" + std::strerror(errno) + ")");
-  std::fflush(f_);  // in the kernel from here on: survives the process being killed
+  // Every byte reaches the kernel before this returns (and so survives the process being
+  // killed); a short write or a failed flush (disk full, file size limit) is an error at once.
+  guarded([&] {
+    if (n && std::fwrite(bytes, 1, n, f_) != n) fail("cannot write the campaign journal");
+    if (std::fflush(f_) != 0) fail("cannot write the campaign journal");
+  });
 }
 
 void JournalWriter::sync() {
-  std::fflush(f_);
-  ::fsync(fileno(f_));
+  guarded([&] {
+    if (std::fflush(f_) != 0 || ::fsync(fileno(f_)) != 0) fail("cannot sync the campaign journal");
+  });
+}
+
+void JournalWriter::close() {
+  sync();
+  guarded([&] {
+    std::FILE* f = f_;
+    f_ = nullptr;
+    if (std::fclose(f) != 0) fail("cannot close the campaign journal");
+  });
 }
 
 }  // namespace pound

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "campaign/sample.hpp"
+#include "core/error.hpp"
 
 namespace pound {
 
@@ -46,22 +47,37 @@ std::uint64_t study_hash(const CampaignStudy& st);
 class JournalWriter {
  public:
   /// Creates a new journal (truncating) or, with `append`, opens an existing one after
-  /// checking its header and cutting a torn last record.
-  JournalWriter(const std::string& path, const CampaignStudy& st, bool append);
+  /// checking its header and cutting a torn last record (a journal cut short inside its header,
+  /// as a full disk leaves it, is written anew). Without `on_write_error`, a failed write
+  /// throws; with it, the first failure of append, sync or close is handed to it and the
+  /// journal takes no more records (the campaign stops as on SIGTERM).
+  JournalWriter(const std::string& path, const CampaignStudy& st, bool append,
+                std::function<void(const WriteError&)> on_write_error = {});
   ~JournalWriter();
   JournalWriter(const JournalWriter&) = delete;
   JournalWriter& operator=(const JournalWriter&) = delete;
-  /// Appends whole records (a multiple of the record size) and flushes.
+  /// Appends whole records (a multiple of the record size) and flushes. Every call into the
+  /// system is checked: a failed write, flush, sync or close throws WriteError naming the
+  /// journal and the system's reason ("No space left on device"); the records appended before
+  /// stay whole, a torn last one is cut when the campaign resumes.
   void append(const char* bytes, std::size_t n);
-  void sync();  ///< fsync (called periodically and at the end)
+  void sync();   ///< flush and fsync (at the end of a run)
+  void close();  ///< sync and close; the destructor closes without reporting (error paths)
 
  private:
+  [[noreturn]] void fail(const char* what) const;
+  /// Runs a write step; a WriteError goes to on_write_error_ when there is one.
+  template <class Step>
+  void guarded(Step step);
   std::FILE* f_ = nullptr;
   std::string path_;
+  std::function<void(const WriteError&)> on_write_error_;
+  bool failed_ = false;  ///< a write failed and was handed on: no more records
 };
 
 /// Reads the valid records of a journal, validating the header against the study. Returns
-/// the byte offset after the last valid record in `valid_end` (a torn tail is not counted).
+/// the byte offset after the last valid record in `valid_end` (a torn tail is not counted; 0
+/// for a journal cut short inside its header, which holds no record).
 std::vector<SampleOutcome> read_journal(const std::string& path, const CampaignStudy& st,
                                         long* valid_end = nullptr);
 

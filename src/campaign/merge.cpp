@@ -3,6 +3,7 @@
 #include <hdf5.h>
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -10,6 +11,7 @@
 #include "campaign/amplification_file.hpp"
 #include "core/error.hpp"
 #include "io/h5.hpp"
+#include "io/number.hpp"
 
 namespace pound {
 namespace {
@@ -27,23 +29,45 @@ struct Part {
   long lo = 0, hi = 0;
 };
 
+// Closes an HDF5 identifier at scope exit (error paths included: an identifier left open
+// keeps its file open).
+struct Id {
+  hid_t id;
+  herr_t (*close)(hid_t);
+  ~Id() {
+    if (id >= 0) close(id);
+  }
+};
+
+// The part's "samples" root attribute: one number, or -1.
+double sample_count(hid_t file) {
+  if (H5Aexists(file, "samples") <= 0) return -1;
+  const Id a{H5Aopen(file, "samples", H5P_DEFAULT), H5Aclose};
+  const Id space{H5Aget_space(a.id), H5Sclose};
+  const Id type{H5Aget_type(a.id), H5Tclose};
+  double n = -1;
+  const H5T_class_t c = H5Tget_class(type.id);
+  if (H5Sget_simple_extent_npoints(space.id) != 1 || (c != H5T_FLOAT && c != H5T_INTEGER) ||
+      H5Aread(a.id, H5T_NATIVE_DOUBLE, &n) < 0)
+    return -1;
+  return n;
+}
+
 herr_t copy_attribute(hid_t src, const char* name, const H5A_info_t*, void* dst_ptr) {
   const hid_t dst = *static_cast<hid_t*>(dst_ptr);
-  const hid_t a = H5Aopen(src, name, H5P_DEFAULT);
-  const hid_t t = H5Aget_type(a);
-  const hid_t s = H5Aget_space(a);
-  const hssize_t n = H5Sget_simple_extent_npoints(s);
-  std::vector<char> buf(static_cast<std::size_t>(n) * H5Tget_size(t));
-  H5Aread(a, t, buf.data());
-  const hid_t b = H5Acreate2(dst, name, t, s, H5P_DEFAULT, H5P_DEFAULT);
-  H5Awrite(b, t, buf.data());
-  if (H5Tis_variable_str(t) > 0 || H5Tget_class(t) == H5T_VLEN)
-    H5Dvlen_reclaim(t, s, H5P_DEFAULT, buf.data());
-  H5Aclose(b);
-  H5Sclose(s);
-  H5Tclose(t);
-  H5Aclose(a);
-  return 0;
+  const Id a{H5Aopen(src, name, H5P_DEFAULT), H5Aclose};
+  const Id t{H5Aget_type(a.id), H5Tclose};
+  const Id s{H5Aget_space(a.id), H5Sclose};
+  const hssize_t n = H5Sget_simple_extent_npoints(s.id);
+  const std::size_t size = H5Tget_size(t.id);
+  if (a.id < 0 || t.id < 0 || s.id < 0 || n < 0 || size == 0) return -1;
+  std::vector<char> buf(static_cast<std::size_t>(n) * size);
+  if (H5Aread(a.id, t.id, buf.data()) < 0) return -1;
+  const Id b{H5Acreate2(dst, name, t.id, s.id, H5P_DEFAULT, H5P_DEFAULT), H5Aclose};
+  const herr_t w = b.id < 0 ? -1 : H5Awrite(b.id, t.id, buf.data());
+  if (H5Tis_variable_str(t.id) > 0 || H5Tget_class(t.id) == H5T_VLEN)
+    H5Dvlen_reclaim(t.id, s.id, H5P_DEFAULT, buf.data());
+  return w < 0 ? -1 : 0;
 }
 
 }  // namespace
@@ -71,20 +95,16 @@ void merge_campaign_parts(const std::vector<std::string>& paths, const std::stri
     const std::string st = required_attribute(q.file, "study", path);
     const std::string sd = required_attribute(q.file, "seed", path);
     const std::string range = required_attribute(q.file, "sample_range", path);
-    const hid_t a = H5Aopen(q.file, "samples", H5P_DEFAULT);
-    double n = -1;
-    if (a >= 0) {
-      H5Aread(a, H5T_NATIVE_DOUBLE, &n);
-      H5Aclose(a);
-    }
+    const double n = sample_count(q.file);
+    // LO:HI, two whole decimal numbers (io/number.hpp; "12abc" and "0x10" are refused).
     const auto colon = range.find(':');
-    try {
-      if (colon == std::string::npos) throw std::invalid_argument("no colon");
-      q.lo = std::stol(range.substr(0, colon));
-      q.hi = std::stol(range.substr(colon + 1));
-    } catch (const std::logic_error&) {  // std::stol's invalid_argument and out_of_range
+    double lo = -1, hi = -1;
+    if (colon == std::string::npos || !read_decimal(range.substr(0, colon), &lo) ||
+        !read_decimal(range.substr(colon + 1), &hi) || lo != std::floor(lo) ||
+        hi != std::floor(hi) || !(lo >= 0 && hi >= lo && hi <= 1e15))
       throw InputError(path + ": bad sample_range '" + range + "' (expected LO:HI)");
-    }
+    q.lo = static_cast<long>(lo);
+    q.hi = static_cast<long>(hi);
     if (parts.size() == 1) {
       study = st;
       seed = sd;
@@ -105,7 +125,7 @@ void merge_campaign_parts(const std::vector<std::string>& paths, const std::stri
                        std::to_string(next - 1) + (p.lo < next ? " (overlap)" : " (gap)"));
     next = p.hi;
   }
-  if (next != static_cast<long>(samples))
+  if (!(samples >= 1 && samples <= 1e15) || next != static_cast<long>(samples))
     throw InputError(parts.back().path + ": the parts end at sample " + std::to_string(next - 1) +
                      " but the campaign has " + std::to_string(static_cast<long>(samples)) +
                      " samples");
@@ -115,62 +135,77 @@ void merge_campaign_parts(const std::vector<std::string>& paths, const std::stri
   for (const char* group : {"/samples", "/response", "/run"}) {
     for (const auto& member : h5::group_members(parts.front().file, group)) {
       const std::string name = std::string(group) + "/" + member;
-      const hid_t d0 = H5Dopen2(parts.front().file, name.c_str(), H5P_DEFAULT);
-      const hid_t type = H5Dget_type(d0);
-      const hid_t s0 = H5Dget_space(d0);
-      const int rank = H5Sget_simple_extent_ndims(s0);
+      auto bad = [&](const Part& p, const std::string& what) {
+        return InputError(p.path + ": " + name + " " + what);
+      };
+      const Id d0{H5Dopen2(parts.front().file, name.c_str(), H5P_DEFAULT), H5Dclose};
+      if (d0.id < 0) throw bad(parts.front(), "is not a dataset");
+      const Id type{H5Dget_type(d0.id), H5Tclose};
+      const Id s0{H5Dget_space(d0.id), H5Sclose};
+      const int rank = H5Sget_simple_extent_ndims(s0.id);
+      if (rank < 1 || rank > 3 || H5Tget_size(type.id) == 0)
+        throw bad(parts.front(), "is not a table of rows (1 to 3 dimensions)");
       std::vector<hsize_t> dims(static_cast<std::size_t>(rank));
-      H5Sget_simple_extent_dims(s0, dims.data(), nullptr);
+      H5Sget_simple_extent_dims(s0.id, dims.data(), nullptr);
       dims[0] = total;
       h5::ensure_group(f.id(), group);
-      const hid_t space = H5Screate_simple(rank, dims.data(), nullptr);
-      const hid_t d =
-          H5Dcreate2(f.id(), name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-      H5Aiterate2(d0, H5_INDEX_NAME, H5_ITER_NATIVE, nullptr, copy_attribute,
-                  const_cast<hid_t*>(&d));
+      const Id space{H5Screate_simple(rank, dims.data(), nullptr), H5Sclose};
+      const Id d{H5Dcreate2(f.id(), name.c_str(), type.id, space.id, H5P_DEFAULT, H5P_DEFAULT,
+                            H5P_DEFAULT),
+                 H5Dclose};
+      if (d.id < 0) throw bad(parts.front(), "cannot be copied");
+      H5Aiterate2(d0.id, H5_INDEX_NAME, H5_ITER_NATIVE, nullptr, copy_attribute,
+                  const_cast<hid_t*>(&d.id));
       for (const auto& p : parts) {
-        const hid_t dp = H5Dopen2(p.file, name.c_str(), H5P_DEFAULT);
-        if (dp < 0) throw InputError(p.path + ": dataset " + name + " is missing");
-        const hid_t sp = H5Dget_space(dp);
-        const hssize_t npts = H5Sget_simple_extent_npoints(sp);
+        const Id dp{H5Dopen2(p.file, name.c_str(), H5P_DEFAULT), H5Dclose};
+        if (dp.id < 0) throw InputError(p.path + ": dataset " + name + " is missing");
+        const Id sp{H5Dget_space(dp.id), H5Sclose};
         std::vector<hsize_t> pd(static_cast<std::size_t>(rank));
-        H5Sget_simple_extent_dims(sp, pd.data(), nullptr);
+        if (H5Sget_simple_extent_ndims(sp.id) != rank)
+          throw bad(p, "has another number of dimensions than in " + parts.front().path);
+        H5Sget_simple_extent_dims(sp.id, pd.data(), nullptr);
+        for (int k = 1; k < rank; ++k)
+          if (pd[k] != dims[k]) throw bad(p, "has another shape than in " + parts.front().path);
         if (static_cast<long>(pd[0]) != p.hi - p.lo)
           throw InputError(p.path + ": " + name + " has " + std::to_string(pd[0]) +
                            " rows, its sample_range says " + std::to_string(p.hi - p.lo));
-        std::vector<char> buf(static_cast<std::size_t>(npts) * H5Tget_size(type));
-        H5Dread(dp, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, buf.data());
-        const hid_t fs = H5Dget_space(d);
+        // A damaged part may declare more rows than it stores (found by fuzz_campaign_file).
+        const hssize_t npts = H5Sget_simple_extent_npoints(sp.id);
+        const Id ptype{H5Dget_type(dp.id), H5Tclose};
+        const std::size_t stored = H5Tget_size(ptype.id);
+        if (npts < 0 || (npts > 0 && (stored == 0 || static_cast<hsize_t>(npts) >
+                                                         H5Dget_storage_size(dp.id) / stored)))
+          throw bad(p, "declares more values than the file stores (a damaged file)");
+        std::vector<char> buf(static_cast<std::size_t>(npts) * H5Tget_size(type.id));
+        if (H5Dread(dp.id, type.id, H5S_ALL, H5S_ALL, H5P_DEFAULT, buf.data()) < 0)
+          throw bad(p, "cannot be read as in " + parts.front().path);
+        const Id fs{H5Dget_space(d.id), H5Sclose};
         std::vector<hsize_t> start(static_cast<std::size_t>(rank), 0);
         start[0] = static_cast<hsize_t>(p.lo);
-        H5Sselect_hyperslab(fs, H5S_SELECT_SET, start.data(), nullptr, pd.data(), nullptr);
-        const hid_t ms = H5Screate_simple(rank, pd.data(), nullptr);
-        if (H5Dwrite(d, type, ms, fs, H5P_DEFAULT, buf.data()) < 0)
-          throw InputError(out + ": writing " + name + " failed");
-        if (H5Tis_variable_str(type) > 0) H5Dvlen_reclaim(type, ms, H5P_DEFAULT, buf.data());
-        H5Sclose(ms);
-        H5Sclose(fs);
-        H5Sclose(sp);
-        H5Dclose(dp);
+        H5Sselect_hyperslab(fs.id, H5S_SELECT_SET, start.data(), nullptr, pd.data(), nullptr);
+        const Id ms{H5Screate_simple(rank, pd.data(), nullptr), H5Sclose};
+        const herr_t w = H5Dwrite(d.id, type.id, ms.id, fs.id, H5P_DEFAULT, buf.data());
+        if (H5Tis_variable_str(type.id) > 0 || H5Tget_class(type.id) == H5T_VLEN)
+          H5Dvlen_reclaim(type.id, ms.id, H5P_DEFAULT, buf.data());
+        if (w < 0) throw InputError(out + ": writing " + name + " failed");
       }
-      H5Dclose(d);
-      H5Sclose(space);
-      H5Sclose(s0);
-      H5Tclose(type);
-      H5Dclose(d0);
     }
   }
   // Root attributes of the first part, with the merged range.
-  hid_t root = H5Gopen2(f.id(), "/", H5P_DEFAULT);
-  H5Aiterate2(parts.front().file, H5_INDEX_NAME, H5_ITER_NATIVE, nullptr, copy_attribute, &root);
-  H5Adelete(root, "sample_range");
-  H5Gclose(root);
+  {
+    Id root{H5Gopen2(f.id(), "/", H5P_DEFAULT), H5Gclose};
+    H5Aiterate2(parts.front().file, H5_INDEX_NAME, H5_ITER_NATIVE, nullptr, copy_attribute,
+                &root.id);
+    H5Adelete(root.id, "sample_range");
+  }
   h5::attribute(f.id(), "/", "sample_range", "0:" + std::to_string(total));
   std::string from;
   for (const auto& p : parts) from += (from.empty() ? "" : ", ") + p.path;
   h5::attribute(f.id(), "/", "merged_from", from);
-  // The parts' /amplification describe their own samples: recomputed for the joined file.
-  write_amplification(f.id(), compute_amplification(f.id(), out));
+  // The parts' /amplification describe their own samples: recomputed for the joined file (its
+  // errors name the parts, since `out` is a temporary name).
+  write_amplification(f.id(), compute_amplification(f.id(), "the parts joined (" + from + ")"));
+  f.close();
 }
 
 }  // namespace pound

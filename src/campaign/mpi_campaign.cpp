@@ -16,6 +16,7 @@
 #include "campaign/sample_schedule.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
+#include "io/h5.hpp"
 
 namespace pound {
 namespace {
@@ -23,6 +24,30 @@ namespace {
 volatile std::sig_atomic_t g_stop = 0;
 extern "C" void on_stop_signal(int) {
   g_stop = 1;
+}
+
+// The first failed write of the journal (master): the campaign stops as on SIGTERM.
+std::string g_write_error;
+void request_stop_on_write_error(const WriteError& e) {
+  if (g_write_error.empty()) g_write_error = e.what();
+  std::fprintf(stderr, "campaign: %s; stopping (samples in flight are not kept)\n", e.what());
+  g_stop = 1;
+}
+
+// The samples a journal holds. After a failed write the master's own count may include
+// records that never reached the disk; the journal is what a resume will find.
+void count_journal(const CampaignStudy& st, const std::string& path, CampaignSummary& sum) {
+  sum.done = sum.failed = 0;
+  SampleSchedule held(st.range_lo, st.range_hi);
+  try {
+    for_each_record(path, st, [&](const SampleOutcome& o) {
+      if (held.mark_done(o.id)) {
+        ++sum.done;
+        if (o.status != SampleStatus::ok) ++sum.failed;
+      }
+    });
+  } catch (const InputError&) {  // no journal (it could not be created)
+  }
 }
 
 // Work requests each worker keeps in flight: with several, a worker always holds queued work
@@ -168,12 +193,24 @@ CampaignSummary master_loop(const CampaignStudy& st, const CampaignRunOptions& o
 CampaignSummary master(const CampaignStudy& st, const CampaignRunOptions& opt, MPI_Comm comm,
                        int size) {
   int active = size - 1;
+  CampaignSummary sum;
+  g_write_error.clear();  // of an earlier run in this process
   try {
-    return master_loop(st, opt, comm, size, active);
+    sum = master_loop(st, opt, comm, size, active);
+  } catch (const WriteError& e) {  // the journal could not be created or opened
+    drain_workers(comm, active);
+    g_write_error = e.what();
   } catch (...) {
     drain_workers(comm, active);
     throw;
   }
+  if (!g_write_error.empty()) {
+    sum.total = st.range_size();
+    count_journal(st, opt.out + ".journal", sum);
+    sum.interrupted = true;
+    sum.stop_reason = g_write_error;
+  }
+  return sum;
 }
 
 CampaignSummary master_loop(const CampaignStudy& st, const CampaignRunOptions& opt, MPI_Comm comm,
@@ -192,7 +229,7 @@ CampaignSummary master_loop(const CampaignStudy& st, const CampaignRunOptions& o
       }
     });
   }
-  JournalWriter journal(journal_path, st, opt.resume);
+  JournalWriter journal(journal_path, st, opt.resume, request_stop_on_write_error);
   Progress prog;
   prog.at_start = sum.done;
   SampleRunner runner(st);
@@ -285,7 +322,7 @@ CampaignSummary master_loop(const CampaignStudy& st, const CampaignRunOptions& o
     }
   }
   replies.wait_all();
-  journal.sync();
+  journal.close();
   sum.loop_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - prog.start).count();
   if (stopping && sum.done < sum.total) sum.interrupted = true;
@@ -293,13 +330,42 @@ CampaignSummary master_loop(const CampaignStudy& st, const CampaignRunOptions& o
   return sum;
 }
 
+// Writes the result file from the complete journal and removes the journal (rank 0). A write
+// that fails in the system (disk full) stops the campaign as SIGTERM does: the journal stays
+// and `--resume` writes the file. Returns another failure's message, or "".
+std::string write_result(const CampaignStudy& st, const CampaignRunOptions& opt, RunInfo info,
+                         CampaignSummary& sum) {
+  try {
+    char host[256] = {};
+    ::gethostname(host, sizeof host - 1);
+    info.host = host;
+    AtomicPath out(opt.out);
+    write_result_file(out.temp(), st, opt.out + ".journal", info);
+    out.commit();
+    std::remove((opt.out + ".journal").c_str());
+    return "";
+  } catch (const std::exception& e) {
+    const bool system = dynamic_cast<const WriteError*>(&e) || !h5::system_error().empty();
+    if (!system) return e.what();
+    sum.interrupted = true;
+    sum.stop_reason = !h5::system_error().empty() && !dynamic_cast<const WriteError*>(&e)
+                          ? std::string(e.what()) + " (" + h5::system_error() + ")"
+                          : e.what();
+    return "";
+  }
+}
+
 }  // namespace
 
 void install_stop_handlers() {
   struct sigaction sa {};
   sa.sa_handler = on_stop_signal;
+  sa.sa_flags = SA_RESTART;  // MPI start-up and file calls are not interrupted by a stop request
   sigemptyset(&sa.sa_mask);
   for (int sig : {SIGTERM, SIGUSR1, SIGINT}) sigaction(sig, &sa, nullptr);
+  // A file size limit (ulimit -f) makes writes fail with EFBIG, a stop like a full disk,
+  // instead of killing the process.
+  std::signal(SIGXFSZ, SIG_IGN);
 }
 
 bool stop_requested() {
@@ -326,24 +392,30 @@ CampaignSummary run_campaign(const CampaignStudy& st, const CampaignRunOptions& 
     worker(st, opt, comm, rank);
   }
   // Share the outcome (and any master error) with every rank.
+  const std::string stop_reason = sum.stop_reason;
   long buf[4] = {sum.total, sum.done, sum.failed, sum.interrupted ? 1L : 0L};
   MPI_Bcast(buf, 4, MPI_LONG, 0, comm);
   const double loop_seconds = sum.loop_seconds;  // the master's own figure
-  sum = {buf[0], buf[1], buf[2], buf[3] != 0};
+  sum = CampaignSummary{};
+  sum.total = buf[0];
+  sum.done = buf[1];
+  sum.failed = buf[2];
+  sum.interrupted = buf[3] != 0;
   sum.loop_seconds = loop_seconds;
   int err_len = static_cast<int>(error.size());
   MPI_Bcast(&err_len, 1, MPI_INT, 0, comm);
   if (err_len) throw InputError(rank == 0 ? error : std::string("(reported by rank 0)"));
-  if (rank == 0 && sum.done == sum.total) {
-    char host[256] = {};
-    ::gethostname(host, sizeof host - 1);
-    info.host = host;
+  if (rank == 0) sum.stop_reason = stop_reason;
+  if (rank == 0 && sum.done == sum.total && stop_reason.empty()) {
     info.end_time = now_text();
-    AtomicPath out(opt.out);
-    write_result_file(out.temp(), st, opt.out + ".journal", info);
-    out.commit();
-    std::remove((opt.out + ".journal").c_str());
+    error = write_result(st, opt, info, sum);
   }
+  // A result file that cannot be written is a stop (the system's reason) or an error (any
+  // other) on every rank, as above.
+  int state[2] = {static_cast<int>(error.size()), sum.interrupted ? 1 : 0};
+  MPI_Bcast(state, 2, MPI_INT, 0, comm);
+  if (state[0]) throw InputError(rank == 0 ? error : std::string("(reported by rank 0)"));
+  sum.interrupted = state[1] != 0;
   // Peak resident memory of the largest rank (ru_maxrss is in kB on Linux).
   struct rusage ru {};
   getrusage(RUSAGE_SELF, &ru);

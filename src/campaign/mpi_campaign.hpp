@@ -30,7 +30,10 @@ inline constexpr int kMasterSimulatesUpTo = 8;
 
 struct CampaignSummary {
   long total = 0, done = 0, failed = 0;
-  bool interrupted = false;   ///< stopped by SIGTERM/SIGUSR1/SIGINT before the end
+  bool interrupted = false;  ///< stopped by SIGTERM/SIGUSR1/SIGINT or a failed write
+  /// Rank 0: why the campaign stopped other than by a signal, a write that failed in the
+  /// system (disk full, file size limit) with its reason; the journal is kept, as on SIGTERM.
+  std::string stop_reason;
   double peak_rss_mb = 0.0;   ///< largest peak resident memory of any rank [MB]
   double loop_seconds = 0.0;  ///< master: time in the scheduling loop, without the file [s]
 };
@@ -39,7 +42,9 @@ struct CampaignSummary {
 /// master for journal/output problems (after telling the workers to stop).
 CampaignSummary run_campaign(const CampaignStudy& st, const CampaignRunOptions& opt, MPI_Comm comm);
 
-/// Installs handlers so that SIGTERM, SIGUSR1 and SIGINT request a clean stop.
+/// Installs handlers so that SIGTERM, SIGUSR1 and SIGINT request a clean stop, and ignores
+/// SIGXFSZ (a file size limit is then a failed write). Call it before MPI_Init: a request that
+/// comes while the ranks start is then kept and honoured once the campaign runs.
 void install_stop_handlers();
 /// True once a stop was requested.
 bool stop_requested();

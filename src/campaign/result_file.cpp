@@ -173,6 +173,7 @@ void write_result_file(const std::string& path, const CampaignStudy& st,
   h5::attribute(fid, "/", "building_names", names);
   // The amplification statistics, read back from the rows just written (in blocks).
   write_amplification(fid, compute_amplification(fid, path));
+  f.close();  // a failed write (disk full) is reported here, before the file is renamed
 }
 
 }  // namespace pound

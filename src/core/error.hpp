@@ -13,6 +13,14 @@ class InputError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// Writing an output file failed in the system (disk full, quota, file size limit, I/O
+/// error). The message names the file and carries the system's error text. A campaign stops
+/// on it as on SIGTERM, keeping its journal; elsewhere it is bad input like any other (exit 2).
+class WriteError : public InputError {
+ public:
+  using InputError::InputError;
+};
+
 /// Numerical failure inside a simulation (non-finite state, step-size underflow, too many
 /// events). Carries no file position; callers add the sample id.
 class NumericalError : public std::runtime_error {

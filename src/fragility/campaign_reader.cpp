@@ -46,8 +46,16 @@ class Reader {
     const int rank = H5Sget_simple_extent_ndims(sp.id);
     std::vector<hsize_t> d(std::size_t(std::max(rank, 0)));
     H5Sget_simple_extent_dims(sp.id, d.data(), nullptr);
+    // Found by fuzz_campaign_file: a damaged file may declare more values than it stores
+    // (10^18 rows), which no vector holds; a file of pound campaign stores every value.
     hsize_t count = 1;
-    for (hsize_t x : d) count *= x;
+    for (hsize_t x : d) count = x != 0 && count > ~hsize_t{0} / x ? ~hsize_t{0} : count * x;
+    const Handle type{H5Dget_type(ds.id), H5Tclose};
+    const std::size_t bytes = H5Tget_size(type.id);
+    if (count && (bytes == 0 || count > H5Dget_storage_size(ds.id) / bytes))
+      throw InputError(path_ + ": " + p + " declares " + std::to_string(count) +
+                       " values but the file does not store them; a damaged file or not a "
+                       "campaign result file of 'pound campaign'");
     std::vector<double> v(count);
     if (count && H5Dread(ds.id, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) < 0)
       throw InputError(path_ + ": cannot read " + p + " as numbers");

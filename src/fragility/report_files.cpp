@@ -158,7 +158,7 @@ void write_h5(const std::string& path, const CampaignData& c, const FragilityRep
       h5::write(id, base + "/band_lo", cv.band_lo, cv.band_lo.size(), 0, "-");
       h5::write(id, base + "/band_hi", cv.band_hi, cv.band_hi.size(), 0, "-");
     }
-    f.flush();
+    f.close();
   }
   out.commit();
 }

@@ -1,5 +1,7 @@
 #include "io/h5.hpp"
 
+#include <cstdlib>
+#include <cstring>
 #include <sstream>
 
 #include "core/error.hpp"
@@ -7,8 +9,34 @@
 namespace pound::h5 {
 namespace {
 
+// The first system error reported by a failing HDF5 call since the last File was opened.
+std::string g_system_error;
+
+// Finds "errno = N" in an entry of HDF5's error stack (the sec2 driver writes it on every
+// failed open, read, write, truncate and close).
+herr_t find_errno(unsigned, const H5E_error2_t* e, void* out) {
+  const char* p = e->desc ? std::strstr(e->desc, "errno = ") : nullptr;
+  if (!p) return 0;
+  const int code = std::atoi(p + 8);
+  if (code != 0 && static_cast<std::string*>(out)->empty())
+    *static_cast<std::string*>(out) = std::strerror(code);
+  return 0;
+}
+
+// Called by HDF5 (instead of printing the stack) whenever an API call fails.
+herr_t remember_system_error(hid_t stack, void*) {
+  std::string text;
+  H5Ewalk2(stack, H5E_WALK_DOWNWARD, find_errno, &text);
+  if (!text.empty() && g_system_error.empty()) g_system_error = text;
+  return 0;
+}
+
+std::string with_reason(const std::string& what) {
+  return g_system_error.empty() ? what : what + " (" + g_system_error + ")";
+}
+
 void check(herr_t status, const std::string& what) {
-  if (status < 0) throw InputError("HDF5: " + what + " failed");
+  if (status < 0) throw WriteError(with_reason("HDF5: " + what + " failed"));
 }
 
 std::string parent_of(const std::string& path) {
@@ -19,13 +47,26 @@ std::string parent_of(const std::string& path) {
 }  // namespace
 
 File::File(const std::string& path) : path_(path) {
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors become exceptions, not prints
+  // Errors become exceptions, not prints; the system's reason of each is remembered.
+  H5Eset_auto2(H5E_DEFAULT, remember_system_error, nullptr);
+  g_system_error.clear();
   id_ = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-  if (id_ < 0) throw InputError(path + ": cannot create the HDF5 file");
+  if (id_ < 0) throw WriteError(with_reason(path + ": cannot create the HDF5 file"));
 }
 
 File::~File() {
   if (id_ >= 0) H5Fclose(id_);
+}
+
+void File::close() {
+  const herr_t s = H5Fclose(id_);
+  id_ = -1;
+  if (s < 0 || !g_system_error.empty())
+    throw WriteError(with_reason(path_ + ": cannot write the HDF5 file"));
+}
+
+std::string system_error() {
+  return g_system_error;
 }
 
 void File::flush() {
@@ -37,7 +78,7 @@ void ensure_group(hid_t file, const std::string& path) {
   ensure_group(file, parent_of(path));
   if (H5Lexists(file, path.c_str(), H5P_DEFAULT) > 0) return;
   const hid_t g = H5Gcreate2(file, path.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-  if (g < 0) throw InputError("HDF5: cannot create group " + path);
+  if (g < 0) throw WriteError(with_reason("HDF5: cannot create group " + path));
   H5Gclose(g);
 }
 
@@ -48,7 +89,7 @@ void write(hid_t file, const std::string& path, const std::vector<double>& data,
   const hid_t space = H5Screate_simple(cols ? 2 : 1, dims, nullptr);
   const hid_t ds = H5Dcreate2(file, path.c_str(), H5T_NATIVE_DOUBLE, space, H5P_DEFAULT,
                               H5P_DEFAULT, H5P_DEFAULT);
-  if (ds < 0) throw InputError("HDF5: cannot create dataset " + path);
+  if (ds < 0) throw WriteError(with_reason("HDF5: cannot create dataset " + path));
   if (!data.empty())
     check(H5Dwrite(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()),
           "write of " + path);
@@ -63,7 +104,7 @@ void write(hid_t file, const std::string& path, const std::vector<int>& data) {
   const hid_t space = H5Screate_simple(1, dims, nullptr);
   const hid_t ds =
       H5Dcreate2(file, path.c_str(), H5T_NATIVE_INT, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-  if (ds < 0) throw InputError("HDF5: cannot create dataset " + path);
+  if (ds < 0) throw WriteError(with_reason("HDF5: cannot create dataset " + path));
   if (!data.empty())
     check(H5Dwrite(ds, H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()),
           "write of " + path);
@@ -79,7 +120,8 @@ void attribute(hid_t file, const std::string& object, const std::string& name,
   const hid_t space = H5Screate(H5S_SCALAR);
   const hid_t attr = H5Acreate_by_name(file, object.c_str(), name.c_str(), type, space, H5P_DEFAULT,
                                        H5P_DEFAULT, H5P_DEFAULT);
-  if (attr < 0) throw InputError("HDF5: cannot create attribute " + object + ":" + name);
+  if (attr < 0)
+    throw WriteError(with_reason("HDF5: cannot create attribute " + object + ":" + name));
   const char* p = value.c_str();
   check(H5Awrite(attr, type, &p), "attribute " + name);
   H5Aclose(attr);
@@ -91,7 +133,8 @@ void attribute(hid_t file, const std::string& object, const std::string& name, d
   const hid_t space = H5Screate(H5S_SCALAR);
   const hid_t attr = H5Acreate_by_name(file, object.c_str(), name.c_str(), H5T_NATIVE_DOUBLE, space,
                                        H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-  if (attr < 0) throw InputError("HDF5: cannot create attribute " + object + ":" + name);
+  if (attr < 0)
+    throw WriteError(with_reason("HDF5: cannot create attribute " + object + ":" + name));
   check(H5Awrite(attr, H5T_NATIVE_DOUBLE, &value), "attribute " + name);
   H5Aclose(attr);
   H5Sclose(space);
@@ -101,8 +144,14 @@ std::string root_attribute_text(hid_t file, const std::string& name) {
   if (H5Aexists(file, name.c_str()) <= 0) return "";
   const hid_t a = H5Aopen(file, name.c_str(), H5P_DEFAULT);
   const hid_t t = H5Aget_type(a);
+  const hid_t space = H5Aget_space(a);
+  const hssize_t n = H5Sget_simple_extent_npoints(space);
+  H5Sclose(space);
   std::string out;
-  if (H5Tget_class(t) != H5T_STRING) {
+  if (n != 1) {
+    // One value is read into room for one: an attribute of several values (a damaged or
+    // foreign file) would overflow it (found by fuzz_campaign_file, inside HDF5's copy).
+  } else if (H5Tget_class(t) != H5T_STRING) {
     double x = 0.0;
     if (H5Aread(a, H5T_NATIVE_DOUBLE, &x) >= 0) {
       std::ostringstream s;
@@ -135,6 +184,9 @@ std::vector<std::string> group_members(hid_t file, const std::string& group) {
     for (hsize_t i = 0; i < info.nlinks; ++i) {
       const ssize_t len =
           H5Lget_name_by_idx(g, ".", H5_INDEX_NAME, H5_ITER_INC, i, nullptr, 0, H5P_DEFAULT);
+      // A damaged group (found by fuzz_campaign_file) may count links it cannot name: -1 made
+      // a string of 2^64 - 1 characters. The members before it are the ones there are.
+      if (len < 0) break;
       std::string name(std::size_t(len), '\0');
       H5Lget_name_by_idx(g, ".", H5_INDEX_NAME, H5_ITER_INC, i, name.data(), std::size_t(len) + 1,
                          H5P_DEFAULT);

@@ -10,20 +10,32 @@
 
 namespace pound::h5 {
 
+/// A file being written. The system's error of any HDF5 call that fails while it is open
+/// (HDF5 reports "errno = 28" deep in its error stack; a dataset closed by a destructor
+/// included) is remembered, and close() reports it: a file that the system did not store
+/// whole is never taken for a result.
 class File {
  public:
-  /// Creates (truncates) the file. Throws InputError when it cannot.
+  /// Creates (truncates) the file. Throws WriteError, with the system's reason, when it cannot.
   explicit File(const std::string& path);
+  /// Closes the file if close() was not called (an error path: failures are not reported).
   ~File();
   File(const File&) = delete;
   File& operator=(const File&) = delete;
   hid_t id() const { return id_; }
   void flush();
+  /// Closes the file; throws WriteError naming the file and the system's error text when the
+  /// close or any earlier call on the file failed in the system (disk full, ...).
+  void close();
 
  private:
   hid_t id_ = -1;
   std::string path_;
 };
+
+/// The system's error text ("No space left on device") of the first HDF5 call that failed with
+/// an errno since the last File was opened; "" when none did.
+std::string system_error();
 
 /// Creates every missing group of a path such as "/pounding/response".
 void ensure_group(hid_t file, const std::string& path);

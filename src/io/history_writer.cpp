@@ -61,6 +61,7 @@ void write_histories(const std::string& path, const BuildingRow& row, const Grou
     h5::attribute(f.id(), "/", "config", config_text);
     h5::attribute(f.id(), "/", "engine_version", kVersion);
     h5::attribute(f.id(), "/", "git_revision", kGitRevision);
+    f.close();
   }
   out.commit();
 }

@@ -1,5 +1,7 @@
 #include "io/ini.hpp"
 
+#include <sys/stat.h>
+
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -40,7 +42,9 @@ std::string strip_comment(const std::string& s) {
 std::vector<IniEntry> parse_ini(const std::string& text, const std::string& name) {
   std::vector<IniEntry> out;
   std::set<std::string> seen;
-  std::istringstream in(text);
+  // A UTF-8 byte-order mark, as Windows editors save "UTF-8" files, is not part of the text.
+  const bool bom = text.compare(0, 3, "\xEF\xBB\xBF") == 0;
+  std::istringstream in(bom ? text.substr(3) : text);
   std::string raw, section;
   int lineno = 0;
   while (std::getline(in, raw)) {
@@ -75,6 +79,9 @@ std::vector<IniEntry> parse_ini(const std::string& text, const std::string& name
 }
 
 std::vector<IniEntry> read_ini(const std::string& path) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
+    throw InputError(path + ": is a directory, not a study file; give the study file (INI)");
   std::ifstream f(path);
   if (!f) throw InputError(path + ": cannot open the study file (does it exist?)");
   std::ostringstream ss;

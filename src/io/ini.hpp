@@ -4,8 +4,8 @@
 //   # or ; starts a comment (also after a value, when preceded by white space)
 //   [section]          keys below are named section.key
 //   key = value
-// Repeated keys are an error. Keys and section names are lower-case letters, digits, '-',
-// '_' and '.'.
+// A UTF-8 byte-order mark at the start is skipped. Repeated keys are an error. Keys and
+// section names are lower-case letters, digits, '-', '_' and '.'.
 #include <string>
 #include <vector>
 

@@ -3,12 +3,12 @@
 #include <algorithm>
 #include <boost/program_options.hpp>
 #include <cctype>
-#include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
 
 #include "io/ini.hpp"
+#include "io/number.hpp"
 
 namespace po = boost::program_options;
 
@@ -61,11 +61,9 @@ std::string trim(const std::string& s) {
 
 double parse_number(const std::string& text, const std::string& where) {
   const std::string t = trim(text);
-  errno = 0;
-  char* end = nullptr;
-  const double v = std::strtod(t.c_str(), &end);
-  if (t.empty() || end != t.c_str() + t.size() || errno == ERANGE || !std::isfinite(v))
-    throw InputError(where + ": '" + t + "' is not a finite number");
+  double v = 0.0;
+  if (!read_decimal(t, &v))
+    throw InputError(where + ": '" + t + "' is not a finite number (valid: " + kNumberForm + ")");
   return v;
 }
 
@@ -309,9 +307,14 @@ int Options::count_numbered(const std::string& prefix) const {
   for (const auto& kv : values_) {
     if (kv.first.compare(0, prefix.size(), prefix) != 0) continue;
     std::size_t k = prefix.size();
+    // Found by fuzz_study: building2000000000000.masses overflowed the int (undefined
+    // behaviour). A number held at 10^9 still names a building past the last one given, which
+    // the study then reports as missing.
     int num = 0;
-    while (k < kv.first.size() && std::isdigit(static_cast<unsigned char>(kv.first[k])))
-      num = num * 10 + (kv.first[k++] - '0');
+    while (k < kv.first.size() && std::isdigit(static_cast<unsigned char>(kv.first[k]))) {
+      const int digit = kv.first[k++] - '0';
+      num = num >= 100000000 ? 1000000000 : num * 10 + digit;
+    }
     if (k > prefix.size() && k < kv.first.size() && kv.first[k] == '.') n = std::max(n, num);
   }
   return n;

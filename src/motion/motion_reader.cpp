@@ -1,15 +1,17 @@
 #include "motion/motion_reader.hpp"
 
+#include <sys/stat.h>
+
 #include <algorithm>
 #include <cctype>
-#include <cerrno>
 #include <cmath>
-#include <cstdlib>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 #include <vector>
 
 #include "core/error.hpp"
+#include "io/number.hpp"
 
 namespace pound {
 namespace {
@@ -35,24 +37,28 @@ std::string at(const std::string& path, int line) {
 }
 
 std::vector<Line> read_lines(const std::string& path) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
+    throw InputError(path + ": is a directory, not a motion file; give the record file itself");
   std::ifstream in(path);
   if (!in) throw InputError(path + ": cannot open the motion file; give an existing readable file");
   std::vector<Line> lines;
   std::string s;
   int n = 0;
   while (std::getline(in, s)) lines.push_back(Line{s, ++n});
+  // A UTF-8 byte-order mark, as some editors save text files.
+  if (!lines.empty() && lines[0].text.compare(0, 3, "\xEF\xBB\xBF") == 0) lines[0].text.erase(0, 3);
   return lines;
 }
 
 // One finite number, or an InputError naming file and line.
 double number(const std::string& tok, const std::string& where, const std::string& what) {
-  errno = 0;
-  char* end = nullptr;
-  const double v = std::strtod(tok.c_str(), &end);
-  if (tok.empty() || end != tok.c_str() + tok.size() || errno == ERANGE)
-    throw InputError(where + ": '" + tok + "' is not a number; valid: " + what);
-  if (!std::isfinite(v)) throw InputError(where + ": '" + tok + "' is not finite; valid: " + what);
-  return v;
+  double v = 0.0;
+  if (read_decimal(tok, &v)) return v;
+  if (names_non_finite(tok))
+    throw InputError(where + ": '" + tok + "' is not finite; valid: " + what);
+  throw InputError(where + ": '" + tok + "' is not a number; valid: " + what + ", each " +
+                   kNumberForm);
 }
 
 std::vector<std::string> split(const std::string& s) {
@@ -77,15 +83,21 @@ std::optional<AccelUnits> header_units(const std::string& line) {
   return std::nullopt;
 }
 
+// The units of the values and where they come from ("stated by the header on line 3").
+struct Units {
+  AccelUnits units;
+  std::string source;
+};
+
 // The units from the spec and the header, which must agree; one of them must exist.
-AccelUnits resolve_units(const MotionFileSpec& spec, std::optional<AccelUnits> header,
-                         int header_line) {
+Units resolve_units(const MotionFileSpec& spec, std::optional<AccelUnits> header, int header_line) {
   if (spec.units && header && *spec.units != *header)
     throw InputError(at(spec.path, header_line) + ": the header states units " +
                      units_name(*header) + " but " + units_name(*spec.units) +
                      " were given; give matching units or none");
-  if (spec.units) return *spec.units;
-  if (header) return *header;
+  if (header) return {*header, "as the header states on line " + std::to_string(header_line)};
+  if (spec.units)
+    return {*spec.units, "as given (units = " + std::string(units_name(*spec.units)) + ")"};
   throw InputError(spec.path +
                    ":1: the units of acceleration are not stated in the header; give units "
                    "g, m/s2 or cm/s2");
@@ -100,10 +112,32 @@ void check_not_empty(const std::vector<double>& a, const MotionFileSpec& spec, i
                      ": the record holds one value; valid: at least 2 values");
 }
 
-GroundMotion finish(const MotionFileSpec& spec, std::vector<double> a, double dt,
-                    AccelUnits units) {
-  const double f = to_m_per_s2(units);
-  for (double& x : a) x *= f;
+// A peak acceleration outside [kMinPlausiblePga, kMaxPlausiblePga] is refused: the record's
+// units or values are wrong (1e30 g), or it holds no motion (all zero), unless the spec turns
+// the check off.
+void check_plausible_pga(const MotionFileSpec& spec, const std::vector<double>& a_mps2,
+                         const Units& u) {
+  double pga = 0.0;
+  for (double x : a_mps2) pga = std::max(pga, std::fabs(x));
+  if (!spec.check_pga || (pga >= kMinPlausiblePga && pga <= kMaxPlausiblePga)) return;
+  char text[160];
+  std::snprintf(text, sizeof text, "%.6g g (%.6g m/s2)", pga / kGravity, pga);
+  throw InputError(spec.path + ": peak ground acceleration " + text + " with the values read as " +
+                   units_name(u.units) + " " + u.source +
+                   ", which is not plausible for a ground motion; valid: a peak between 1e-06 g "
+                   "and 10 g. Check the units and the values, or give " +
+                   spec.check_pga_key + " to accept the record");
+}
+
+GroundMotion finish(const MotionFileSpec& spec, std::vector<double> a, double dt, const Units& u) {
+  const double f = to_m_per_s2(u.units);
+  for (double& x : a) {
+    if (!std::isfinite(x * f))  // 1e308 g: finite as written, not in m/s2
+      throw InputError(spec.path + ": the value " + std::to_string(x) + " " + units_name(u.units) +
+                       " is beyond the range of a double in m/s2; valid: finite accelerations");
+    x *= f;
+  }
+  check_plausible_pga(spec, a, u);
   return GroundMotion{spec.path, dt, std::move(a)};
 }
 
@@ -114,25 +148,22 @@ GroundMotion read_at2(const MotionFileSpec& spec, const std::vector<Line>& lines
     throw InputError(at(spec.path, int(lines.size())) +
                      ": a PEER .AT2 file needs 4 header lines; the file is shorter");
   const std::optional<AccelUnits> hu = header_units(lines[2].text);  // "UNITS OF G"
-  const AccelUnits units = resolve_units(spec, hu, 3);
+  const Units units = resolve_units(spec, hu, 3);
   // Line 4: "NPTS=  5590, DT=   .0050 SEC" or "5590   0.0050   NPTS, DT".
   const std::string h = lower(lines[3].text);
   const std::string where4 = at(spec.path, 4);
-  long npts = -1;
-  double dt = -1.0;
+  double n = -1.0, dt = -1.0;
   const auto pn = h.find("npts=");
   const auto pd = h.find("dt=");
+  bool read = false;
   if (pn != std::string::npos && pd != std::string::npos) {
-    npts = std::strtol(h.c_str() + pn + 5, nullptr, 10);
-    dt = std::strtod(h.c_str() + pd + 3, nullptr);
+    read = read_decimal_at(h, pn + 5, &n) && read_decimal_at(h, pd + 3, &dt);
   } else {
     const auto tok = split(h);
-    if (tok.size() >= 2) {
-      npts = std::strtol(tok[0].c_str(), nullptr, 10);
-      dt = std::strtod(tok[1].c_str(), nullptr);
-    }
+    read = tok.size() >= 2 && read_decimal(tok[0], &n) && read_decimal(tok[1], &dt);
   }
-  if (npts < 0 || !(dt > 0.0) || !std::isfinite(dt))
+  const long npts = read && n >= 0.0 && n == std::floor(n) && n < 1e15 ? long(n) : -1;
+  if (npts < 0 || !(dt > 0.0))
     throw InputError(where4 +
                      ": cannot read NPTS and DT; valid: 'NPTS= n, DT= dt SEC' or "
                      "'n dt NPTS, DT'");
@@ -167,8 +198,7 @@ GroundMotion read_fixed_width(const MotionFileSpec& spec, const std::vector<Line
   constexpr std::size_t kWidth = 10;  // FORTRAN F10.5 fields
   std::optional<AccelUnits> hu;
   int units_line = 1;
-  long npts = -1;
-  double dt = -1.0;
+  double n = -1.0, dt = -1.0;
   std::size_t i = 0;
   for (; i < lines.size() && !lines[i].text.empty() && lines[i].text[0] == '#'; ++i) {
     const std::string s = lower(lines[i].text);
@@ -178,16 +208,17 @@ GroundMotion read_fixed_width(const MotionFileSpec& spec, const std::vector<Line
     }
     // "#1559 points at equal spacing of 0.02 sec"
     const auto p = s.find("points at equal spacing of");
-    if (p != std::string::npos) {
-      npts = std::strtol(s.c_str() + 1, nullptr, 10);
-      dt = std::strtod(s.c_str() + p + 26, nullptr);
+    if (p != std::string::npos && !(read_decimal_at(s, 1, &n) && read_decimal_at(s, p + 26, &dt))) {
+      n = -1.0;
+      dt = -1.0;
     }
   }
+  const long npts = n > 0.0 && n == std::floor(n) && n < 1e15 ? long(n) : -1;
   if (npts <= 0 || !(dt > 0.0))
     throw InputError(at(spec.path, 1) +
                      ": no header line 'N points at equal spacing of DT sec'; the fixed-width "
                      "format needs it");
-  const AccelUnits units = resolve_units(spec, hu, units_line);
+  const Units units = resolve_units(spec, hu, units_line);
   std::vector<double> a;
   int last = lines.empty() ? 1 : lines.back().number;
   for (; i < lines.size(); ++i) {
@@ -247,6 +278,10 @@ GroundMotion read_columns(const MotionFileSpec& spec, const std::vector<Line>& l
       continue;
     }
     const auto tok = split(s);
+    if (tok.empty())  // only commas (found by fuzz_motion_columns)
+      throw InputError(where +
+                       ": no number on the line, only separators; valid: one column "
+                       "(acceleration) or two (time in s, acceleration) on every line");
     if (ncol == 0) ncol = tok.size();
     if (ncol > 2 || tok.size() != ncol)
       throw InputError(where + ": " + std::to_string(tok.size()) +
@@ -257,7 +292,7 @@ GroundMotion read_columns(const MotionFileSpec& spec, const std::vector<Line>& l
     line_of.push_back(l.number);
   }
   check_not_empty(a, spec, last);
-  const AccelUnits units = resolve_units(spec, hu, units_line);
+  const Units units = resolve_units(spec, hu, units_line);
   double dt = 0.0;
   if (ncol == 2) {
     const std::size_t n = t.size();

@@ -33,12 +33,24 @@ struct MotionFileSpec {
   std::optional<AccelUnits> units;
   /// Sample spacing [s]; required for one-column files unless the header states it.
   double dt = 0.0;
+  /// Refuse a record whose peak acceleration lies outside [kMinPlausiblePga,
+  /// kMaxPlausiblePga] (wrong units or values, or no motion at all), naming the units the
+  /// values were read in and where they came from.
+  bool check_pga = true;
+  /// How the user turns that check off, for its error message.
+  std::string check_pga_key = "[motion] check_pga = false";
 };
+
+/// Bounds of a plausible peak ground acceleration [m/s^2]: 1e-6 g (far below any felt
+/// motion) and 10 g (above the largest recorded, about 4 g in Iwate-Miyagi 2008).
+inline constexpr double kMinPlausiblePga = 1e-6 * kGravity;
+inline constexpr double kMaxPlausiblePga = 10.0 * kGravity;
 
 /// Reads a record; the acceleration is converted to m/s^2 (g -> kGravity). The name is the
 /// file path. Throws InputError naming the file and line on: a file that cannot be opened, a
 /// non-numeric or non-finite value, a non-uniform time step, a missing or conflicting unit or
-/// dt, a value count different from the header's, and an empty record.
+/// dt, a value count different from the header's, an empty record, a directory, and (with
+/// check_pga) a peak acceleration that is not plausible.
 GroundMotion read_motion(const MotionFileSpec& spec);
 
 /// "g", "m/s2" (also "m/s^2"), "cm/s2" (also "cm/s^2", "gal"). Throws InputError

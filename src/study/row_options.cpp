@@ -49,6 +49,9 @@ std::vector<OptionSpec> row_option_specs() {
       {"motion.scale", "-", "1", "factor applied to the record"},
       {"motion.duration", "s", "", "use only the first seconds of the record"},
       {"motion.baseline", "", "false", "baseline-correct the record (true/false)"},
+      {"motion.check_pga", "", "true",
+       "refuse a record whose peak acceleration is above 10 g or below 1e-6 g (wrong units or "
+       "values); false accepts it (true/false)"},
       {"integrator", "", "",
        "shorthand: event (adaptive steps, fine only through contacts) or fixed (with --dt)"},
       {"dt", "s", "", "shorthand for the fixed step (integrator.dt, sears.dt)"},
@@ -209,14 +212,19 @@ IntegratorSettings integrator_from_options(const Options& opt) {
   return s;
 }
 
-GroundMotion motion_from_options(const Options& opt) {
+MotionFileSpec motion_file_spec(const Options& opt, const std::string& path) {
   MotionFileSpec spec;
-  spec.path = opt.get_path("motion.file");
+  spec.path = path;
   spec.format = parse_motion_format(opt.get_string("motion.format"), opt.where("motion.format"));
   if (opt.given("motion.units"))
     spec.units = parse_accel_units(opt.get_string("motion.units"), opt.where("motion.units"));
   if (opt.given("motion.dt")) spec.dt = opt.get_positive("motion.dt");
-  GroundMotion g = read_motion(spec);
+  spec.check_pga = parse_bool(opt, "motion.check_pga");
+  return spec;
+}
+
+GroundMotion motion_from_options(const Options& opt) {
+  GroundMotion g = read_motion(motion_file_spec(opt, opt.get_path("motion.file")));
   if (opt.given("motion.duration")) g = truncate(g, opt.get_positive("motion.duration"));
   const double s = opt.get_double("motion.scale");
   if (!(s > 0)) throw opt.invalid("motion.scale", "valid: a factor > 0");

@@ -6,6 +6,7 @@
 
 #include "io/options.hpp"
 #include "motion/ground_motion.hpp"
+#include "motion/motion_reader.hpp"
 #include "simulation/contact_spec.hpp"
 #include "solver/integrator_settings.hpp"
 #include "structure/building_row.hpp"
@@ -22,6 +23,8 @@ BuildingRow row_from_options(const Options& opt);
 /// stiffness of the row).
 ContactSpec contact_from_options(const Options& opt, const BuildingRow& row);
 IntegratorSettings integrator_from_options(const Options& opt);
+/// The record file's format, units, dt and plausibility check from the [motion] keys.
+MotionFileSpec motion_file_spec(const Options& opt, const std::string& path);
 /// Reads, truncates, scales and (optionally) baseline-corrects the record.
 GroundMotion motion_from_options(const Options& opt);
 

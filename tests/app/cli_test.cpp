@@ -206,4 +206,41 @@ TEST_F(Cli, HelpListsUnitsAndDefaults) {
   EXPECT_NE(r.out.find("(default lve)"), std::string::npos);
 }
 
+// Issue 14, a new user's trial: each rough edge is a fix with its test.
+TEST_F(Cli, HexadecimalMassOnTheCommandLineIsRefused) {
+  expect_error(study() + " --building1.masses 0x10,1000",
+               {"--building1.masses", "'0x10' is not a finite number",
+                "a decimal number such as 16, -0.5 or 2.1e9", "[kg]"});
+  expect_error(study() + " --pair1.gap inf", {"--pair1.gap", "'inf'", "[m]"});
+}
+
+TEST_F(Cli, StudySavedWithAByteOrderMarkRuns) {
+  const std::string path = study();
+  std::ifstream in(path);
+  const std::string text((std::istreambuf_iterator<char>(in)), {});
+  std::ofstream(path) << "\xEF\xBB\xBF" << text;
+  const CmdResult r = run_pound("simulate --config " + path + " --json");
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"disp_amplification\""), std::string::npos);
+}
+
+TEST_F(Cli, DirectoryGivenAsTheMotionFileIsNamedSo) {
+  expect_error(study(motion_, dir_.string()),
+               {dir_.string() + ": is a directory, not a motion file"});
+}
+
+TEST_F(Cli, ImplausibleRecordIsRefusedUnlessTheCheckIsOff) {
+  const std::string rec = (dir_ / "huge.txt").string();
+  std::ofstream(rec) << "# units: g\n# dt: 0.01\n0.0\n1e30\n-1e30\n0.0\n";
+  expect_error(study(motion_, rec),
+               {"huge.txt: peak ground acceleration 1e+30 g",
+                "read as g as the header states on line 1", "[motion] check_pga = false"});
+  // With the check off the record is read (here scaled back to 1 g) and simulated.
+  const CmdResult r = run_pound("simulate --config " + study(motion_, rec) +
+                                " --motion.check_pga false --motion.scale 1e-30");
+  EXPECT_EQ(r.code, 0) << r.err;
+  expect_error(study(motion_, rec) + " --motion.check_pga maybe",
+               {"--motion.check_pga", "true or false"});
+}
+
 }  // namespace

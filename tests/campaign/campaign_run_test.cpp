@@ -205,8 +205,14 @@ TEST(CampaignRun, SigtermStopsCleanlyAndTheRunResumes) {
   const std::string ref = dir() + "/ref2.h5", cut = dir() + "/term.h5";
   const std::string n = "--samples 160";
   ASSERT_EQ(sh(pound(n + " --out " + ref)), 0);
-  const pid_t pid = start_campaign(n + " --out " + cut);
-  std::this_thread::sleep_for(std::chrono::milliseconds(600));
+  // SIGTERM once the campaign says that it has started (every rank runs with its handlers),
+  // however long MPI start-up takes on this machine.
+  const std::string started = dir() + "/term.started";
+  const pid_t pid = start_campaign(n + " --out " + cut + " --started-file " + started);
+  const auto t0 = std::chrono::steady_clock::now();
+  while (!fs::exists(started) && std::chrono::steady_clock::now() - t0 < std::chrono::seconds(120))
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  ASSERT_TRUE(fs::exists(started)) << "the campaign did not start within 120 s";
   const int status = signal_and_wait(pid, SIGTERM);
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 0);

@@ -33,8 +33,8 @@ std::string error_of(const std::vector<std::string>& args, const std::string& ke
 
 TEST(Options, NumberedKeyErrorsNameTheirOwnBuildings) {
   EXPECT_EQ(error_of({"--pair2.gap", "abc"}, "pair2.gap"),
-            "command line: --pair2.gap: 'abc' is not a finite number; expected at-rest gap "
-            "between building 2 and 3 [m]");
+            "command line: --pair2.gap: 'abc' is not a finite number (valid: a decimal number "
+            "such as 16, -0.5 or 2.1e9); expected at-rest gap between building 2 and 3 [m]");
   EXPECT_EQ(error_of({"--building12.masses", "1e3,x"}, "building12.masses").substr(0, 40),
             "command line: --building12.masses: 'x' i");
   EXPECT_NE(error_of({"--building12.masses", "1e3,x"}, "building12.masses")
@@ -42,8 +42,8 @@ TEST(Options, NumberedKeyErrorsNameTheirOwnBuildings) {
             std::string::npos);
   // A dimensionless key shows no unit.
   EXPECT_EQ(error_of({"--contact.e", "half"}, "contact.e"),
-            "command line: --contact.e: 'half' is not a finite number; expected coefficient of "
-            "restitution, in (0, 1]");
+            "command line: --contact.e: 'half' is not a finite number (valid: a decimal number "
+            "such as 16, -0.5 or 2.1e9); expected coefficient of restitution, in (0, 1]");
 }
 
 TEST(Options, MissingNumberedKeyNamesTheFileAndTheBuilding) {
@@ -94,6 +94,56 @@ TEST(Options, UnknownCommandLineKeyListsItsSection) {
               "command line: unknown option '--pair1.gpa' for 'pound simulate'; valid keys: "
               "pair#.gap");
   }
+}
+
+TEST(Options, HexadecimalMassIsRefusedWithTheKeyAndTheValidForm) {
+  // strtod reads 0x10 as 16: a user's "0x10 kg" must not become 16 kg.
+  const std::string m = error_of({"--building1.masses", "0x10"}, "building1.masses");
+  EXPECT_EQ(m,
+            "command line: --building1.masses: '0x10' is not a finite number (valid: a decimal "
+            "number such as 16, -0.5 or 2.1e9); expected floor masses of building 1 [kg]");
+  for (const char* bad : {"inf", "nan", "12kg", "1e", "1000 0x10", "1,2,,3e"})
+    EXPECT_NE(error_of({"--building1.masses", bad}, "building1.masses").find("building1.masses"),
+              std::string::npos)
+        << bad;
+  EXPECT_EQ(error_of({"--building1.masses", "1e3, 2.5E+3 .5"}, "building1.masses"), "");
+}
+
+TEST(Options, StudyFileWithAUtf8ByteOrderMarkIsRead) {
+  const std::string ini = pound::test::process_scratch_dir() / "bom.ini";
+  std::ofstream(ini) << "\xEF\xBB\xBF[pair1]\r\ngap = 0.02\r\n[contact]\r\ne = 0.5\r\n";
+  Options o("simulate", "", specs());
+  o.parse({"--config", ini});
+  EXPECT_DOUBLE_EQ(o.get_double("pair1.gap"), 0.02);
+  EXPECT_EQ(o.where("pair1.gap"), ini + ":2: key 'pair1.gap'");
+  EXPECT_DOUBLE_EQ(o.get_double("contact.e"), 0.5);
+  // Only at the very start: a mark inside the text is no white space.
+  std::ofstream(ini) << "[pair1]\n\xEF\xBB\xBFgap = 0.02\n";
+  Options o2("simulate", "", specs());
+  EXPECT_THROW(o2.parse({"--config", ini}), InputError);
+}
+
+TEST(Options, ADirectoryGivenAsTheStudyFileIsNamedSo) {
+  const std::string d = pound::test::process_scratch_dir().path();
+  Options o("simulate", "", specs());
+  try {
+    o.parse({"--config", d});
+    FAIL() << "a directory was read as a study";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              d + ": is a directory, not a study file; give the study file (INI)");
+  }
+}
+
+// Found by fuzz_study (issue 14): a building number past the range of an int overflowed while
+// counting the buildings (undefined behaviour). It counts as a building past the last one.
+TEST(Options, AHugeBuildingNumberIsCountedWithoutOverflow) {
+  Options o("simulate", "", specs());
+  o.parse({"--building1.masses", "1", "--building2000000000000.masses", "1"});
+  EXPECT_EQ(o.count_numbered("building"), 1000000000);
+  Options p("simulate", "", specs());
+  p.parse({"--building1.masses", "1", "--building12.masses", "1"});
+  EXPECT_EQ(p.count_numbered("building"), 12);
 }
 
 }  // namespace

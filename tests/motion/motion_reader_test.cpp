@@ -5,9 +5,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "../support/scratch_dir.hpp"
 #include "core/error.hpp"
@@ -174,6 +177,95 @@ TEST(MotionReader, ParseUnits) {
                  "study.ini:3: key 'units': 'ft/s2' is not a unit of acceleration; valid: g, "
                  "m/s2, cm/s2");
   }
+}
+
+TEST(MotionReader, ADirectoryIsNamedSo) {
+  MotionFileSpec spec;
+  spec.path = test::process_scratch_dir().path();
+  spec.units = AccelUnits::g;
+  spec.dt = 0.01;
+  EXPECT_EQ(error_of(spec),
+            spec.path + ": is a directory, not a motion file; give the record file itself");
+}
+
+TEST(MotionReader, Utf8ByteOrderMarkBeforeTheFirstLineIsSkipped) {
+  MotionFileSpec spec;
+  spec.path = write_temp("bom.txt", "\xEF\xBB\xBF# units: g\n# dt: 0.01\n0.1\n-0.2\n0.05\n");
+  const GroundMotion m = read_motion(spec);
+  ASSERT_EQ(m.accel.size(), 3u);
+  EXPECT_DOUBLE_EQ(m.accel[1], -0.2 * kGravity);
+  EXPECT_DOUBLE_EQ(m.dt, 0.01);
+}
+
+TEST(MotionReader, HexadecimalValuesAndHeaderFieldsAreRefused) {
+  MotionFileSpec spec;
+  spec.path = write_temp("hex.txt", "0.1\n0x10\n0.2\n");
+  spec.units = AccelUnits::g;
+  spec.dt = 0.01;
+  EXPECT_NE(error_of(spec).find("hex.txt:2: '0x10' is not a number; valid: an acceleration value, "
+                                "each a decimal number such as 16, -0.5 or 2.1e9"),
+            std::string::npos)
+      << error_of(spec);
+  spec = MotionFileSpec{};
+  spec.path = write_temp("hex.AT2",
+                         "PEER NGA STRONG MOTION DATABASE RECORD\nevent\n"
+                         "ACCELERATION TIME SERIES IN UNITS OF G\nNPTS= 0x3, DT= .01 SEC\n"
+                         "0.1 0.2 0.3\n");
+  EXPECT_NE(error_of(spec).find("hex.AT2:4: cannot read NPTS and DT"), std::string::npos)
+      << error_of(spec);
+}
+
+// A record whose values are in the wrong units (1e30 g, or m/s2 values read as g on a
+// micro-tremor) is refused with the units the reader assumed and where they came from.
+TEST(MotionReader, ImplausiblePeakAccelerationIsRefusedWithTheAssumedUnits) {
+  MotionFileSpec spec;
+  spec.path = write_temp("huge.txt", "# units: g\n# dt: 0.01\n0.1\n1e30\n-0.3\n");
+  std::string e = error_of(spec);
+  EXPECT_NE(e.find("huge.txt: peak ground acceleration 1e+30 g (9.80665e+30 m/s2) with the values "
+                   "read as g as the header states on line 1"),
+            std::string::npos)
+      << e;
+  EXPECT_NE(e.find("valid: a peak between 1e-06 g and 10 g"), std::string::npos) << e;
+  EXPECT_NE(e.find("[motion] check_pga = false"), std::string::npos) << e;
+  // Units given by the caller: the message says so.
+  spec.path = write_temp("cm.txt", "# dt: 0.01\n0.1\n2e6\n-0.3\n");
+  spec.units = AccelUnits::cm_per_s2;
+  e = error_of(spec);
+  EXPECT_NE(e.find("with the values read as cm/s2 as given (units = cm/s2)"), std::string::npos)
+      << e;
+  // Below 1e-6 g: all zeros, or values in m/s2 of a record in mm.
+  spec.path = write_temp("zero.txt", "# units: m/s2\n# dt: 0.01\n0\n0\n0\n");
+  spec.units.reset();
+  e = error_of(spec);
+  EXPECT_NE(e.find("peak ground acceleration 0 g (0 m/s2)"), std::string::npos) << e;
+  // The bounds themselves are plausible; just outside them is not.
+  for (const auto& [peak_g, ok] : std::vector<std::pair<double, bool>>{
+           {10.0, true}, {1e-6, true}, {10.0 * (1 + 1e-9), false}, {1e-6 * (1 - 1e-9), false}}) {
+    char text[64];
+    std::snprintf(text, sizeof text, "# units: g\n# dt: 0.01\n0\n%.17g\n", peak_g);
+    spec.path = write_temp("edge.txt", text);
+    EXPECT_EQ(error_of(spec).empty(), ok) << peak_g << ": " << error_of(spec);
+  }
+  // The unusual case: the check turned off.
+  spec.path = write_temp("huge2.txt", "# units: g\n# dt: 0.01\n0.1\n1e30\n-0.3\n");
+  spec.check_pga = false;
+  const GroundMotion m = read_motion(spec);
+  EXPECT_DOUBLE_EQ(m.accel[1], 1e30 * kGravity);
+}
+
+// Found by fuzz_motion_columns (issue 14): a line of only separators read the last token of an
+// empty list (undefined behaviour) instead of being refused.
+TEST(MotionReader, ALineOfOnlyCommasIsRefused) {
+  MotionFileSpec spec;
+  spec.units = AccelUnits::g;
+  spec.dt = 0.01;
+  spec.path = write_temp("commas.txt", ", \n");  // the fuzzer's input, less its last byte
+  EXPECT_EQ(error_of(spec), spec.path +
+                                ":1: no number on the line, only separators; valid: one column "
+                                "(acceleration) or two (time in s, acceleration) on every line");
+  spec.path = write_temp("commas2.txt", "0.1\n0.2\n,,\n0.3\n");
+  EXPECT_NE(error_of(spec).find("commas2.txt:3: no number on the line"), std::string::npos)
+      << error_of(spec);
 }
 
 }  // namespace
