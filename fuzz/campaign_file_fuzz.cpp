@@ -1,5 +1,7 @@
-// libFuzzer harness: the campaign-file readers of `pound fragility` (read_campaign) and
-// `pound merge` (merge_campaign_parts), given the input bytes as a file. Only InputError may
+// libFuzzer harness: the campaign-file readers of `pound fragility` and `pound risk`
+// (read_campaign), `pound merge` (merge_campaign_parts, which also computes the joined file's
+// /amplification) and `pound summary` (read_amplification, or compute_amplification for a file
+// without the group), given the input bytes as a file. Only InputError may
 // leave them, and every HDF5 object they open (file, group, dataset, attribute) must be closed
 // again. The HDF5 library itself (Debian's libhdf5 1.10.8) is not instrumented: the sanitizers
 // watch pound's code, and a fault inside HDF5 still ends the run as a crash. LeakSanitizer is
@@ -12,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "campaign/amplification_file.hpp"
 #include "campaign/journal.hpp"
 #include "campaign/merge.hpp"
 #include "campaign/result_file.hpp"
@@ -56,9 +59,30 @@ extern "C" int LLVMFuzzerInitialize(int* argc, char*** argv) {
   fuzz::write_prepared(dir, "seeds/whole.h5", result_file(0, 4));
   fuzz::write_prepared(dir, "seeds/part.h5", result_file(1, 3));
   std::string dict;
-  for (const char* w : {"\x89HDF\r\n\x1a\n", "/samples", "/response", "/run", "status", "im",
-                        "scale", "sample_range", "study", "seed", "samples", "peak_force",
-                        "peak_drift_pounding", "im_levels_mps2", "building_names", "0:4", "1:3"})
+  for (const char* w : {"\x89HDF\r\n\x1a\n",
+                        "/samples",
+                        "/response",
+                        "/run",
+                        "status",
+                        "im",
+                        "scale",
+                        "sample_range",
+                        "study",
+                        "seed",
+                        "samples",
+                        "peak_force",
+                        "peak_drift_pounding",
+                        "im_levels_mps2",
+                        "building_names",
+                        "0:4",
+                        "1:3",
+                        "/amplification",
+                        "design",
+                        "stripes",
+                        "bins",
+                        "count",
+                        "median",
+                        "approach_free"})
     dict += fuzz::dict_entry(w);
   fuzz::write_prepared(dir, "dict", dict);
   std::exit(0);
@@ -73,6 +97,26 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     merge_campaign_parts({path}, fuzz::scratch() + "/merged.h5");
   } catch (const InputError&) {
+  }
+  if (H5Fis_hdf5(path.c_str()) > 0) {
+    const hid_t f = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    if (f >= 0) {
+      try {
+        AmplificationTable t;
+        if (read_amplification(f, path, &t)) {
+          // What pound summary indexes: every array sized by the groups and shapes read.
+          for (const auto& m : t.measures)
+            if (m.median.size() != t.groups * t.buildings * t.floors)
+              fuzz::fail("an amplification table of the wrong size was read");
+          if (t.force_median.size() != t.groups * t.pairs * t.levels)
+            fuzz::fail("a contact table of the wrong size was read");
+        } else {
+          compute_amplification(f, path);
+        }
+      } catch (const InputError&) {
+      }
+      H5Fclose(f);
+    }
   }
   // Every HDF5 object the readers opened must be closed again: one left open would hold the
   // file (and its cached metadata) into the next input.

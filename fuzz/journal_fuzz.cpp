@@ -23,7 +23,7 @@ namespace {
 
 using namespace pound;
 
-constexpr std::size_t kHeaderBytes = 40;  // "POUNDJ02" and four u64 (campaign/journal.hpp)
+constexpr std::size_t kHeaderBytes = 40;  // the magic and four u64 (campaign/journal.hpp)
 
 const CampaignStudy& study() {
   static const CampaignStudy st = fuzz::smoke_study();

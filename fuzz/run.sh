@@ -22,7 +22,7 @@ fi
 seconds=$1
 shift
 all=(fuzz_study fuzz_motion_at2 fuzz_motion_columns fuzz_motion_fixed_width fuzz_motion_auto
-     fuzz_journal fuzz_campaign_file)
+     fuzz_journal fuzz_campaign_file fuzz_hazard)
 harnesses=("$@")
 [[ ${#harnesses[@]} -gt 0 ]] || harnesses=("${all[@]}")
 repo=${FUZZ_REPO:-$here}
@@ -42,6 +42,7 @@ seed_dirs() {  # the repository's seeds of a harness
   case $1 in
     fuzz_study) echo "$repo/studies $repo/fuzz/seeds/study" ;;
     fuzz_motion_*) echo "$repo/motions $repo/fuzz/seeds/motion" ;;
+    fuzz_hazard) echo "$repo/studies" ;;
   esac
 }
 

@@ -48,14 +48,6 @@ class Dataset {
   Dataset& operator=(const Dataset&) = delete;
   const std::vector<hsize_t>& dims() const { return dims_; }
 
-  // The whole of a 1-D dataset, converted to T's native type.
-  template <class T>
-  std::vector<T> all(hid_t mem_type) const {
-    std::vector<T> v(dims_.empty() ? 0 : dims_[0]);
-    if (!v.empty() && H5Dread(id_, mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) < 0)
-      throw InputError("HDF5: reading " + name_ + " failed");
-    return v;
-  }
   // Rows [row, row + count) of a 1-D dataset, converted to T's native type.
   template <class T>
   void rows1(hsize_t row, hsize_t count, hid_t mem_type, std::vector<T>& out) const {
@@ -338,90 +330,68 @@ void write_amplification(hid_t file, const AmplificationTable& t) {
 }
 
 bool read_amplification(hid_t file, const std::string& path, AmplificationTable* t) {
-  if (H5Lexists(file, "/amplification", H5P_DEFAULT) <= 0) return false;
-  std::string design;
-  {
-    const hid_t a = H5Aopen_by_name(file, "/amplification", "design", H5P_DEFAULT, H5P_DEFAULT);
-    if (a >= 0) {
-      const hid_t ty = H5Aget_type(a);
-      const hid_t mem = H5Tcopy(H5T_C_S1);
-      H5Tset_size(mem, H5T_VARIABLE);
-      H5Tset_cset(mem, H5Tget_cset(ty));
-      char* s = nullptr;
-      if (H5Aread(a, mem, &s) >= 0 && s) design = s;
-      H5free_memory(s);
-      H5Tclose(mem);
-      H5Tclose(ty);
-      H5Aclose(a);
-    }
-    const hid_t b = H5Aopen_by_name(file, "/amplification", "failed", H5P_DEFAULT, H5P_DEFAULT);
-    if (b >= 0) {
-      double x = 0.0;
-      H5Aread(b, H5T_NATIVE_DOUBLE, &x);
-      t->failed_total = long(x);
-      H5Aclose(b);
-    }
-  }
-  t->stripes = design != "bins";
   const std::string root = "/amplification";
-  t->im = Dataset(file, root + "/im", path).all<double>(H5T_NATIVE_DOUBLE);
-  t->im_lo = Dataset(file, root + "/im_lo", path).all<double>(H5T_NATIVE_DOUBLE);
-  t->im_hi = Dataset(file, root + "/im_hi", path).all<double>(H5T_NATIVE_DOUBLE);
-  t->samples = Dataset(file, root + "/samples", path).all<long>(H5T_NATIVE_LONG);
-  t->failed = Dataset(file, root + "/failed", path).all<long>(H5T_NATIVE_LONG);
-  t->groups = t->im.size();
-  // A 3-D dataset read whole (it is small: groups x buildings x floors).
-  auto whole = [&](const std::string& name, hid_t type, void* out, std::vector<hsize_t>* dims) {
-    const Dataset d(file, name, path);
-    if (d.dims().size() != 3) throw InputError(path + ": " + name + " is not [G, a, b]");
-    *dims = d.dims();
-    const hid_t ds = H5Dopen2(file, name.c_str(), H5P_DEFAULT);
-    const herr_t st = H5Dread(ds, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, out);
-    H5Dclose(ds);
-    if (st < 0) throw InputError(path + ": reading " + name + " failed");
+  if (H5Lexists(file, root.c_str(), H5P_DEFAULT) <= 0) return false;
+  const std::string kind = "not the /amplification group of 'pound campaign' (docs/campaign.md)";
+  auto bad = [&](const std::string& what) { return InputError(path + ": " + root + what); };
+  const std::string design = h5::attribute_text(file, root, "design");
+  if (design != "stripes" && design != "bins")
+    throw bad(" has no attribute design = stripes or bins; " + kind);
+  t->stripes = design == "stripes";
+  const std::string failed = h5::attribute_text(file, root, "failed");
+  t->failed_total = failed.empty() ? 0 : long(parse_number(failed, path + ": " + root + ":failed"));
+  // Every array has G rows (the groups of /amplification/im) and every 3-D array of a kind the
+  // same shape: a damaged file is refused before anything is indexed.
+  std::vector<hsize_t> dims;
+  auto one_d = [&](const std::string& name) {
+    std::vector<double> v = h5::read_numbers(file, root + name, path, &dims, kind);
+    if (dims.size() != 1 || (name != "/im" && v.size() != t->groups))
+      throw bad(name + " is not one value per group of /amplification/im; " + kind);
+    return v;
   };
-  auto sized = [](const std::vector<hsize_t>& d) { return std::size_t(d[0] * d[1] * d[2]); };
+  auto as_longs = [](const std::vector<double>& v) {
+    return std::vector<long>(v.begin(), v.end());
+  };
+  t->im = one_d("/im");
+  t->groups = t->im.size();
+  t->im_lo = one_d("/im_lo");
+  t->im_hi = one_d("/im_hi");
+  t->samples = as_longs(one_d("/samples"));
+  t->failed = as_longs(one_d("/failed"));
+  // A 3-D array [G, a, b]; its a and b when `shape` is empty, else they must be those.
+  auto three_d = [&](const std::string& name, std::vector<hsize_t>& shape) {
+    std::vector<double> v = h5::read_numbers(file, root + name, path, &dims, kind);
+    if (dims.size() != 3 || dims[0] != t->groups || (!shape.empty() && dims != shape))
+      throw bad(name + " is not of the shape [groups, " +
+                (shape.empty() ? std::string("a, b")
+                               : std::to_string(shape[1]) + ", " + std::to_string(shape[2])) +
+                "]; " + kind);
+    shape = dims;
+    return v;
+  };
   t->measures.clear();
+  std::vector<hsize_t> floors;
   for (const Measure& m : kMeasures) {
     AmplificationMeasure a;
     a.name = m.name;
-    const std::string p = root + "/" + m.name;
-    std::vector<hsize_t> dims;
-    {
-      const Dataset d(file, p + "/count", path);
-      dims = d.dims();
-    }
-    if (dims.size() != 3) throw InputError(path + ": " + p + "/count is not [G, B, F]");
-    t->buildings = dims[1];
-    t->floors = dims[2];
-    a.count.resize(sized(dims));
-    whole(p + "/count", H5T_NATIVE_LONG, a.count.data(), &dims);
-    for (auto [v, name] : {std::pair{&a.mean, "/mean"},
-                           {&a.median, "/median"},
-                           {&a.p16, "/p16"},
-                           {&a.p84, "/p84"},
-                           {&a.fraction_above_1, "/fraction_above_1"}}) {
-      v->resize(sized(dims));
-      whole(p + name, H5T_NATIVE_DOUBLE, v->data(), &dims);
-    }
+    const std::string p = std::string("/") + m.name;
+    a.count = as_longs(three_d(p + "/count", floors));
+    a.mean = three_d(p + "/mean", floors);
+    a.median = three_d(p + "/median", floors);
+    a.p16 = three_d(p + "/p16", floors);
+    a.p84 = three_d(p + "/p84", floors);
+    a.fraction_above_1 = three_d(p + "/fraction_above_1", floors);
     t->measures.push_back(std::move(a));
   }
-  std::vector<hsize_t> dims;
-  {
-    const Dataset d(file, root + "/contact/count", path);
-    dims = d.dims();
-  }
-  if (dims.size() != 3) throw InputError(path + ": " + root + "/contact/count is not [G, P, L]");
-  t->pairs = dims[1];
-  t->levels = dims[2];
-  t->contact_count.resize(sized(dims));
-  whole(root + "/contact/count", H5T_NATIVE_LONG, t->contact_count.data(), &dims);
-  for (auto [v, name] : {std::pair{&t->pounded_fraction, "/contact/pounded_fraction"},
-                         {&t->force_median, "/contact/force_median"},
-                         {&t->force_median_pounded, "/contact/force_median_pounded"}}) {
-    v->resize(sized(dims));
-    whole(root + name, H5T_NATIVE_DOUBLE, v->data(), &dims);
-  }
+  t->buildings = floors[1];
+  t->floors = floors[2];
+  std::vector<hsize_t> levels;
+  t->contact_count = as_longs(three_d("/contact/count", levels));
+  t->pounded_fraction = three_d("/contact/pounded_fraction", levels);
+  t->force_median = three_d("/contact/force_median", levels);
+  t->force_median_pounded = three_d("/contact/force_median_pounded", levels);
+  t->pairs = levels[1];
+  t->levels = levels[2];
   return true;
 }
 

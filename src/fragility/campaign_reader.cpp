@@ -22,6 +22,9 @@ struct Handle {
   }
 };
 
+const char* const kNotACampaign =
+    "not a campaign result file of 'pound campaign' (schema in src/campaign/result_file.hpp)";
+
 class Reader {
  public:
   explicit Reader(const std::string& path) : path_(path) {
@@ -40,27 +43,7 @@ class Reader {
 
   // A dataset of doubles (any numeric type converts) with its dimensions.
   std::vector<double> doubles(const std::string& p, std::vector<hsize_t>* dims = nullptr) const {
-    if (!exists(p)) throw missing(p);
-    Handle ds{H5Dopen2(file_, p.c_str(), H5P_DEFAULT), H5Dclose};
-    Handle sp{H5Dget_space(ds.id), H5Sclose};
-    const int rank = H5Sget_simple_extent_ndims(sp.id);
-    std::vector<hsize_t> d(std::size_t(std::max(rank, 0)));
-    H5Sget_simple_extent_dims(sp.id, d.data(), nullptr);
-    // Found by fuzz_campaign_file: a damaged file may declare more values than it stores
-    // (10^18 rows), which no vector holds; a file of pound campaign stores every value.
-    hsize_t count = 1;
-    for (hsize_t x : d) count = x != 0 && count > ~hsize_t{0} / x ? ~hsize_t{0} : count * x;
-    const Handle type{H5Dget_type(ds.id), H5Tclose};
-    const std::size_t bytes = H5Tget_size(type.id);
-    if (count && (bytes == 0 || count > H5Dget_storage_size(ds.id) / bytes))
-      throw InputError(path_ + ": " + p + " declares " + std::to_string(count) +
-                       " values but the file does not store them; a damaged file or not a "
-                       "campaign result file of 'pound campaign'");
-    std::vector<double> v(count);
-    if (count && H5Dread(ds.id, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) < 0)
-      throw InputError(path_ + ": cannot read " + p + " as numbers");
-    if (dims) *dims = d;
-    return v;
+    return h5::read_numbers(file_, p, path_, dims, kNotACampaign);
   }
 
   bool is_numeric(const std::string& p) const {
@@ -81,9 +64,7 @@ class Reader {
   }
 
   InputError missing(const std::string& what) const {
-    return InputError(path_ + ": no " + what +
-                      "; not a campaign result file of 'pound campaign' "
-                      "(schema in src/campaign/result_file.hpp)");
+    return InputError(path_ + ": no " + what + "; " + kNotACampaign);
   }
 
  private:

@@ -1,5 +1,6 @@
 #include "io/h5.hpp"
 
+#include <algorithm>
 #include <cstdlib>
 #include <cstring>
 #include <sstream>
@@ -141,8 +142,14 @@ void attribute(hid_t file, const std::string& object, const std::string& name, d
 }
 
 std::string root_attribute_text(hid_t file, const std::string& name) {
-  if (H5Aexists(file, name.c_str()) <= 0) return "";
-  const hid_t a = H5Aopen(file, name.c_str(), H5P_DEFAULT);
+  return attribute_text(file, "/", name);
+}
+
+std::string attribute_text(hid_t file, const std::string& object, const std::string& name) {
+  if (H5Lexists(file, object.c_str(), H5P_DEFAULT) <= 0 && object != "/") return "";
+  if (H5Aexists_by_name(file, object.c_str(), name.c_str(), H5P_DEFAULT) <= 0) return "";
+  const hid_t a = H5Aopen_by_name(file, object.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT);
+  if (a < 0) return "";
   const hid_t t = H5Aget_type(a);
   const hid_t space = H5Aget_space(a);
   const hssize_t n = H5Sget_simple_extent_npoints(space);
@@ -173,6 +180,45 @@ std::string root_attribute_text(hid_t file, const std::string& name) {
   H5Tclose(t);
   H5Aclose(a);
   return out;
+}
+
+std::vector<double> read_numbers(hid_t file, const std::string& dataset, const std::string& path,
+                                 std::vector<hsize_t>* dims, const std::string& missing) {
+  if (H5Lexists(file, dataset.c_str(), H5P_DEFAULT) <= 0)
+    throw InputError(path + ": no " + dataset + "; " + missing);
+  const hid_t ds = H5Dopen2(file, dataset.c_str(), H5P_DEFAULT);
+  if (ds < 0) throw InputError(path + ": " + dataset + " is not a dataset; " + missing);
+  const hid_t sp = H5Dget_space(ds), type = H5Dget_type(ds);
+  const int rank = H5Sget_simple_extent_ndims(sp);
+  std::vector<hsize_t> d(std::size_t(std::max(rank, 0)));
+  if (rank > 0) H5Sget_simple_extent_dims(sp, d.data(), nullptr);
+  // A damaged file may declare more values than it stores (10^18 rows), which no vector holds;
+  // a file pound wrote stores every value.
+  hsize_t count = 1;
+  for (hsize_t x : d) count = x != 0 && count > ~hsize_t{0} / x ? ~hsize_t{0} : count * x;
+  const std::size_t bytes = H5Tget_size(type);
+  const H5T_class_t cls = H5Tget_class(type);
+  std::string error;
+  if (rank < 0) {
+    error = path + ": " + dataset + " has no readable shape; " + missing;
+  } else if (cls != H5T_FLOAT && cls != H5T_INTEGER) {
+    error = path + ": " + dataset + " does not hold numbers; " + missing;
+  } else if (count && (bytes == 0 || count > H5Dget_storage_size(ds) / bytes)) {
+    error = path + ": " + dataset + " declares " + std::to_string(count) +
+            " values but the file does not store them; a damaged file or " + missing;
+  }
+  std::vector<double> v;
+  if (error.empty()) {
+    v.resize(std::size_t(count));
+    if (count && H5Dread(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) < 0)
+      error = path + ": cannot read " + dataset + " as numbers";
+  }
+  H5Tclose(type);
+  H5Sclose(sp);
+  H5Dclose(ds);
+  if (!error.empty()) throw InputError(error);
+  if (dims) *dims = d;
+  return v;
 }
 
 std::vector<std::string> group_members(hid_t file, const std::string& group) {

@@ -49,9 +49,19 @@ void attribute(hid_t file, const std::string& object, const std::string& name,
                const std::string& value);
 void attribute(hid_t file, const std::string& object, const std::string& name, double value);
 
-/// An attribute of the file's root group as text: a string (variable or fixed length) as it
-/// is, a number as the shortest text that reads back the same. "" when absent or unreadable.
+/// An attribute of an object ("/" for the root group) as text: a string (variable or fixed
+/// length) as it is, a number as the shortest text that reads back the same. "" when the
+/// object or the attribute is absent, or it is not one value, or unreadable.
+std::string attribute_text(hid_t file, const std::string& object, const std::string& name);
+/// attribute_text of the root group.
 std::string root_attribute_text(hid_t file, const std::string& name);
+
+/// A whole numeric dataset as doubles (integers convert), row-major, with its dimensions.
+/// Throws InputError naming `path` (the file, for messages) and the dataset when it is absent
+/// (`missing` says what the file should have been), not numeric, unreadable, or declares more
+/// values than the file stores (a damaged file, found by fuzz_campaign_file).
+std::vector<double> read_numbers(hid_t file, const std::string& dataset, const std::string& path,
+                                 std::vector<hsize_t>* dims, const std::string& missing);
 /// The names of the links directly under a group, in name order; empty when it is absent.
 std::vector<std::string> group_members(hid_t file, const std::string& group);
 

@@ -13,6 +13,7 @@
 
 #include "../support/scratch_dir.hpp"
 #include "campaign/amplification_file.hpp"
+#include "core/error.hpp"
 #include "io/h5.hpp"
 
 namespace pound {
@@ -216,6 +217,109 @@ TEST(Amplification, FromAResultFileWithKnownRatios) {
   EXPECT_DOUBLE_EQ(t.force_median[t.site(0, 0, 0)], 14000.0);
   EXPECT_DOUBLE_EQ(t.force_median[t.site(1, 0, 0)], 0.0);
   EXPECT_TRUE(std::isnan(t.force_median_pounded[t.site(1, 0, 0)]));
+}
+
+// A damaged /amplification group (found by reading it as fuzz_campaign_file would: the
+// arrays were read whole into room sized by another array) is refused with one line before
+// anything is indexed.
+TEST(Amplification, ADamagedGroupIsRefusedBeforeAnythingIsIndexed) {
+  const std::string path = test::process_scratch_dir() / "amp-damaged.h5";
+  AmplificationTable good;
+  good.groups = 2;
+  good.buildings = 1;
+  good.floors = 2;
+  good.pairs = 1;
+  good.levels = 1;
+  good.im = good.im_lo = good.im_hi = {1.0, 2.0};
+  good.samples = {3, 3};
+  good.failed = {0, 1};
+  for (const char* m : {"disp", "drift", "accel"}) {
+    AmplificationMeasure a;
+    a.name = m;
+    a.count.assign(4, 3);
+    a.mean = a.median = a.p16 = a.p84 = a.fraction_above_1 = {1.0, 1.1, 1.2, 1.3};
+    good.measures.push_back(a);
+  }
+  good.contact_count = {3, 2};
+  good.pounded_fraction = {0.5, 1.0};
+  good.force_median = good.force_median_pounded = {10.0, 20.0};
+  // Each damage: a name, what it does to the file, and what the message must say.
+  struct Damage {
+    const char* what;
+    void (*apply)(hid_t);
+    const char* says;
+  };
+  const Damage damages[] = {
+      {"a larger mean",
+       [](hid_t f) {
+         H5Ldelete(f, "/amplification/disp/mean", H5P_DEFAULT);
+         put(f, "/amplification/disp/mean", std::vector<double>(12, 1.0), 2, 2, 3);
+       },
+       "/amplification/disp/mean is not of the shape [groups, 1, 2]"},
+      {"fewer groups",
+       [](hid_t f) {
+         H5Ldelete(f, "/amplification/samples", H5P_DEFAULT);
+         h5::write(f, "/amplification/samples", std::vector<double>{3.0}, 1);
+       },
+       "/amplification/samples is not one value per group"},
+      {"a 2-D contact array",
+       [](hid_t f) {
+         H5Ldelete(f, "/amplification/contact/force_median", H5P_DEFAULT);
+         h5::write(f, "/amplification/contact/force_median", std::vector<double>{1, 2}, 2, 1);
+       },
+       "/amplification/contact/force_median is not of the shape [groups, 1, 1]"},
+      {"no design", [](hid_t f) { H5Adelete_by_name(f, "/amplification", "design", H5P_DEFAULT); },
+       "/amplification has no attribute design"},
+      {"text where the mean is",
+       [](hid_t f) {
+         H5Ldelete(f, "/amplification/drift/median", H5P_DEFAULT);
+         const hid_t t = H5Tcopy(H5T_C_S1);
+         H5Tset_size(t, 4);
+         const hsize_t n = 4;
+         const hid_t sp = H5Screate_simple(1, &n, nullptr);
+         const hid_t d = H5Dcreate2(f, "/amplification/drift/median", t, sp, H5P_DEFAULT,
+                                    H5P_DEFAULT, H5P_DEFAULT);
+         H5Dwrite(d, t, H5S_ALL, H5S_ALL, H5P_DEFAULT, "abcdefghijklmnop");
+         H5Dclose(d);
+         H5Sclose(sp);
+         H5Tclose(t);
+       },
+       "/amplification/drift/median does not hold numbers"},
+  };
+  for (const Damage& d : damages) {
+    {
+      h5::File file(path);
+      write_amplification(file.id(), good);
+      d.apply(file.id());
+    }
+    const hid_t f = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    AmplificationTable t;
+    try {
+      read_amplification(f, path, &t);
+      ADD_FAILURE() << d.what << ": read";
+    } catch (const InputError& e) {
+      const std::string m = e.what();
+      EXPECT_NE(m.find(path + ": " + std::string(d.says)), std::string::npos)
+          << d.what << ": " << m;
+      EXPECT_EQ(m.find('\n'), std::string::npos);
+    }
+    H5Fclose(f);
+    EXPECT_EQ(H5Fget_obj_count(H5F_OBJ_ALL, H5F_OBJ_ALL), 0) << d.what;
+  }
+  // The undamaged group reads back as written.
+  {
+    h5::File file(path);
+    write_amplification(file.id(), good);
+  }
+  const hid_t f = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  AmplificationTable t;
+  ASSERT_TRUE(read_amplification(f, path, &t));
+  H5Fclose(f);
+  EXPECT_EQ(t.failed, good.failed);
+  EXPECT_EQ(t.measures[2].median, good.measures[2].median);
+  EXPECT_EQ(t.force_median_pounded, good.force_median_pounded);
+  EXPECT_EQ(t.floors, 2u);
+  EXPECT_TRUE(t.stripes);
 }
 
 }  // namespace

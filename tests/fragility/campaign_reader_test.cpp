@@ -43,7 +43,7 @@ TEST(CampaignReader, ADatasetDeclaringMoreValuesThanTheFileStoresIsRefused) {
       EXPECT_EQ(std::string(e.what()),
                 path + ": /samples/status declares " + std::to_string(rows) +
                     " values but the file does not store them; a damaged file or not a campaign "
-                    "result file of 'pound campaign'");
+                    "result file of 'pound campaign' (schema in src/campaign/result_file.hpp)");
     }
   }
 }
