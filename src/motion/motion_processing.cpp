@@ -2,6 +2,7 @@
 
 #include <Eigen/Dense>
 #include <cmath>
+#include <stdexcept>
 #include <string>
 
 #include "core/error.hpp"
@@ -29,48 +30,71 @@ GroundKinematics integrate(const GroundMotion& motion) {
   return k;
 }
 
-GroundMotion baseline_correct(const GroundMotion& motion) {
-  constexpr int kTerms = 4;  // a_c = (1 - s) (c0 s + c1 s^2 + c2 s^3 + c3 s^4), s = t / T
-  const std::size_t n = motion.accel.size();
-  if (n < 8) return motion;
-  const double T = motion.duration();
+// The correction a_c = (1 - s) (c0 s + c1 s^2 + c2 s^3 + c3 s^4), s = t / T (see the header).
+struct BaselineCorrector::Impl {
+  static constexpr int kTerms = 4;
+  std::size_t n = 0;
+  double dt = 0.0, T = 0.0;
+  Eigen::MatrixXd basis_d;  // displacement of each basis acceleration at the samples
+  Eigen::FullPivLU<Eigen::Matrix<double, kTerms + 2, kTerms + 2>> kkt;
+};
 
-  // Displacement of the record and of each basis acceleration, by the same integrator.
-  std::vector<double> v, d;
-  integrate_samples(motion.accel, motion.dt, v, d);
-  Eigen::MatrixXd basis_d(n, kTerms);
-  Eigen::Vector2d rhs_end(v.back(), d.back());
+BaselineCorrector::BaselineCorrector(std::size_t n, double dt) : impl_(std::make_unique<Impl>()) {
+  constexpr int kTerms = Impl::kTerms;
+  Impl& d = *impl_;
+  d.n = n;
+  d.dt = dt;
+  d.T = dt * double(n - 1);
+  // Displacement of each basis acceleration, by the same integrator as the record's.
+  d.basis_d.resize(Eigen::Index(n), kTerms);
   Eigen::Matrix<double, 2, kTerms> ends;
   std::vector<double> phi(n), pv, pd;
   for (int k = 0; k < kTerms; ++k) {
     for (std::size_t i = 0; i < n; ++i) {
-      const double x = double(i) * motion.dt / T;
+      const double x = double(i) * dt / d.T;
       double p = 1.0 - x;
       for (int j = 0; j <= k; ++j) p *= x;
       phi[i] = p;
     }
-    integrate_samples(phi, motion.dt, pv, pd);
-    for (std::size_t i = 0; i < n; ++i) basis_d(Eigen::Index(i), k) = pd[i];
+    integrate_samples(phi, dt, pv, pd);
+    for (std::size_t i = 0; i < n; ++i) d.basis_d(Eigen::Index(i), k) = pd[i];
     ends(0, k) = pv.back();
     ends(1, k) = pd.back();
   }
-  const Eigen::Map<const Eigen::VectorXd> disp(d.data(), Eigen::Index(n));
-
   // KKT system of min |D c - d|^2 subject to E c = [v_end, d_end].
   Eigen::Matrix<double, kTerms + 2, kTerms + 2> kkt = Eigen::Matrix<double, 6, 6>::Zero();
-  kkt.topLeftCorner<kTerms, kTerms>() = basis_d.transpose() * basis_d;
+  kkt.topLeftCorner<kTerms, kTerms>() = d.basis_d.transpose() * d.basis_d;
   kkt.topRightCorner<kTerms, 2>() = ends.transpose();
   kkt.bottomLeftCorner<2, kTerms>() = ends;
-  Eigen::Matrix<double, kTerms + 2, 1> rhs;
-  rhs.head<kTerms>() = basis_d.transpose() * disp;
-  rhs.tail<2>() = rhs_end;
-  const Eigen::Matrix<double, kTerms + 2, 1> sol = kkt.fullPivLu().solve(rhs);
+  d.kkt.compute(kkt);
+}
 
-  GroundMotion out = motion;
-  for (std::size_t i = 0; i < n; ++i) {
-    const double s = double(i) * motion.dt / T;
-    out.accel[i] -= (1.0 - s) * s * (sol(0) + s * (sol(1) + s * (sol(2) + s * sol(3))));
+BaselineCorrector::~BaselineCorrector() = default;
+
+void BaselineCorrector::apply(std::vector<double>& accel) const {
+  constexpr int kTerms = Impl::kTerms;
+  const Impl& d = *impl_;
+  if (accel.size() != d.n)
+    throw std::logic_error("baseline correction: " + std::to_string(accel.size()) +
+                           " samples for a corrector of " + std::to_string(d.n));
+  std::vector<double> v, disp_v;
+  integrate_samples(accel, d.dt, v, disp_v);
+  const Eigen::Map<const Eigen::VectorXd> disp(disp_v.data(), Eigen::Index(d.n));
+  Eigen::Matrix<double, kTerms + 2, 1> rhs;
+  rhs.head<kTerms>() = d.basis_d.transpose() * disp;
+  rhs(kTerms) = v.back();
+  rhs(kTerms + 1) = disp_v.back();
+  const Eigen::Matrix<double, kTerms + 2, 1> sol = d.kkt.solve(rhs);
+  for (std::size_t i = 0; i < d.n; ++i) {
+    const double s = double(i) * d.dt / d.T;
+    accel[i] -= (1.0 - s) * s * (sol(0) + s * (sol(1) + s * (sol(2) + s * sol(3))));
   }
+}
+
+GroundMotion baseline_correct(const GroundMotion& motion) {
+  if (motion.accel.size() < 8) return motion;
+  GroundMotion out = motion;
+  BaselineCorrector(motion.accel.size(), motion.dt).apply(out.accel);
   return out;
 }
 
