@@ -37,6 +37,8 @@ struct BaselineCorrector::Impl {
   double dt = 0.0, T = 0.0;
   Eigen::MatrixXd basis_d;  // displacement of each basis acceleration at the samples
   Eigen::FullPivLU<Eigen::Matrix<double, kTerms + 2, kTerms + 2>> kkt;
+  std::vector<double> s, w;  // s_i = t_i / T and (1 - s_i) s_i
+  std::vector<double> v, d;  // scratch: the record's velocity and displacement
 };
 
 BaselineCorrector::BaselineCorrector(std::size_t n, double dt) : impl_(std::make_unique<Impl>()) {
@@ -67,17 +69,24 @@ BaselineCorrector::BaselineCorrector(std::size_t n, double dt) : impl_(std::make
   kkt.topRightCorner<kTerms, 2>() = ends.transpose();
   kkt.bottomLeftCorner<2, kTerms>() = ends;
   d.kkt.compute(kkt);
+  d.s.resize(n);
+  d.w.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    d.s[i] = double(i) * dt / d.T;
+    d.w[i] = (1.0 - d.s[i]) * d.s[i];
+  }
 }
 
 BaselineCorrector::~BaselineCorrector() = default;
 
-void BaselineCorrector::apply(std::vector<double>& accel) const {
+void BaselineCorrector::apply(std::vector<double>& accel) {
   constexpr int kTerms = Impl::kTerms;
-  const Impl& d = *impl_;
+  Impl& d = *impl_;
   if (accel.size() != d.n)
     throw std::logic_error("baseline correction: " + std::to_string(accel.size()) +
                            " samples for a corrector of " + std::to_string(d.n));
-  std::vector<double> v, disp_v;
+  std::vector<double>& v = d.v;
+  std::vector<double>& disp_v = d.d;
   integrate_samples(accel, d.dt, v, disp_v);
   const Eigen::Map<const Eigen::VectorXd> disp(disp_v.data(), Eigen::Index(d.n));
   Eigen::Matrix<double, kTerms + 2, 1> rhs;
@@ -85,10 +94,11 @@ void BaselineCorrector::apply(std::vector<double>& accel) const {
   rhs(kTerms) = v.back();
   rhs(kTerms + 1) = disp_v.back();
   const Eigen::Matrix<double, kTerms + 2, 1> sol = d.kkt.solve(rhs);
-  for (std::size_t i = 0; i < d.n; ++i) {
-    const double s = double(i) * d.dt / d.T;
-    accel[i] -= (1.0 - s) * s * (sol(0) + s * (sol(1) + s * (sol(2) + s * sol(3))));
-  }
+  const double c0 = sol(0), c1 = sol(1), c2 = sol(2), c3 = sol(3);
+  const double* __restrict s = d.s.data();
+  const double* __restrict w = d.w.data();
+  double* __restrict a = accel.data();
+  for (std::size_t i = 0; i < d.n; ++i) a[i] -= w[i] * (c0 + s[i] * (c1 + s[i] * (c2 + s[i] * c3)));
 }
 
 GroundMotion baseline_correct(const GroundMotion& motion) {

@@ -44,8 +44,9 @@ class BaselineCorrector {
   ~BaselineCorrector();
   BaselineCorrector(const BaselineCorrector&) = delete;
   BaselineCorrector& operator=(const BaselineCorrector&) = delete;
-  /// Corrects accel [m/s^2] (samples values) in place.
-  void apply(std::vector<double>& accel) const;
+  /// Corrects accel [m/s^2] (samples values) in place. Not const: uses scratch buffers (one
+  /// corrector per thread).
+  void apply(std::vector<double>& accel);
 
  private:
   struct Impl;

@@ -89,7 +89,7 @@ SpectrumCalculator::SpectrumCalculator(std::vector<double> periods, double dampi
   const std::size_t nl = (order.size() + kLanes - 1) / kLanes * kLanes;
   Lanes& l = lanes_;
   for (std::vector<double>* c :
-       {&l.a11, &l.a12, &l.a21, &l.a22, &l.b11, &l.b12, &l.b21, &l.b22, &l.c, &l.w2})
+       {&l.a11, &l.a12, &l.a21, &l.a22, &l.g1, &l.b12, &l.g2, &l.b22, &l.c, &l.w2})
     c->assign(nl, 0.0);
   lane_of_.assign(periods_.size(), 0);
   for (std::size_t p = 0; p < order.size(); ++p) {
@@ -101,9 +101,14 @@ SpectrumCalculator::SpectrumCalculator(std::vector<double> periods, double dampi
     l.a12[p] = k.a12;
     l.a21[p] = k.a21;
     l.a22[p] = k.a22;
-    l.b11[p] = k.b11;
+    // The recurrence is run on y = x - b12 a_i, u = v - b22 a_i (state x, v of the lanes
+    // below): then
+    //   y_{i+1} = a11 y_i + a12 u_i + g1 a_i,  u_{i+1} = a21 y_i + a22 u_i + g2 a_i,
+    // g1 = a11 b12 + a12 b22 + b11, g2 = a21 b12 + a22 b22 + b21, and x_{i+1} = y_{i+1} +
+    // b12 a_{i+1}: three products fewer per step than the recurrence on x, v.
+    l.g1[p] = k.a11 * k.b12 + k.a12 * k.b22 + k.b11;
     l.b12[p] = k.b12;
-    l.b21[p] = k.b21;
+    l.g2[p] = k.a21 * k.b12 + k.a22 * k.b22 + k.b21;
     l.b22[p] = k.b22;
     l.c[p] = 2.0 * damping * w;
     l.w2[p] = w * w;
@@ -130,13 +135,15 @@ SpectrumCalculator::SpectrumCalculator(std::vector<double> periods, double dampi
         const SdofStep k = SdofStep::make(periods_[i], damping, s * dt);
         const std::size_t at =
             (q.offset[b] + static_cast<std::size_t>(j - 1)) * kLanes + p % kLanes;
+        // On the state y, u at t_i: x_i = y_i + b12 a_i, v_i = u_i + b22 a_i (above).
+        const double b12 = l.b12[p], b22 = l.b22[p];
         q.xx[at] = k.a11;
         q.xv[at] = k.a12;
-        q.xa0[at] = k.b11 + k.b12 * (1.0 - s);
+        q.xa0[at] = k.a11 * b12 + k.a12 * b22 + (k.b11 + k.b12 * (1.0 - s));
         q.xa1[at] = k.b12 * s;
         q.vx[at] = k.a21;
         q.vv[at] = k.a22;
-        q.va0[at] = k.b21 + k.b22 * (1.0 - s);
+        q.va0[at] = k.a21 * b12 + k.a22 * b22 + (k.b21 + k.b22 * (1.0 - s));
         q.va1[at] = k.b22 * s;
       }
   }
@@ -158,7 +165,7 @@ static_assert(kLanes == 8, "the kernel works on blocks of eight oscillators");
 
 struct KernelArrays {
   std::size_t blocks;
-  const double *a11, *a12, *a21, *a22, *b11, *b12, *b21, *b22, *c, *w2;
+  const double *a11, *a12, *a21, *a22, *g1, *b12, *g2, *b22, *c, *w2;
   const int* count;
   const std::size_t* offset;
   const double *xx, *xv, *xa0, *xa1, *vx, *vv, *va0, *va1;
@@ -175,7 +182,7 @@ template <class V, bool kAbsolute, int U>
 __attribute__((always_inline)) inline void peak_chunk(const KernelArrays& k, std::size_t p0,
                                                       const double* a, std::size_t n) {
   constexpr std::size_t W = simd::kWidth<V>;
-  V x[U], v[U], xm[U], am[U];
+  V sx[U], sv[U], xm[U], am[U];  // state y, u (constructor), peaks
   std::size_t p[U], q0[U];
   int count[U];
 #pragma GCC unroll 8
@@ -184,7 +191,10 @@ __attribute__((always_inline)) inline void peak_chunk(const KernelArrays& k, std
     const std::size_t b = p[u] / kLanes;
     count[u] = k.count[b];
     q0[u] = k.offset[b] * kLanes + p[u] % kLanes;
-    x[u] = v[u] = xm[u] = am[u] = V{};
+    // At rest: x_0 = v_0 = 0.
+    sx[u] = -(vload<V>(k.b12 + p[u]) * vsplat<V>(n ? a[0] : 0.0));
+    sv[u] = -(vload<V>(k.b22 + p[u]) * vsplat<V>(n ? a[0] : 0.0));
+    xm[u] = am[u] = V{};
   }
   for (std::size_t i = 0; i + 1 < n; ++i) {
     const V A0 = vsplat<V>(a[i]), A1 = vsplat<V>(a[i + 1]);
@@ -192,24 +202,27 @@ __attribute__((always_inline)) inline void peak_chunk(const KernelArrays& k, std
     for (int u = 0; u < U; ++u) {
       for (int j = 0; j < count[u]; ++j) {
         const std::size_t q = q0[u] + static_cast<std::size_t>(j) * kLanes;
-        const V xj = (vload<V>(k.xx + q) * x[u] + vload<V>(k.xv + q) * v[u]) +
+        const V xj = (vload<V>(k.xx + q) * sx[u] + vload<V>(k.xv + q) * sv[u]) +
                      (vload<V>(k.xa0 + q) * A0 + vload<V>(k.xa1 + q) * A1);
         xm[u] = vfmax(xm[u], vfabs(xj));
         if (kAbsolute) {
-          const V vj = (vload<V>(k.vx + q) * x[u] + vload<V>(k.vv + q) * v[u]) +
+          const V vj = (vload<V>(k.vx + q) * sx[u] + vload<V>(k.vv + q) * sv[u]) +
                        (vload<V>(k.va0 + q) * A0 + vload<V>(k.va1 + q) * A1);
           am[u] = vfmax(am[u], vfabs(vload<V>(k.c + p[u]) * vj + vload<V>(k.w2 + p[u]) * xj));
         }
       }
-      const V xn = (vload<V>(k.a11 + p[u]) * x[u] + vload<V>(k.a12 + p[u]) * v[u]) +
-                   (vload<V>(k.b11 + p[u]) * A0 + vload<V>(k.b12 + p[u]) * A1);
-      const V vn = (vload<V>(k.a21 + p[u]) * x[u] + vload<V>(k.a22 + p[u]) * v[u]) +
-                   (vload<V>(k.b21 + p[u]) * A0 + vload<V>(k.b22 + p[u]) * A1);
-      x[u] = xn;
-      v[u] = vn;
+      const V yn = (vload<V>(k.a11 + p[u]) * sx[u] + vload<V>(k.a12 + p[u]) * sv[u]) +
+                   vload<V>(k.g1 + p[u]) * A0;
+      const V un = (vload<V>(k.a21 + p[u]) * sx[u] + vload<V>(k.a22 + p[u]) * sv[u]) +
+                   vload<V>(k.g2 + p[u]) * A0;
+      sx[u] = yn;
+      sv[u] = un;
+      const V xn = yn + vload<V>(k.b12 + p[u]) * A1;
       xm[u] = vfmax(xm[u], vfabs(xn));
-      if (kAbsolute)
+      if (kAbsolute) {
+        const V vn = un + vload<V>(k.b22 + p[u]) * A1;
         am[u] = vfmax(am[u], vfabs(vload<V>(k.c + p[u]) * vn + vload<V>(k.w2 + p[u]) * xn));
+      }
     }
   }
 #pragma GCC unroll 8
@@ -219,7 +232,7 @@ __attribute__((always_inline)) inline void peak_chunk(const KernelArrays& k, std
   }
 }
 
-// Every lane: chunks of four vectors, the rest one vector at a time.
+// Every lane: chunks of four vectors, then the rest.
 template <class V, bool kAbsolute>
 __attribute__((always_inline)) inline void peak_body(const KernelArrays& k, const double* a,
                                                      std::size_t n) {
@@ -227,7 +240,20 @@ __attribute__((always_inline)) inline void peak_body(const KernelArrays& k, cons
   const std::size_t lanes = k.blocks * kLanes;
   std::size_t p = 0;
   for (; p + kChunk * W <= lanes; p += kChunk * W) peak_chunk<V, kAbsolute, kChunk>(k, p, a, n);
-  for (; p < lanes; p += W) peak_chunk<V, kAbsolute, 1>(k, p, a, n);
+  // The rest in one chunk (one vector alone would wait on its own latency at every sample).
+  switch ((lanes - p) / W) {
+    case 3:
+      peak_chunk<V, kAbsolute, 3>(k, p, a, n);
+      break;
+    case 2:
+      peak_chunk<V, kAbsolute, 2>(k, p, a, n);
+      break;
+    case 1:
+      peak_chunk<V, kAbsolute, 1>(k, p, a, n);
+      break;
+    default:
+      break;
+  }
 }
 
 // One function per instruction set; every lane does the operations of the scalar recurrence
@@ -311,7 +337,7 @@ void SpectrumCalculator::peaks(const std::vector<double>& a, std::vector<double>
   const Lanes& l = lanes_;
   const Points& q = points_;
   const KernelArrays k{nl / kLanes,  l.a11.data(),   l.a12.data(),    l.a21.data(), l.a22.data(),
-                       l.b11.data(), l.b12.data(),   l.b21.data(),    l.b22.data(), l.c.data(),
+                       l.g1.data(),  l.b12.data(),   l.g2.data(),     l.b22.data(), l.c.data(),
                        l.w2.data(),  q.count.data(), q.offset.data(), q.xx.data(),  q.xv.data(),
                        q.xa0.data(), q.xa1.data(),   q.vx.data(),     q.vv.data(),  q.va0.data(),
                        q.va1.data(), peak,           peak + nl};

@@ -83,7 +83,7 @@ class SpectrumCalculator {
   // points inside a step at which the peak is also looked for (t_i + j dt / m, j < m) are
   // computed directly from the state at t_i and the two samples (Points), not by stepping.
   struct Lanes {
-    std::vector<double> a11, a12, a21, a22, b11, b12, b21, b22, c, w2;
+    std::vector<double> a11, a12, a21, a22, g1, b12, g2, b22, c, w2;
   };
   // Inner points of block b (lanes [kLanes b, kLanes (b + 1))): count[b] points, the first
   // one's coefficients at offset[b] (in units of kLanes values); a lane with fewer points than

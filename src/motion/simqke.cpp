@@ -259,8 +259,16 @@ GeneratedMotion SimqkeGenerator::Impl::generate(std::uint64_t seed, std::uint64_
   std::vector<double> cosphi(d.nbins), sinphi(d.nbins), psa, ratio(target.size());
   GeneratedMotion best;
   double best_score = 1e300;
+  int evaluations = 0;
   for (int attempt = 0; attempt < max_attempts; ++attempt) {
     for (std::size_t k = 0; k < d.nbins; ++k) {
+      // A bin without amplitude needs no phase (its term is zero either way); each phase
+      // depends on its own bin's counter only.
+      if (amp[k] == 0.0) {
+        cosphi[k] = 1.0;
+        sinphi[k] = 0.0;
+        continue;
+      }
       const double u = philox_uniform(seed, index, std::uint32_t(k), std::uint32_t(attempt));
       cosphi[k] = std::cos(2.0 * M_PI * u);
       sinphi[k] = std::sin(2.0 * M_PI * u);
@@ -272,6 +280,7 @@ GeneratedMotion SimqkeGenerator::Impl::generate(std::uint64_t seed, std::uint64_
     for (int it = 0;; ++it) {
       if (it > 0) d.correct(m, ratio);
       d.spectra->compute_psa(m.accel, psa);
+      ++evaluations;
       // Score: the largest |q - 1| over the matching periods, q = computed / target; for a
       // random target the RMS of ln q instead (simqke.hpp).
       double max_dev = 0.0, sum_sq = 0.0;
@@ -304,6 +313,7 @@ GeneratedMotion SimqkeGenerator::Impl::generate(std::uint64_t seed, std::uint64_
     if (best_score <= d.settings.accept_score) break;
   }
   best.target_psa = target;
+  best.spectra = evaluations;
   best.motion.name = "simqke seed " + std::to_string(seed) + " index " + std::to_string(index);
   const GroundKinematics kin = integrate(best.motion);
   best.final_velocity = kin.final_velocity();
