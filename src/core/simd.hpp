@@ -9,6 +9,7 @@
 // lowers the comparisons of a 512-bit vector into scalar code on AVX2. The helpers are always
 // inlined (also at -O0), so no vector is passed by the default ABI into a wider target and
 // GCC's note on that ABI (-Wpsabi) does not apply. (core/vec4.hpp: the same for V4 alone.)
+#include <cmath>
 #include <cstddef>
 #include <cstring>
 
@@ -50,6 +51,21 @@ __attribute__((always_inline)) inline V vfabs(const V& x) {
   using I = decltype(x < x);  // the integer vector of the same width
   const I magnitude = I{} + 0x7fffffffffffffffLL;
   return (V)((I)x & magnitude);
+}
+/// a * b + c lane by lane with one rounding (IEEE fused multiply-add). On the AVX-512 and AVX2
+/// paths the instruction (inline assembly: an intrinsic could not be inlined into these
+/// templates, which are compiled for no particular target), on the SSE2 baseline std::fma,
+/// which glibc rounds correctly too; so every path gives the same bits.
+__attribute__((always_inline)) inline V8 vfma(V8 a, V8 b, V8 c) {
+  asm("vfmadd231pd %2, %1, %0" : "+v"(c) : "v"(a), "v"(b));
+  return c;
+}
+__attribute__((always_inline)) inline V4 vfma(V4 a, V4 b, V4 c) {
+  asm("vfmadd231pd %2, %1, %0" : "+v"(c) : "v"(a), "v"(b));
+  return c;
+}
+__attribute__((always_inline)) inline V2 vfma(V2 a, V2 b, V2 c) {
+  return V2{std::fma(a[0], b[0], c[0]), std::fma(a[1], b[1], c[1])};
 }
 /// std::max(m, x) lane by lane: (m < x) ? x : m.
 template <class V>

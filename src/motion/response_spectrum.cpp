@@ -157,6 +157,7 @@ using simd::V2;
 using simd::V4;
 using simd::V8;
 using simd::vfabs;
+using simd::vfma;
 using simd::vfmax;
 using simd::vload;
 using simd::vsplat;
@@ -202,26 +203,28 @@ __attribute__((always_inline)) inline void peak_chunk(const KernelArrays& k, std
     for (int u = 0; u < U; ++u) {
       for (int j = 0; j < count[u]; ++j) {
         const std::size_t q = q0[u] + static_cast<std::size_t>(j) * kLanes;
-        const V xj = (vload<V>(k.xx + q) * sx[u] + vload<V>(k.xv + q) * sv[u]) +
-                     (vload<V>(k.xa0 + q) * A0 + vload<V>(k.xa1 + q) * A1);
+        const V xj = vfma(vload<V>(k.xx + q), sx[u],
+                          vfma(vload<V>(k.xv + q), sv[u],
+                               vfma(vload<V>(k.xa0 + q), A0, vload<V>(k.xa1 + q) * A1)));
         xm[u] = vfmax(xm[u], vfabs(xj));
         if (kAbsolute) {
-          const V vj = (vload<V>(k.vx + q) * sx[u] + vload<V>(k.vv + q) * sv[u]) +
-                       (vload<V>(k.va0 + q) * A0 + vload<V>(k.va1 + q) * A1);
-          am[u] = vfmax(am[u], vfabs(vload<V>(k.c + p[u]) * vj + vload<V>(k.w2 + p[u]) * xj));
+          const V vj = vfma(vload<V>(k.vx + q), sx[u],
+                            vfma(vload<V>(k.vv + q), sv[u],
+                                 vfma(vload<V>(k.va0 + q), A0, vload<V>(k.va1 + q) * A1)));
+          am[u] = vfmax(am[u], vfabs(vfma(vload<V>(k.c + p[u]), vj, vload<V>(k.w2 + p[u]) * xj)));
         }
       }
-      const V yn = (vload<V>(k.a11 + p[u]) * sx[u] + vload<V>(k.a12 + p[u]) * sv[u]) +
-                   vload<V>(k.g1 + p[u]) * A0;
-      const V un = (vload<V>(k.a21 + p[u]) * sx[u] + vload<V>(k.a22 + p[u]) * sv[u]) +
-                   vload<V>(k.g2 + p[u]) * A0;
+      const V yn = vfma(vload<V>(k.a11 + p[u]), sx[u],
+                        vfma(vload<V>(k.a12 + p[u]), sv[u], vload<V>(k.g1 + p[u]) * A0));
+      const V un = vfma(vload<V>(k.a21 + p[u]), sx[u],
+                        vfma(vload<V>(k.a22 + p[u]), sv[u], vload<V>(k.g2 + p[u]) * A0));
       sx[u] = yn;
       sv[u] = un;
-      const V xn = yn + vload<V>(k.b12 + p[u]) * A1;
+      const V xn = vfma(vload<V>(k.b12 + p[u]), A1, yn);
       xm[u] = vfmax(xm[u], vfabs(xn));
       if (kAbsolute) {
-        const V vn = un + vload<V>(k.b22 + p[u]) * A1;
-        am[u] = vfmax(am[u], vfabs(vload<V>(k.c + p[u]) * vn + vload<V>(k.w2 + p[u]) * xn));
+        const V vn = vfma(vload<V>(k.b22 + p[u]), A1, un);
+        am[u] = vfmax(am[u], vfabs(vfma(vload<V>(k.c + p[u]), vn, vload<V>(k.w2 + p[u]) * xn)));
       }
     }
   }
@@ -256,8 +259,10 @@ __attribute__((always_inline)) inline void peak_body(const KernelArrays& k, cons
   }
 }
 
-// One function per instruction set; every lane does the operations of the scalar recurrence
-// in the same order without FMA, so all give the same bits (core/simd.hpp).
+// One function per instruction set; every lane does the same operations in the same order,
+// products and sums rounded separately except the explicit fused multiply-adds (simd::vfma,
+// one rounding on every path), so all give the same bits (core/simd.hpp). The baseline's
+// std::fma is slow without the instruction; only CPUs without AVX2 and FMA take it.
 POUND_NO_CONTRACT __attribute__((target("avx512f"))) void peak_avx512(const KernelArrays& k,
                                                                       const double* a,
                                                                       std::size_t n, bool sa) {
@@ -266,9 +271,9 @@ POUND_NO_CONTRACT __attribute__((target("avx512f"))) void peak_avx512(const Kern
   else
     peak_body<V8, false>(k, a, n);
 }
-POUND_NO_CONTRACT __attribute__((target("avx2"))) void peak_avx2(const KernelArrays& k,
-                                                                 const double* a, std::size_t n,
-                                                                 bool sa) {
+POUND_NO_CONTRACT __attribute__((target("avx2,fma"))) void peak_avx2(const KernelArrays& k,
+                                                                     const double* a, std::size_t n,
+                                                                     bool sa) {
   if (sa)
     peak_body<V4, true>(k, a, n);
   else
@@ -286,7 +291,7 @@ using PeakKernel = void (*)(const KernelArrays&, const double*, std::size_t, boo
 
 PeakKernel peak_kernel(SimdPath path) {
   static const bool avx512 = __builtin_cpu_supports("avx512f");
-  static const bool avx2 = __builtin_cpu_supports("avx2");
+  static const bool avx2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
   switch (path) {
     case SimdPath::automatic:
       return avx512 ? peak_avx512 : avx2 ? peak_avx2 : peak_baseline;
@@ -294,7 +299,7 @@ PeakKernel peak_kernel(SimdPath path) {
       if (!avx512) throw InputError("response spectrum: this CPU has no AVX-512");
       return peak_avx512;
     case SimdPath::avx2:
-      if (!avx2) throw InputError("response spectrum: this CPU has no AVX2");
+      if (!avx2) throw InputError("response spectrum: this CPU has no AVX2 and FMA");
       return peak_avx2;
     case SimdPath::baseline:
       return peak_baseline;
@@ -309,7 +314,7 @@ bool simd_path_available(SimdPath path) {
     case SimdPath::avx512:
       return __builtin_cpu_supports("avx512f");
     case SimdPath::avx2:
-      return __builtin_cpu_supports("avx2");
+      return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
     default:
       return true;
   }
