@@ -11,7 +11,7 @@
 //   4. yielding buildings: samples of the default study against elastic storeys and the reference.
 //   5. the cost of a default-study sample per contact model, its motion apart (issue 13).
 // Usage: bench_speed [source dir [quick | lumped [check] | sample ID | inelastic [N] |
-// samples [N [REPEAT]]]] (default:
+// samples [N [REPEAT [MODEL [spectral|none]]]]]] (default:
 // the source tree it was built from; "quick": only the event-driven chapter 8 run, for profiling;
 // "lumped": only the adaptive run of case 2, for profiling, with "check" also its fixed-step
 // reference and the case 2 line; "sample ID": peak forces of one campaign sample on the default
@@ -303,17 +303,19 @@ void inelastic_case(const std::string& src, long samples) {
 // contact model, split into generating the motion (timed apart, the same draws as the sample)
 // and the rest (both simulations, with and without pounding). Process CPU times, the smallest
 // of `repeat` runs per sample.
-void samples_case(const std::string& src, long samples, int repeat) {
+void samples_case(const std::string& src, long samples, int repeat, const std::string& only = "",
+                  const std::string& variabilities = "spectral,none") {
   std::printf(
       "\n5. sample cost: studies/fragility-default.ini, samples 0-%ld, process CPU time, the "
       "smallest of %d runs each\n",
       samples - 1, repeat);
   std::printf("%-10s %-10s %4s %10s %10s %10s %10s %10s %8s\n", "motions", "model", "n",
               "sample[ms]", "max[ms]", "motion[ms]", "rest[ms]", "rest max", "spectra");
-  for (const char* variability : {"spectral", "none"}) {
+  for (const std::string variability : {"spectral", "none"}) {
+    if (variabilities.find(variability) == std::string::npos) continue;
     Options oc("campaign", "speed benchmark", campaign_option_specs());
     oc.parse({"--config", src + "/studies/fragility-default.ini", "--generator.variability",
-              variability});
+              variability.c_str()});
     const CampaignStudy study = campaign_from_options(oc, samples, -1);
     SampleRunner runner(study);
     SimqkeGenerator gen(*study.spectrum, study.motion_duration, study.generator);
@@ -325,6 +327,7 @@ void samples_case(const std::string& src, long samples, int repeat) {
     } sums[2];  // 0 sears, 1 lumped
     for (long id = 0; id < samples; ++id) {
       const SampleDraw d = runner.draw(id);
+      if (!only.empty() && d.model != only) continue;
       const Timing ts = time_it([&] { runner.run(d); }, repeat);
       GeneratedMotion g;
       const Timing tm = time_it(
@@ -345,7 +348,7 @@ void samples_case(const std::string& src, long samples, int repeat) {
     for (int k = 0; k < 2; ++k) {
       const Sum& m = sums[k];
       if (!m.n) continue;
-      std::printf("%-10s %-10s %4d %10.3f %10.3f %10.3f %10.3f %10.3f %8.1f\n", variability,
+      std::printf("%-10s %-10s %4d %10.3f %10.3f %10.3f %10.3f %10.3f %8.1f\n", variability.c_str(),
                   k == 0 ? "sears" : "hc-linear", m.n, 1e3 * m.sample / m.n, 1e3 * m.max_sample,
                   1e3 * m.motion / m.n, 1e3 * (m.sample - m.motion) / m.n, 1e3 * m.max_rest,
                   double(m.spectra) / m.n);
@@ -386,7 +389,8 @@ int main(int argc, char** argv) {
     return 0;
   }
   if (argc > 2 && std::string(argv[2]) == "samples") {  // case 5 alone
-    samples_case(src, argc > 3 ? std::stol(argv[3]) : 48, argc > 4 ? std::stoi(argv[4]) : 3);
+    samples_case(src, argc > 3 ? std::stol(argv[3]) : 48, argc > 4 ? std::stoi(argv[4]) : 3,
+                 argc > 5 ? argv[5] : "", argc > 6 ? argv[6] : "spectral,none");
     return 0;
   }
   if (argc > 2 && std::string(argv[2]) == "inelastic") {  // case 4 alone
