@@ -11,10 +11,12 @@
 // ag = 0.3 g; 10 s at 0.01 s; seed 2026), each once matched to the design spectrum and once to
 // its random target (Boore-Atkinson 2008 sigma, Baker-Jayaram 2008 correlation), the two
 // interleaved motion by motion so that a changing machine load hits both alike; it prints the
-// time per motion, the spectrum evaluations (iterations + 1 per phase set) and how closely
-// each motion matches its own target ("cpu ms": process CPU time, "spectra": spectrum
-// evaluations per motion, every phase set counted). With none or spectral only that variant runs
-// (for instruction counts: valgrind --tool=callgrind bench_simqke variability 20 spectral).
+// time per motion, the correction iterations of the returned motion and how closely each
+// motion matches its own target ("cpu ms": process CPU time, "spectra": spectrum evaluations
+// per motion, every phase set counted). With none or spectral only that variant runs (for
+// instruction counts: valgrind --tool=callgrind bench_simqke variability 20 spectral).
+//
+// Issue 13: bench_simqke kernel times the response-spectrum kernel alone per instruction set.
 #include <time.h>
 
 #include <algorithm>
@@ -175,9 +177,43 @@ int run_variability(int count, const std::string& only) {
   return 0;
 }
 
+// The spectrum kernel alone (issue 13): the generator's 110 matching periods of a 10 s motion
+// at 0.01 s, process CPU time per spectrum on each instruction set this CPU has (the smallest
+// of 5 rounds of 200 spectra; every path gives the same bits).
+int run_kernel() {
+  using namespace pound;
+  const Ec8Spectrum target(Ec8Type::type1, Ec8Ground::C, 0.3 * kGravity);
+  SimqkeGenerator gen(target, 10.0);
+  const GroundMotion g = gen.generate(2026, 0).motion;
+  std::printf("spectrum kernel: %zu periods (%.3f-%.2f s, T/20 peaks), %zu samples\n",
+              gen.match_periods().size(), gen.match_periods().front(), gen.match_periods().back(),
+              g.accel.size());
+  std::vector<double> psa;
+  const std::pair<SimdPath, const char*> paths[] = {
+      {SimdPath::avx512, "AVX-512"}, {SimdPath::avx2, "AVX2+FMA"}, {SimdPath::baseline, "SSE2"}};
+  for (const auto& [path, name] : paths) {
+    if (!simd_path_available(path)) {
+      std::printf("%-9s not on this CPU\n", name);
+      continue;
+    }
+    ResponseSpectrumOptions o;
+    o.simd = path;
+    const SpectrumCalculator calc(gen.match_periods(), 0.05, 0.01, o);
+    double best = 1e300;
+    for (int r = 0; r < 5; ++r) {
+      const double c0 = cpu_ms();
+      for (int i = 0; i < 200; ++i) calc.compute_psa(g.accel, psa);
+      best = std::min(best, (cpu_ms() - c0) / 200.0);
+    }
+    std::printf("%-9s %8.1f us per spectrum\n", name, 1e3 * best);
+  }
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc > 1 && std::string(argv[1]) == "kernel") return run_kernel();
   if (argc > 1 && std::string(argv[1]) == "variability")
     return run_variability(argc > 2 ? std::atoi(argv[2]) : 40, argc > 3 ? argv[3] : "");
   const std::uint64_t seed = argc > 1 ? std::strtoull(argv[1], nullptr, 10) : 2026;
