@@ -105,7 +105,7 @@ SpectrumCalculator::SpectrumCalculator(std::vector<double> periods, double dampi
     // below): then
     //   y_{i+1} = a11 y_i + a12 u_i + g1 a_i,  u_{i+1} = a21 y_i + a22 u_i + g2 a_i,
     // g1 = a11 b12 + a12 b22 + b11, g2 = a21 b12 + a22 b22 + b21, and x_{i+1} = y_{i+1} +
-    // b12 a_{i+1}: three products fewer per step than the recurrence on x, v.
+    // b12 a_{i+1}: a product and a sum fewer per step than the recurrence on x, v.
     l.g1[p] = k.a11 * k.b12 + k.a12 * k.b22 + k.b11;
     l.b12[p] = k.b12;
     l.g2[p] = k.a21 * k.b12 + k.a22 * k.b22 + k.b21;

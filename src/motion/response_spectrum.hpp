@@ -79,8 +79,9 @@ class SpectrumCalculator {
   // The oscillators (periods > 0) sit side by side in flat arrays (structure of arrays),
   // ordered by sub-step count, most first, and padded with inert lanes (all coefficients 0)
   // to a multiple of kLanes, so that one SIMD kernel advances eight independent recurrences
-  // at once. Every lane takes one exact step of the record spacing dt per sample (x, v); the
-  // points inside a step at which the peak is also looked for (t_i + j dt / m, j < m) are
+  // at once. Every lane takes one exact step of the record spacing dt per sample, on the
+  // shifted state y = x - b12 a_i, u = v - b22 a_i (g1, g2: the coefficients of a_i there);
+  // the points inside a step at which the peak is also looked for (t_i + j dt / m, j < m) are
   // computed directly from the state at t_i and the two samples (Points), not by stepping.
   struct Lanes {
     std::vector<double> a11, a12, a21, a22, g1, b12, g2, b22, c, w2;
@@ -91,7 +92,7 @@ class SpectrumCalculator {
   struct Points {
     std::vector<int> count;
     std::vector<std::size_t> offset;
-    // x(t_i + s dt) = xx x_i + xv v_i + xa0 a_i + xa1 a_{i+1}; v likewise.
+    // x(t_i + s dt) = xx y_i + xv u_i + xa0 a_i + xa1 a_{i+1}; v likewise.
     std::vector<double> xx, xv, xa0, xa1, vx, vv, va0, va1;
   };
   // Peak |x| and peak |x'' + a_g| (when sa is not null) of every period.
