@@ -9,11 +9,13 @@
 // peak floor displacement, peak drift and peak pounding force, and the impact counts.
 // Times are process CPU times (one thread), robust on a shared machine; wall times beside.
 //   4. yielding buildings: samples of the default study against elastic storeys and the reference.
-// Usage: bench_speed [source dir [quick | lumped [check] | sample ID | inelastic [N]]] (default:
+//   5. the cost of a default-study sample per contact model, its motion apart (issue 13).
+// Usage: bench_speed [source dir [quick | lumped [check] | sample ID | inelastic [N] |
+// samples [N [REPEAT [MODEL [spectral|none]]]] | ch8]] (default:
 // the source tree it was built from; "quick": only the event-driven chapter 8 run, for profiling;
-// "lumped": only the adaptive run of case 2, for profiling, with "check" also its fixed-step
-// reference and the case 2 line; "sample ID": peak forces of one campaign sample on the default
-// path, the fixed path at its automatic step and at 10 us)
+// "ch8": case 1 alone; "lumped": only the adaptive run of case 2, for profiling, with "check" also
+// its fixed-step reference and the case 2 line; "sample ID": peak forces of one campaign sample on
+// the default path, the fixed path at its automatic step and at 10 us)
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -27,6 +29,7 @@
 #include "campaign/sample.hpp"
 #include "io/options.hpp"
 #include "motion/simqke.hpp"
+#include "motion/spectral_variability.hpp"
 #include "sears/sears_row_layout.hpp"
 #include "sears/sears_simulation.hpp"
 #include "simulation/simulate_row.hpp"
@@ -190,7 +193,7 @@ void fine_step_study(const BuildingRow& row, const GroundMotion& motion,
     w_max =
         std::max(w_max, sears::floor_slab(row, model, f.building, f.floor - 1).omega(model.modes));
   const double t_min = 2.0 * M_PI / w_max;
-  for (long ratio : {11L, 8L, 6L, 5L, 4L, 3L}) {
+  for (long ratio : {11L, 8L, 6L, 5L, 4L, 3L, 2L}) {
     model.dt_s = automatic.coarse_s / static_cast<double>(ratio);
     sears::SearsRowSimulation e;
     const Timing t = time_it([&] { e = sears::simulate_sears_row(row, motion, model); }, 1);
@@ -295,6 +298,64 @@ void inelastic_case(const std::string& src, long samples) {
   }
 }
 
+// Issue 13: the cost of a sample of studies/fragility-default.ini as it is (spectral
+// variability: each motion matched to its own random target) and with variability none, per
+// contact model, split into generating the motion (timed apart, the same draws as the sample)
+// and the rest (both simulations, with and without pounding). Process CPU times, the smallest
+// of `repeat` runs per sample.
+void samples_case(const std::string& src, long samples, int repeat, const std::string& only = "",
+                  const std::string& variabilities = "spectral,none") {
+  std::printf(
+      "\n5. sample cost: studies/fragility-default.ini, samples 0-%ld, process CPU time, the "
+      "smallest of %d runs each\n",
+      samples - 1, repeat);
+  std::printf("%-10s %-10s %4s %10s %10s %10s %10s %10s %8s\n", "motions", "model", "n",
+              "sample[ms]", "max[ms]", "motion[ms]", "rest[ms]", "rest max", "spectra");
+  for (const std::string variability : {"spectral", "none"}) {
+    if (variabilities.find(variability) == std::string::npos) continue;
+    Options oc("campaign", "speed benchmark", campaign_option_specs());
+    oc.parse({"--config", src + "/studies/fragility-default.ini", "--generator.variability",
+              variability.c_str()});
+    const CampaignStudy study = campaign_from_options(oc, samples, -1);
+    SampleRunner runner(study);
+    SimqkeGenerator gen(*study.spectrum, study.motion_duration, study.generator);
+    const TargetVariability var(study.variability, gen.match_periods());
+    struct Sum {
+      int n = 0;
+      double sample = 0, motion = 0, max_sample = 0, max_rest = 0;
+      long spectra = 0;
+    } sums[2];  // 0 sears, 1 lumped
+    for (long id = 0; id < samples; ++id) {
+      const SampleDraw d = runner.draw(id);
+      if (!only.empty() && d.model != only) continue;
+      const Timing ts = time_it([&] { runner.run(d); }, repeat);
+      GeneratedMotion g;
+      const Timing tm = time_it(
+          [&] {
+            g = d.spectral_epsilon.empty()
+                    ? gen.generate(d.motion_seed, 0)
+                    : gen.generate(d.motion_seed, 0, var.ln_factor(d.spectral_epsilon));
+          },
+          repeat);
+      Sum& m = sums[d.model == "sears" ? 0 : 1];
+      ++m.n;
+      m.sample += ts.cpu_s;
+      m.motion += tm.cpu_s;
+      m.spectra += g.spectra;
+      m.max_sample = std::max(m.max_sample, ts.cpu_s);
+      m.max_rest = std::max(m.max_rest, ts.cpu_s - tm.cpu_s);
+    }
+    for (int k = 0; k < 2; ++k) {
+      const Sum& m = sums[k];
+      if (!m.n) continue;
+      std::printf("%-10s %-10s %4d %10.3f %10.3f %10.3f %10.3f %10.3f %8.1f\n", variability.c_str(),
+                  k == 0 ? "sears" : "hc-linear", m.n, 1e3 * m.sample / m.n, 1e3 * m.max_sample,
+                  1e3 * m.motion / m.n, 1e3 * (m.sample - m.motion) / m.n, 1e3 * m.max_rest,
+                  double(m.spectra) / m.n);
+    }
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -325,6 +386,11 @@ int main(int argc, char** argv) {
     std::printf("model %s, values:", d.model.c_str());
     for (double v : d.values) std::printf(" %g", v);
     std::printf("\n");
+    return 0;
+  }
+  if (argc > 2 && std::string(argv[2]) == "samples") {  // case 5 alone
+    samples_case(src, argc > 3 ? std::stol(argv[3]) : 48, argc > 4 ? std::stoi(argv[4]) : 3,
+                 argc > 5 ? argv[5] : "", argc > 6 ? argv[6] : "spectral,none");
     return 0;
   }
   if (argc > 2 && std::string(argv[2]) == "inelastic") {  // case 4 alone
@@ -397,6 +463,7 @@ int main(int argc, char** argv) {
               se.base.sites[2].peak_force / 1e3, sf.base.sites[0].peak_force / 1e3,
               sf.base.sites[1].peak_force / 1e3, sf.base.sites[2].peak_force / 1e3);
 
+  if (argc > 2 && std::string(argv[2]) == "ch8") return 0;  // case 1 alone
   lumped_case(ch8, row, motion, true);
 
   // 3. A 20-sample campaign of the default fragility study (half sears N = 40, half hc-linear).
@@ -475,5 +542,6 @@ int main(int argc, char** argv) {
       "(column motion[s])\n",
       study.motion_duration, study.generator.dt, cpu_motion / kSamples);
   inelastic_case(src, 24);
+  samples_case(src, 48, 3);
   return 0;
 }

@@ -53,7 +53,9 @@ std::vector<OptionSpec> campaign_option_specs() {
       {"campaign.samples", "-", "100", "number of samples"},
       {"campaign.seed", "-", "1", "study seed (every draw derives from it and the sample id)"},
       {"campaign.sampling", "", "lhs", "lhs (Latin hypercube) or mc (plain Monte Carlo)"},
-      {"campaign.batch", "-", "1", "samples handed to a worker at a time"},
+      {"campaign.batch", "-", "auto",
+       "samples handed to a worker at a time and outcomes it returns per message (auto: by the "
+       "number of ranks)"},
       {"motion.source", "", "generated",
        "generated (spectrum-compatible, one per sample) or records (motion.records)"},
       {"motion.records", "", "", "record files drawn uniformly per sample (comma separated)"},
@@ -106,8 +108,19 @@ CampaignStudy campaign_from_options(const Options& opt, long samples_override, l
     st.sampling = SamplingMethod::monte_carlo;
   else
     throw opt.invalid("campaign.sampling", "valid: lhs or mc");
-  st.batch = static_cast<int>(opt.get_int("campaign.batch"));
-  if (st.batch < 1) throw opt.invalid("campaign.batch", "valid: a whole number >= 1");
+  {
+    const std::string b = opt.get_string("campaign.batch");
+    std::size_t used = 0;
+    long v = 0;
+    try {
+      v = b == "auto" ? 0 : std::stol(b, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (b != "auto" && (used != b.size() || v < 1 || v > 1000000))
+      throw opt.invalid("campaign.batch", "valid: auto or a whole number from 1 to 10^6");
+    st.batch = static_cast<int>(v);
+  }
 
   // Sampled parameters, in a fixed (sorted) order (sampled_parameters.hpp).
   st.parameters = read_sampled_parameters(opt, st.row);

@@ -42,7 +42,9 @@ struct CampaignStudy {
   long range_size() const { return range_hi - range_lo; }
   std::uint64_t seed = 1;  ///< study seed
   SamplingMethod sampling = SamplingMethod::latin_hypercube;
-  int batch = 1;  ///< samples handed to a worker at a time
+  /// Samples handed to a worker at a time, and outcomes it returns in one message; 0 =
+  /// automatic (campaign_batch(): 1 on few ranks, more on many; docs/scaling.md).
+  int batch = 0;
   std::vector<SampledParameter> parameters;
 
   // Ground motion.

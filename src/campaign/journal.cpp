@@ -106,6 +106,12 @@ std::vector<char> encode_record(const SampleOutcome& o, const RecordLayout& l) {
   return b;
 }
 
+void record_key(const char* bytes, long& id, SampleStatus& status) {
+  const char* p = bytes;
+  id = static_cast<long>(get<std::int64_t>(p));
+  status = static_cast<SampleStatus>(get<std::int64_t>(p));
+}
+
 bool decode_record(const char* bytes, const RecordLayout& l, SampleOutcome& o) {
   const std::size_t n = l.record_bytes() - 8;
   std::uint64_t sum;

@@ -37,6 +37,9 @@ struct RecordLayout {
 
 /// Serialises an outcome to one record (the bytes sent from workers and appended).
 std::vector<char> encode_record(const SampleOutcome& o, const RecordLayout& layout);
+/// The id and status at the start of an encoded record, read without the checksum test (the
+/// master's bookkeeping of records from its workers; every reader of the journal tests it).
+void record_key(const char* bytes, long& id, SampleStatus& status);
 /// Decodes a record; false when the checksum does not match.
 bool decode_record(const char* bytes, const RecordLayout& layout, SampleOutcome& o);
 

@@ -3,11 +3,13 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <ctime>
 #include <deque>
+#include <memory>
 #include <vector>
 
 #include "campaign/journal.hpp"
@@ -109,12 +111,12 @@ std::string now_text() {
 }
 
 // ---------------------------------------------------------------- worker
-void worker(const CampaignStudy& st, const CampaignRunOptions& opt, MPI_Comm comm, int rank) {
+void worker(const CampaignStudy& st, const CampaignRunOptions& opt, MPI_Comm comm, int rank,
+            int batch) {
   const RecordLayout layout(st);
   SampleRunner runner(st);
   std::deque<long> queue;
   int outstanding = 0;
-  bool stopped = false;
   PendingSends sends;
   auto request = [&](std::vector<char> records) {
     sends.send(std::move(records), 0, kRequest, comm);
@@ -134,20 +136,31 @@ void worker(const CampaignStudy& st, const CampaignRunOptions& opt, MPI_Comm com
       std::vector<long> ids(static_cast<std::size_t>(count) / sizeof(long));
       MPI_Recv(ids.data(), count, MPI_BYTE, 0, s.MPI_TAG, comm, MPI_STATUS_IGNORE);
       --outstanding;
-      if (s.MPI_TAG == kWork) {
+      if (s.MPI_TAG == kWork)
         queue.insert(queue.end(), ids.begin(), ids.end());
-      } else {
-        stopped = true;
-        if (s.MPI_TAG == kStopNow) queue.clear();
-      }
+      else if (s.MPI_TAG == kStopNow)
+        queue.clear();
       block = false;
     }
   };
   // Several requests in flight: a batch is always queued while the master is busy.
   for (int i = 0; i < kRequestsInFlight; ++i) request({});
+  std::vector<char> records;  // finished, not yet sent
+  int held = 0;
+  // Delivers the held results with a request for more work (after a stop the master answers
+  // every request with a stop).
+  auto deliver = [&] {
+    request(std::move(records));
+    records.clear();
+    held = 0;
+  };
   while (true) {
-    receive(queue.empty() && outstanding > 0);
+    receive(queue.empty() && held == 0 && outstanding > 0);
     if (queue.empty()) {
+      if (held > 0) {
+        deliver();  // the queue ran dry (or was dropped after a stop): send what is finished
+        continue;
+      }
       if (outstanding == 0) break;
       continue;
     }
@@ -155,9 +168,9 @@ void worker(const CampaignStudy& st, const CampaignRunOptions& opt, MPI_Comm com
     queue.pop_front();
     SampleOutcome o = opt.simulate ? opt.simulate(id) : runner.run(id);
     o.rank = rank;
-    // Deliver the result with a request for more work (after a stop the master answers every
-    // request with a stop).
-    request(encode_record(o, layout));
+    const std::vector<char> rec = encode_record(o, layout);
+    records.insert(records.end(), rec.begin(), rec.end());
+    if (++held >= batch) deliver();
     sends.reap();
   }
   sends.wait_all();
@@ -188,15 +201,15 @@ void drain_workers(MPI_Comm comm, int active) {
 }
 
 CampaignSummary master_loop(const CampaignStudy& st, const CampaignRunOptions& opt, MPI_Comm comm,
-                            int size, int& active);
+                            int size, int batch, int& active);
 
 CampaignSummary master(const CampaignStudy& st, const CampaignRunOptions& opt, MPI_Comm comm,
-                       int size) {
+                       int size, int batch) {
   int active = size - 1;
   CampaignSummary sum;
   g_write_error.clear();  // of an earlier run in this process
   try {
-    sum = master_loop(st, opt, comm, size, active);
+    sum = master_loop(st, opt, comm, size, batch, active);
   } catch (const WriteError& e) {  // the journal could not be created or opened
     drain_workers(comm, active);
     g_write_error = e.what();
@@ -214,7 +227,7 @@ CampaignSummary master(const CampaignStudy& st, const CampaignRunOptions& opt, M
 }
 
 CampaignSummary master_loop(const CampaignStudy& st, const CampaignRunOptions& opt, MPI_Comm comm,
-                            int size, int& active) {
+                            int size, int batch, int& active) {
   const RecordLayout layout(st);
   const std::string journal_path = opt.out + ".journal";
   CampaignSummary sum;
@@ -232,21 +245,30 @@ CampaignSummary master_loop(const CampaignStudy& st, const CampaignRunOptions& o
   JournalWriter journal(journal_path, st, opt.resume, request_stop_on_write_error);
   Progress prog;
   prog.at_start = sum.done;
-  SampleRunner runner(st);
+  std::unique_ptr<SampleRunner> runner;  // built when the master simulates
   using MasterWork = CampaignRunOptions::MasterWork;
   const bool simulates =
       opt.master_work == MasterWork::simulate ||
       (opt.master_work == MasterWork::automatic && size <= kMasterSimulatesUpTo) || size == 1;
 
+  // Journals the records of one message (one write and flush) and books them. Only a failed
+  // record is decoded (its message is listed); the others need their id and status alone
+  // (the checksum is tested by every reader of the journal).
   auto record = [&](const char* bytes, std::size_t n) {
+    if (n % layout.record_bytes() != 0)
+      throw std::runtime_error("a message of " + std::to_string(n) +
+                               " bytes from a worker is not a whole number of records");
     journal.append(bytes, n);
-    for (std::size_t off = 0; off + layout.record_bytes() <= n; off += layout.record_bytes()) {
-      SampleOutcome o;
-      if (!decode_record(bytes + off, layout, o))
-        throw std::runtime_error("corrupt record from a worker");
-      if (schedule.complete(o.id)) {
+    for (std::size_t off = 0; off < n; off += layout.record_bytes()) {
+      long id = 0;
+      SampleStatus status = SampleStatus::ok;
+      record_key(bytes + off, id, status);
+      if (schedule.complete(id)) {
         ++sum.done;
-        if (o.status != SampleStatus::ok) {
+        if (status != SampleStatus::ok) {
+          SampleOutcome o;
+          if (!decode_record(bytes + off, layout, o))
+            throw std::runtime_error("corrupt record from a worker");
           // The first failures are listed; a study failing by the thousand must not bury the
           // progress lines. Every message stays in the result file.
           constexpr long kListedFailures = 20;
@@ -275,6 +297,8 @@ CampaignSummary master_loop(const CampaignStudy& st, const CampaignRunOptions& o
 
   bool stopping = false;
   PendingSends replies;
+  std::unique_ptr<char[]> buf;
+  std::size_t capacity = 0;
   while (true) {
     if (g_stop && !stopping) {
       stopping = true;
@@ -289,27 +313,36 @@ CampaignSummary master_loop(const CampaignStudy& st, const CampaignRunOptions& o
       MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, comm, &flag, &s);
       if (!flag) break;
       served = true;
+      const auto t0 = std::chrono::steady_clock::now();
       int count = 0;
       MPI_Get_count(&s, MPI_BYTE, &count);
-      std::vector<char> buf(static_cast<std::size_t>(count));
-      MPI_Recv(buf.data(), count, MPI_BYTE, s.MPI_SOURCE, s.MPI_TAG, comm, MPI_STATUS_IGNORE);
+      // One receive buffer, grown as needed and never cleared (a message fills what it uses).
+      if (static_cast<std::size_t>(count) > capacity) {
+        capacity = static_cast<std::size_t>(count);
+        buf.reset(new char[capacity]);
+      }
+      MPI_Recv(buf.get(), count, MPI_BYTE, s.MPI_SOURCE, s.MPI_TAG, comm, MPI_STATUS_IGNORE);
       if (s.MPI_TAG == kDone) {
         --active;
         continue;
       }
-      record(buf.data(), buf.size());
+      if (count > 0) ++sum.messages;
+      record(buf.get(), static_cast<std::size_t>(count));
       std::vector<long> ids;
       long id = 0;
-      while (!stopping && ids.size() < static_cast<std::size_t>(st.batch) && schedule.take(id))
+      while (!stopping && ids.size() < static_cast<std::size_t>(batch) && schedule.take(id))
         ids.push_back(id);
       const int tag = !ids.empty() ? kWork : (stopping ? kStopNow : kStopEnd);
       replies.send(id_bytes(ids), s.MPI_SOURCE, tag, comm);
+      sum.busy_seconds +=
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     }
     report(false);
     long own = 0;
     if (simulates && !stopping && schedule.take(own)) {
       // The master simulates too (both ranks busy on a two-core machine).
-      SampleOutcome o = opt.simulate ? opt.simulate(own) : runner.run(own);
+      if (!runner && !opt.simulate) runner = std::make_unique<SampleRunner>(st);
+      SampleOutcome o = opt.simulate ? opt.simulate(own) : runner->run(own);
       o.rank = 0;
       const auto rec = encode_record(o, layout);
       record(rec.data(), rec.size());
@@ -372,6 +405,11 @@ bool stop_requested() {
   return g_stop != 0;
 }
 
+int campaign_batch(int batch, int ranks) {
+  if (batch > 0) return batch;
+  return std::min(32, std::max(1, (ranks + 63) / 64));
+}
+
 CampaignSummary run_campaign(const CampaignStudy& st, const CampaignRunOptions& opt,
                              MPI_Comm comm) {
   int rank = 0, size = 1;
@@ -382,31 +420,35 @@ CampaignSummary run_campaign(const CampaignStudy& st, const CampaignRunOptions& 
   RunInfo info;
   info.ranks = size;
   info.start_time = now_text();
+  const int batch = campaign_batch(st.batch, size);
   if (rank == 0) {
     try {
-      sum = master(st, opt, comm, size);
+      sum = master(st, opt, comm, size, batch);
     } catch (const std::exception& e) {
       error = e.what();
     }
   } else {
-    worker(st, opt, comm, rank);
+    worker(st, opt, comm, rank, batch);
   }
   // Share the outcome (and any master error) with every rank.
   const std::string stop_reason = sum.stop_reason;
   long buf[4] = {sum.total, sum.done, sum.failed, sum.interrupted ? 1L : 0L};
   MPI_Bcast(buf, 4, MPI_LONG, 0, comm);
-  const double loop_seconds = sum.loop_seconds;  // the master's own figure
+  const CampaignSummary own = sum;  // the master's own figures
   sum = CampaignSummary{};
   sum.total = buf[0];
   sum.done = buf[1];
   sum.failed = buf[2];
   sum.interrupted = buf[3] != 0;
-  sum.loop_seconds = loop_seconds;
+  sum.loop_seconds = own.loop_seconds;
+  sum.busy_seconds = own.busy_seconds;
+  sum.messages = own.messages;
+  sum.batch = batch;
   int err_len = static_cast<int>(error.size());
   MPI_Bcast(&err_len, 1, MPI_INT, 0, comm);
   if (err_len) throw InputError(rank == 0 ? error : std::string("(reported by rank 0)"));
   if (rank == 0) sum.stop_reason = stop_reason;
-  if (rank == 0 && sum.done == sum.total && stop_reason.empty()) {
+  if (rank == 0 && sum.done == sum.total && stop_reason.empty() && opt.write_result) {
     info.end_time = now_text();
     error = write_result(st, opt, info, sum);
   }

@@ -23,10 +23,18 @@ struct CampaignRunOptions {
   enum class MasterWork { automatic, simulate, schedule_only } master_work = MasterWork::automatic;
   /// Replaces SampleRunner::run on every rank (benchmarks of the master: an outcome at once).
   std::function<SampleOutcome(long id)> simulate;
+  /// Build RUN.h5 from the journal at the end (benchmarks of the master's loop: false, and the
+  /// journal is left for the caller).
+  bool write_result = true;
 };
 
 /// Ranks up to which the master also simulates by default.
 inline constexpr int kMasterSimulatesUpTo = 8;
+
+/// The batch a run uses: CampaignStudy::batch, or for 0 (automatic) 1 on up to 64 ranks, where
+/// the master's cost per message is far below a sample's, and ceil(ranks / 64) (at most 32)
+/// beyond, so that one master keeps thousands of workers busy (docs/scaling.md).
+int campaign_batch(int batch, int ranks);
 
 struct CampaignSummary {
   long total = 0, done = 0, failed = 0;
@@ -36,6 +44,11 @@ struct CampaignSummary {
   std::string stop_reason;
   double peak_rss_mb = 0.0;   ///< largest peak resident memory of any rank [MB]
   double loop_seconds = 0.0;  ///< master: time in the scheduling loop, without the file [s]
+  /// master: time spent serving workers' messages (receiving, journalling, replying), without
+  /// waiting for them and without its own samples [s]
+  double busy_seconds = 0.0;
+  long messages = 0;  ///< master: messages with outcomes received from workers
+  int batch = 1;      ///< the batch used
 };
 
 /// Collective over `comm`. Returns the same summary on every rank. Throws InputError on the

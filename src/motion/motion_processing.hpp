@@ -1,6 +1,8 @@
 #pragma once
 // Operations on a ground-acceleration record: integration, baseline correction, truncation
 // and scaling. Pure functions: a new GroundMotion in, a new GroundMotion out.
+#include <cstddef>
+#include <memory>
 #include <vector>
 
 #include "motion/ground_motion.hpp"
@@ -30,6 +32,26 @@ GroundKinematics integrate(const GroundMotion& motion);
 /// integration as integrate()). Solved as a 6x6 KKT system. Records shorter than 8 samples
 /// are returned unchanged.
 GroundMotion baseline_correct(const GroundMotion& motion);
+
+/// baseline_correct for many records of one length and spacing (the motion generator corrects
+/// every iteration): the basis functions' integrals and the KKT matrix's factors are computed
+/// once, so a correction is one integration of the record, four dot products and the solve.
+/// Gives baseline_correct's numbers bit for bit.
+class BaselineCorrector {
+ public:
+  /// samples n >= 8, spacing dt > 0 [s]
+  BaselineCorrector(std::size_t samples, double dt);
+  ~BaselineCorrector();
+  BaselineCorrector(const BaselineCorrector&) = delete;
+  BaselineCorrector& operator=(const BaselineCorrector&) = delete;
+  /// Corrects accel [m/s^2] (samples values) in place. Not const: uses scratch buffers (one
+  /// corrector per thread).
+  void apply(std::vector<double>& accel);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
 
 /// The first `seconds` [s] of a record (samples with t <= seconds, to 1e-9 dt). Throws
 /// InputError when seconds <= 0.

@@ -5,11 +5,11 @@
 #include <string>
 
 #include "core/error.hpp"
-#include "core/vec4.hpp"
+#include "core/simd.hpp"
 
 namespace pound {
 namespace {
-constexpr std::size_t kLanes = 4;  // oscillator groups are padded to a multiple of this
+constexpr std::size_t kLanes = 8;  // the oscillators are padded to a multiple of this
 }  // namespace
 
 // Derivation (equivalent to Nigam & Jennings 1969): over one step the forcing is
@@ -59,14 +59,16 @@ SdofHistory sdof_history(const GroundMotion& motion, double period, double dampi
 
 SpectrumCalculator::SpectrumCalculator(std::vector<double> periods, double damping, double dt,
                                        ResponseSpectrumOptions options)
-    : periods_(std::move(periods)), damping_(damping), dt_(dt) {
+    : periods_(std::move(periods)), damping_(damping), dt_(dt), path_(options.simd) {
   if (!(damping >= 0.0 && damping < 1.0))
     throw InputError("response spectrum: damping " + std::to_string(damping) +
                      "; valid: 0 <= damping < 1 (fraction of critical)");
   if (!(dt > 0.0)) throw InputError("response spectrum: dt must be > 0 s");
   if (!(options.max_step_fraction >= 0.0))
     throw InputError("response spectrum: max_step_fraction must be >= 0");
-  for (double T : periods_) {
+  std::vector<std::size_t> order;  // periods > 0
+  for (std::size_t i = 0; i < periods_.size(); ++i) {
+    const double T = periods_[i];
     if (!(T >= 0.0) || !std::isfinite(T))
       throw InputError("response spectrum: period " + std::to_string(T) +
                        " s; valid: finite periods >= 0 s");
@@ -75,120 +77,248 @@ SpectrumCalculator::SpectrumCalculator(std::vector<double> periods, double dampi
       p.omega = 2.0 * M_PI / T;
       if (options.max_step_fraction > 0.0)
         p.substeps = std::max(1, int(std::ceil(dt / (options.max_step_fraction * T) - 1e-9)));
-      p.step = SdofStep::make(T, damping, dt / p.substeps);
+      order.push_back(i);
     }
     per_.push_back(p);
   }
-  // Group the periods by sub-step count (in order of first appearance) and lay the groups
-  // out one after another in the flat lane arrays, each padded with inert oscillators (all
-  // coefficients 0) to a multiple of kLanes.
-  for (std::size_t i = 0; i < per_.size(); ++i) {
-    if (per_[i].omega == 0.0) continue;
-    auto g = std::find_if(groups_.begin(), groups_.end(),
-                          [&](const Group& x) { return x.substeps == per_[i].substeps; });
-    if (g == groups_.end()) {
-      groups_.emplace_back();
-      g = groups_.end() - 1;
-      g->substeps = per_[i].substeps;
-    }
-    g->index.push_back(i);
-  }
+  // Lanes ordered by sub-step count, most first (stable), so that the blocks needing inner
+  // points come first and hold similar counts; padded to a multiple of kLanes.
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return per_[a].substeps > per_[b].substeps;
+  });
+  const std::size_t nl = (order.size() + kLanes - 1) / kLanes * kLanes;
   Lanes& l = lanes_;
-  for (Group& g : groups_) {
-    g.begin = l.a11.size();
-    for (std::size_t i : g.index) {
-      const SdofStep& k = per_[i].step;
-      const double w = per_[i].omega;
-      l.a11.push_back(k.a11);
-      l.a12.push_back(k.a12);
-      l.a21.push_back(k.a21);
-      l.a22.push_back(k.a22);
-      l.b11.push_back(k.b11);
-      l.b12.push_back(k.b12);
-      l.b21.push_back(k.b21);
-      l.b22.push_back(k.b22);
-      l.c.push_back(2.0 * damping * w);
-      l.w2.push_back(w * w);
-    }
-    g.end = (l.a11.size() + kLanes - 1) / kLanes * kLanes;
-    for (std::vector<double>* c :
-         {&l.a11, &l.a12, &l.a21, &l.a22, &l.b11, &l.b12, &l.b21, &l.b22, &l.c, &l.w2})
-      c->resize(g.end, 0.0);
+  for (std::vector<double>* c :
+       {&l.a11, &l.a12, &l.a21, &l.a22, &l.g1, &l.b12, &l.g2, &l.b22, &l.c, &l.w2})
+    c->assign(nl, 0.0);
+  lane_of_.assign(periods_.size(), 0);
+  for (std::size_t p = 0; p < order.size(); ++p) {
+    const std::size_t i = order[p];
+    lane_of_[i] = p;
+    const SdofStep k = SdofStep::make(periods_[i], damping, dt);
+    const double w = per_[i].omega;
+    l.a11[p] = k.a11;
+    l.a12[p] = k.a12;
+    l.a21[p] = k.a21;
+    l.a22[p] = k.a22;
+    // The recurrence is run on y = x - b12 a_i, u = v - b22 a_i (state x, v of the lanes
+    // below): then
+    //   y_{i+1} = a11 y_i + a12 u_i + g1 a_i,  u_{i+1} = a21 y_i + a22 u_i + g2 a_i,
+    // g1 = a11 b12 + a12 b22 + b11, g2 = a21 b12 + a22 b22 + b21, and x_{i+1} = y_{i+1} +
+    // b12 a_{i+1}: a product and a sum fewer per step than the recurrence on x, v.
+    l.g1[p] = k.a11 * k.b12 + k.a12 * k.b22 + k.b11;
+    l.b12[p] = k.b12;
+    l.g2[p] = k.a21 * k.b12 + k.a22 * k.b22 + k.b21;
+    l.b22[p] = k.b22;
+    l.c[p] = 2.0 * damping * w;
+    l.w2[p] = w * w;
+  }
+  // Inner points: at s = j / m of the step (j = 1 .. m - 1) the exact propagator over s dt
+  // for the ground acceleration linear from a_i to a_i + s (a_{i+1} - a_i), i.e. SdofStep over
+  // s dt with b on a0 and a1 = (1 - s) a_i + s a_{i+1}.
+  Points& q = points_;
+  const std::size_t nblocks = nl / kLanes;
+  for (std::size_t b = 0; b < nblocks; ++b) {
+    int count = 0;
+    for (std::size_t p = b * kLanes; p < std::min(order.size(), (b + 1) * kLanes); ++p)
+      count = std::max(count, per_[order[p]].substeps - 1);
+    q.count.push_back(count);
+    q.offset.push_back(q.xx.size() / kLanes);
+    for (std::vector<double>* c : {&q.xx, &q.xv, &q.xa0, &q.xa1, &q.vx, &q.vv, &q.va0, &q.va1})
+      c->resize(c->size() + static_cast<std::size_t>(count) * kLanes, 0.0);
+    for (int j = 1; j <= count; ++j)
+      for (std::size_t p = b * kLanes; p < std::min(order.size(), (b + 1) * kLanes); ++p) {
+        const std::size_t i = order[p];
+        const int m = per_[i].substeps;
+        if (j >= m) continue;
+        const double s = double(j) / double(m);
+        const SdofStep k = SdofStep::make(periods_[i], damping, s * dt);
+        const std::size_t at =
+            (q.offset[b] + static_cast<std::size_t>(j - 1)) * kLanes + p % kLanes;
+        // On the state y, u at t_i: x_i = y_i + b12 a_i, v_i = u_i + b22 a_i (above).
+        const double b12 = l.b12[p], b22 = l.b22[p];
+        q.xx[at] = k.a11;
+        q.xv[at] = k.a12;
+        q.xa0[at] = k.a11 * b12 + k.a12 * b22 + (k.b11 + k.b12 * (1.0 - s));
+        q.xa1[at] = k.b12 * s;
+        q.vx[at] = k.a21;
+        q.vv[at] = k.a22;
+        q.va0[at] = k.a21 * b12 + k.a22 * b22 + (k.b21 + k.b22 * (1.0 - s));
+        q.va1[at] = k.b22 * s;
+      }
   }
 }
 
 namespace {
 
-// Four oscillators side by side as one simd::V4 (core/vec4.hpp).
-using simd::load;
-using simd::store;
+// Blocks of eight oscillators (core/simd.hpp): one V8 on AVX-512, two V4 on AVX2, four V2 on
+// the SSE2 baseline.
+using simd::V2;
 using simd::V4;
-using simd::vabs;
-using simd::vmax;
-static_assert(kLanes == 4, "the kernel works on blocks of four oscillators");
+using simd::V8;
+using simd::vfabs;
+using simd::vfma;
+using simd::vfmax;
+using simd::vload;
+using simd::vsplat;
+using simd::vstore;
+static_assert(kLanes == 8, "the kernel works on blocks of eight oscillators");
 
-// The oscillators of one sub-step group: lanes [begin, end) of the flat arrays.
-struct KernelGroup {
-  std::size_t begin, end;
-  int substeps;
-};
 struct KernelArrays {
-  const double *a11, *a12, *a21, *a22, *b11, *b12, *b21, *b22, *c, *w2;
-  double *x, *v, *xmax, *amax;  // amax null: no absolute acceleration
+  std::size_t blocks;
+  const double *a11, *a12, *a21, *a22, *g1, *b12, *g2, *b22, *c, *w2;
+  const int* count;
+  const std::size_t* offset;
+  const double *xx, *xv, *xa0, *xa1, *vx, *vv, *va0, *va1;
+  double *xmax, *amax;  // amax: only with kAbsolute
 };
 
-// Peaks of every oscillator over the record a[0..n): the exact step of SdofStep::make for
-// the ground acceleration linear between samples, sub-step j of m using the values
-// a_i + j (a_{i+1} - a_i) / m, every group in one pass over the samples (the groups'
-// recurrences are independent, so their steps overlap in the processor). Each lane does the
-// operations of the scalar recurrence in the same order and no FMA is enabled, so the AVX2
-// clone and the default (SSE2) clone give the same bits on any x86-64 machine.
-__attribute__((target_clones("avx2", "default"))) void peak_kernel(const KernelArrays& k,
-                                                                   const KernelGroup* groups,
-                                                                   std::size_t ngroups,
-                                                                   const double* a, std::size_t n) {
-  // Local restrict copies: the stores (memcpy) could otherwise alias the structure.
-  const double* __restrict a11 = k.a11;
-  const double* __restrict a12 = k.a12;
-  const double* __restrict a21 = k.a21;
-  const double* __restrict a22 = k.a22;
-  const double* __restrict b11 = k.b11;
-  const double* __restrict b12 = k.b12;
-  const double* __restrict b21 = k.b21;
-  const double* __restrict b22 = k.b22;
-  const double* __restrict c = k.c;
-  const double* __restrict w2 = k.w2;
-  double* __restrict x = k.x;
-  double* __restrict v = k.v;
-  double* __restrict xmax = k.xmax;
-  double* __restrict amax = k.amax;
+// Peaks of the oscillators of U vectors of lanes (the chunk starting at lane p0) over the
+// record a[0..n): per sample, the inner points from the state at t_i, then the exact step to
+// t_{i+1} (SdofStep::make for dt), for the ground acceleration linear between samples; with
+// kAbsolute also the peak of x'' + a_g = -(c v + w^2 x). The state stays in registers through
+// the record, and the U recurrences are independent, so their steps overlap in the processor
+// (one recurrence alone would wait on its own latency at every sample).
+template <class V, bool kAbsolute, int U>
+__attribute__((always_inline)) inline void peak_chunk(const KernelArrays& k, std::size_t p0,
+                                                      const double* a, std::size_t n) {
+  constexpr std::size_t W = simd::kWidth<V>;
+  V sx[U], sv[U], xm[U], am[U];  // state y, u (constructor), peaks
+  std::size_t p[U], q0[U];
+  int count[U];
+#pragma GCC unroll 8
+  for (int u = 0; u < U; ++u) {
+    p[u] = p0 + static_cast<std::size_t>(u) * W;
+    const std::size_t b = p[u] / kLanes;
+    count[u] = k.count[b];
+    q0[u] = k.offset[b] * kLanes + p[u] % kLanes;
+    // At rest: x_0 = v_0 = 0.
+    sx[u] = -(vload<V>(k.b12 + p[u]) * vsplat<V>(n ? a[0] : 0.0));
+    sv[u] = -(vload<V>(k.b22 + p[u]) * vsplat<V>(n ? a[0] : 0.0));
+    xm[u] = am[u] = V{};
+  }
   for (std::size_t i = 0; i + 1 < n; ++i) {
-    for (std::size_t gi = 0; gi < ngroups; ++gi) {
-      const std::size_t begin = groups[gi].begin, end = groups[gi].end;
-      const int m = groups[gi].substeps;
-      const double da = (a[i + 1] - a[i]) * (1.0 / m);
-      for (int j = 0; j < m; ++j) {
-        const double a0 = a[i] + j * da;
-        const double a1 = j + 1 == m ? a[i + 1] : a[i] + (j + 1) * da;
-        const V4 A0 = {a0, a0, a0, a0}, A1 = {a1, a1, a1, a1};
-        for (std::size_t p = begin; p < end; p += kLanes) {
-          const V4 xp = load(x + p), vp = load(v + p);
-          const V4 xn =
-              load(a11 + p) * xp + load(a12 + p) * vp + load(b11 + p) * A0 + load(b12 + p) * A1;
-          const V4 vn =
-              load(a21 + p) * xp + load(a22 + p) * vp + load(b21 + p) * A0 + load(b22 + p) * A1;
-          store(x + p, xn);
-          store(v + p, vn);
-          store(xmax + p, vmax(load(xmax + p), vabs(xn)));
-          if (amax)  // x'' + a_g = -(c v + w^2 x)
-            store(amax + p, vmax(load(amax + p), vabs(load(c + p) * vn + load(w2 + p) * xn)));
+    const V A0 = vsplat<V>(a[i]), A1 = vsplat<V>(a[i + 1]);
+#pragma GCC unroll 8
+    for (int u = 0; u < U; ++u) {
+      for (int j = 0; j < count[u]; ++j) {
+        const std::size_t q = q0[u] + static_cast<std::size_t>(j) * kLanes;
+        const V xj = vfma(vload<V>(k.xx + q), sx[u],
+                          vfma(vload<V>(k.xv + q), sv[u],
+                               vfma(vload<V>(k.xa0 + q), A0, vload<V>(k.xa1 + q) * A1)));
+        xm[u] = vfmax(xm[u], vfabs(xj));
+        if (kAbsolute) {
+          const V vj = vfma(vload<V>(k.vx + q), sx[u],
+                            vfma(vload<V>(k.vv + q), sv[u],
+                                 vfma(vload<V>(k.va0 + q), A0, vload<V>(k.va1 + q) * A1)));
+          am[u] = vfmax(am[u], vfabs(vfma(vload<V>(k.c + p[u]), vj, vload<V>(k.w2 + p[u]) * xj)));
         }
+      }
+      const V yn = vfma(vload<V>(k.a11 + p[u]), sx[u],
+                        vfma(vload<V>(k.a12 + p[u]), sv[u], vload<V>(k.g1 + p[u]) * A0));
+      const V un = vfma(vload<V>(k.a21 + p[u]), sx[u],
+                        vfma(vload<V>(k.a22 + p[u]), sv[u], vload<V>(k.g2 + p[u]) * A0));
+      sx[u] = yn;
+      sv[u] = un;
+      const V xn = vfma(vload<V>(k.b12 + p[u]), A1, yn);
+      xm[u] = vfmax(xm[u], vfabs(xn));
+      if (kAbsolute) {
+        const V vn = vfma(vload<V>(k.b22 + p[u]), A1, un);
+        am[u] = vfmax(am[u], vfabs(vfma(vload<V>(k.c + p[u]), vn, vload<V>(k.w2 + p[u]) * xn)));
       }
     }
   }
+#pragma GCC unroll 8
+  for (int u = 0; u < U; ++u) {
+    vstore(k.xmax + p[u], xm[u]);
+    if (kAbsolute) vstore(k.amax + p[u], am[u]);
+  }
+}
+
+// Every lane: chunks of four vectors, then the rest.
+template <class V, bool kAbsolute>
+__attribute__((always_inline)) inline void peak_body(const KernelArrays& k, const double* a,
+                                                     std::size_t n) {
+  constexpr std::size_t W = simd::kWidth<V>, kChunk = 4;
+  const std::size_t lanes = k.blocks * kLanes;
+  std::size_t p = 0;
+  for (; p + kChunk * W <= lanes; p += kChunk * W) peak_chunk<V, kAbsolute, kChunk>(k, p, a, n);
+  // The rest in one chunk (one vector alone would wait on its own latency at every sample).
+  switch ((lanes - p) / W) {
+    case 3:
+      peak_chunk<V, kAbsolute, 3>(k, p, a, n);
+      break;
+    case 2:
+      peak_chunk<V, kAbsolute, 2>(k, p, a, n);
+      break;
+    case 1:
+      peak_chunk<V, kAbsolute, 1>(k, p, a, n);
+      break;
+    default:
+      break;
+  }
+}
+
+// One function per instruction set; every lane does the same operations in the same order,
+// products and sums rounded separately except the explicit fused multiply-adds (simd::vfma,
+// one rounding on every path), so all give the same bits (core/simd.hpp). The baseline's
+// std::fma is slow without the instruction; only CPUs without AVX2 and FMA take it.
+POUND_NO_CONTRACT __attribute__((target("avx512f"))) void peak_avx512(const KernelArrays& k,
+                                                                      const double* a,
+                                                                      std::size_t n, bool sa) {
+  if (sa)
+    peak_body<V8, true>(k, a, n);
+  else
+    peak_body<V8, false>(k, a, n);
+}
+POUND_NO_CONTRACT __attribute__((target("avx2,fma"))) void peak_avx2(const KernelArrays& k,
+                                                                     const double* a, std::size_t n,
+                                                                     bool sa) {
+  if (sa)
+    peak_body<V4, true>(k, a, n);
+  else
+    peak_body<V4, false>(k, a, n);
+}
+POUND_NO_CONTRACT void peak_baseline(const KernelArrays& k, const double* a, std::size_t n,
+                                     bool sa) {
+  if (sa)
+    peak_body<V2, true>(k, a, n);
+  else
+    peak_body<V2, false>(k, a, n);
+}
+
+using PeakKernel = void (*)(const KernelArrays&, const double*, std::size_t, bool);
+
+PeakKernel peak_kernel(SimdPath path) {
+  static const bool avx512 = __builtin_cpu_supports("avx512f");
+  static const bool avx2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+  switch (path) {
+    case SimdPath::automatic:
+      return avx512 ? peak_avx512 : avx2 ? peak_avx2 : peak_baseline;
+    case SimdPath::avx512:
+      if (!avx512) throw InputError("response spectrum: this CPU has no AVX-512");
+      return peak_avx512;
+    case SimdPath::avx2:
+      if (!avx2) throw InputError("response spectrum: this CPU has no AVX2 and FMA");
+      return peak_avx2;
+    case SimdPath::baseline:
+      return peak_baseline;
+  }
+  return peak_baseline;
 }
 
 }  // namespace
+
+bool simd_path_available(SimdPath path) {
+  switch (path) {
+    case SimdPath::avx512:
+      return __builtin_cpu_supports("avx512f");
+    case SimdPath::avx2:
+      return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+    default:
+      return true;
+  }
+}
 
 void SpectrumCalculator::peaks(const std::vector<double>& a, std::vector<double>& sd,
                                std::vector<double>* sa) const {
@@ -200,23 +330,28 @@ void SpectrumCalculator::peaks(const std::vector<double>& a, std::vector<double>
   for (std::size_t i = 0; i < np; ++i)  // T = 0: a rigid oscillator moves with the ground
     if (per_[i].omega == 0.0 && sa) (*sa)[i] = pga;
   const std::size_t nl = lanes_.a11.size();
-  std::vector<double> x(nl, 0.0), v(nl, 0.0), xmax(nl, 0.0), amax(sa ? nl : 0, 0.0);
-  std::vector<KernelGroup> kg;
-  for (const Group& g : groups_) kg.push_back({g.begin, g.end, g.substeps});
+  // The peaks (no allocation per spectrum for the usual sizes).
+  constexpr std::size_t kStackLanes = 256;
+  double stack[2 * kStackLanes];
+  std::vector<double> heap;
+  double* peak = stack;
+  if (nl > kStackLanes) {
+    heap.resize(2 * nl);
+    peak = heap.data();
+  }
   const Lanes& l = lanes_;
-  const KernelArrays k{l.a11.data(), l.a12.data(),
-                       l.a21.data(), l.a22.data(),
-                       l.b11.data(), l.b12.data(),
-                       l.b21.data(), l.b22.data(),
-                       l.c.data(),   l.w2.data(),
-                       x.data(),     v.data(),
-                       xmax.data(),  sa ? amax.data() : nullptr};
-  peak_kernel(k, kg.data(), kg.size(), a.data(), a.size());
-  for (const Group& g : groups_)
-    for (std::size_t p = 0; p < g.index.size(); ++p) {
-      sd[g.index[p]] = xmax[g.begin + p];
-      if (sa) (*sa)[g.index[p]] = amax[g.begin + p];
-    }
+  const Points& q = points_;
+  const KernelArrays k{nl / kLanes,  l.a11.data(),   l.a12.data(),    l.a21.data(), l.a22.data(),
+                       l.g1.data(),  l.b12.data(),   l.g2.data(),     l.b22.data(), l.c.data(),
+                       l.w2.data(),  q.count.data(), q.offset.data(), q.xx.data(),  q.xv.data(),
+                       q.xa0.data(), q.xa1.data(),   q.vx.data(),     q.vv.data(),  q.va0.data(),
+                       q.va1.data(), peak,           peak + nl};
+  peak_kernel(path_)(k, a.data(), a.size(), sa != nullptr);
+  for (std::size_t i = 0; i < np; ++i) {
+    if (per_[i].omega == 0.0) continue;
+    sd[i] = k.xmax[lane_of_[i]];
+    if (sa) (*sa)[i] = k.amax[lane_of_[i]];
+  }
 }
 
 ResponseSpectrum SpectrumCalculator::compute(const std::vector<double>& accel) const {

@@ -8,17 +8,28 @@
 // response is exact at every step for that interpolant; sub-stepping only adds points at
 // which the peak is looked for (steps of at most max_step_fraction * T), which matters at
 // short periods (El Centro NS, 5 %, T = 0.2 s: PSA 0.793 g without, 0.820 g with T/20).
-// Peaks are taken over the record's duration (no free-vibration tail).
+// Peaks are taken over the record's duration (no free-vibration tail). SpectrumCalculator
+// takes one exact step of the record spacing per sample and computes the points inside it
+// directly from the state at the step's start (issue 13; the same numbers to round-off as the
+// sub-steps taken one after another, tests/motion/response_spectrum_test.cpp).
 #include <vector>
 
 #include "motion/ground_motion.hpp"
 
 namespace pound {
 
+/// Instruction set of the oscillator kernel; every one gives the same bits (automatic: the
+/// widest the CPU has; the others are for tests and benchmarks).
+enum class SimdPath { automatic, avx512, avx2, baseline };
+/// Whether the CPU running this has the instruction set of `path`.
+bool simd_path_available(SimdPath path);
+
 struct ResponseSpectrumOptions {
-  /// Largest step used to look for peaks, as a fraction of the period [-]: each record step
-  /// dt is split into ceil(dt / (fraction T)) equal sub-steps. 0 = no sub-stepping.
+  /// Largest step used to look for peaks, as a fraction of the period [-]: the peak is looked
+  /// for at the ends of ceil(dt / (fraction T)) equal sub-steps of each record step dt.
+  /// 0 = at the samples only.
   double max_step_fraction = 0.05;
+  SimdPath simd = SimdPath::automatic;
 };
 
 /// Peaks at the given periods for one damping ratio.
@@ -64,27 +75,36 @@ class SpectrumCalculator {
   struct PerPeriod {
     double omega = 0.0;  // 0 for T = 0
     int substeps = 1;
-    SdofStep step{};
   };
-  // Periods with the same number of sub-steps are advanced together: their coefficients sit
-  // side by side in the flat arrays below (structure of arrays, padded per group to a
-  // multiple of 4 lanes), so one SIMD kernel advances four independent recurrences at once.
-  struct Group {
-    int substeps = 1;
-    std::size_t begin = 0, end = 0;  // lanes [begin, end) of the flat arrays (padded)
-    std::vector<std::size_t> index;  // into periods_, one per real (unpadded) lane
-  };
+  // The oscillators (periods > 0) sit side by side in flat arrays (structure of arrays),
+  // ordered by sub-step count, most first, and padded with inert lanes (all coefficients 0)
+  // to a multiple of kLanes, so that one SIMD kernel advances eight independent recurrences
+  // at once. Every lane takes one exact step of the record spacing dt per sample, on the
+  // shifted state y = x - b12 a_i, u = v - b22 a_i (g1, g2: the coefficients of a_i there);
+  // the points inside a step at which the peak is also looked for (t_i + j dt / m, j < m) are
+  // computed directly from the state at t_i and the two samples (Points), not by stepping.
   struct Lanes {
-    std::vector<double> a11, a12, a21, a22, b11, b12, b21, b22, c, w2;
+    std::vector<double> a11, a12, a21, a22, g1, b12, g2, b22, c, w2;
+  };
+  // Inner points of block b (lanes [kLanes b, kLanes (b + 1))): count[b] points, the first
+  // one's coefficients at offset[b] (in units of kLanes values); a lane with fewer points than
+  // its block has zero coefficients for the extra ones (x = 0 there, which never raises a peak).
+  struct Points {
+    std::vector<int> count;
+    std::vector<std::size_t> offset;
+    // x(t_i + s dt) = xx y_i + xv u_i + xa0 a_i + xa1 a_{i+1}; v likewise.
+    std::vector<double> xx, xv, xa0, xa1, vx, vv, va0, va1;
   };
   // Peak |x| and peak |x'' + a_g| (when sa is not null) of every period.
   void peaks(const std::vector<double>& accel, std::vector<double>& sd,
              std::vector<double>* sa) const;
   std::vector<double> periods_;
   double damping_, dt_;
+  SimdPath path_;
   std::vector<PerPeriod> per_;
-  std::vector<Group> groups_;
+  std::vector<std::size_t> lane_of_;  // lane of period i (periods > 0)
   Lanes lanes_;
+  Points points_;
 };
 
 /// Response spectrum of a record at the given periods [s] and damping [-].

@@ -85,6 +85,8 @@ struct SimqkeGenerator::Impl {
   std::vector<std::size_t> bin_j;  // matching-period interval of bin k
   std::vector<double> bin_w;       // weight of j + 1 in log period
   std::unique_ptr<SpectrumCalculator> spectra;
+  std::unique_ptr<BaselineCorrector> baseline;
+  std::vector<double> held_pow;  // ratio_j^relaxation of the current iteration
   double* real = nullptr;        // nfft reals
   fftw_complex* spec = nullptr;  // nbins complex
   fftw_plan c2r = nullptr, r2c = nullptr;
@@ -104,33 +106,41 @@ struct SimqkeGenerator::Impl {
   }
 
   // The enveloped, baseline-corrected motion for amplitudes amp and phases phi.
-  GroundMotion synthesise(const std::vector<double>& amp, const std::vector<double>& cosphi,
-                          const std::vector<double>& sinphi) {
+  void synthesise(const std::vector<double>& amp, const std::vector<double>& cosphi,
+                  const std::vector<double>& sinphi, GroundMotion& m) {
     for (std::size_t k = 0; k < nbins; ++k) {
       spec[k][0] = 0.5 * amp[k] * cosphi[k];
       spec[k][1] = 0.5 * amp[k] * sinphi[k];
     }
     fftw_execute(c2r);  // real_j = sum_k A_k cos(w_k t_j + phi_k); destroys spec
-    GroundMotion m{"", settings.dt, std::vector<double>(n)};
+    m.dt = settings.dt;
+    m.accel.resize(n);
     for (std::size_t i = 0; i < n; ++i) m.accel[i] = real[i] * envelope[i];
-    return baseline_correct(m);
+    baseline->apply(m.accel);
   }
 
   // The motion with its Fourier amplitudes (zero-padded to nfft) multiplied by the ratio,
-  // phases kept, then baseline-corrected.
-  GroundMotion correct(const GroundMotion& m, const std::vector<double>& ratio) {
+  // phases kept, then baseline-corrected (in place). A bin at a matching period or outside
+  // their range (weight 0) takes ratio_j itself, whose power is computed once per iteration.
+  void correct(GroundMotion& m, const std::vector<double>& ratio) {
     std::copy(m.accel.begin(), m.accel.end(), real);
     std::fill(real + n, real + nfft, 0.0);
     fftw_execute(r2c);
+    held_pow.resize(ratio.size());
+    for (std::size_t j = 0; j < ratio.size(); ++j)
+      held_pow[j] = std::pow(ratio[j], settings.relaxation);
     spec[0][0] = spec[0][1] = 0.0;
     for (std::size_t k = 1; k < nbins; ++k) {
-      const double f = std::pow(bin_ratio(ratio, k), settings.relaxation) / double(nfft);
+      // bin_ratio is ratio_j + 0 (ratio_j+1 - ratio_j) = ratio_j exactly when the weight is 0.
+      const double p =
+          bin_w[k] == 0.0 ? held_pow[bin_j[k]] : std::pow(bin_ratio(ratio, k), settings.relaxation);
+      const double f = p / double(nfft);
       spec[k][0] *= f;
       spec[k][1] *= f;
     }
     fftw_execute(c2r);
-    GroundMotion out{"", settings.dt, std::vector<double>(real, real + n)};
-    return baseline_correct(out);
+    std::copy(real, real + n, m.accel.begin());
+    baseline->apply(m.accel);
   }
 
   // The matching iteration (simqke.hpp) from first-guess amplitudes amp towards `target` at
@@ -167,6 +177,7 @@ SimqkeGenerator::SimqkeGenerator(const DesignSpectrum& target, double duration,
   const std::vector<double> periods = simqke_match_periods(settings);
   d.target_psa = target.sample(periods);
   d.spectra = std::make_unique<SpectrumCalculator>(periods, target.damping(), dt);
+  d.baseline = std::make_unique<BaselineCorrector>(d.n, dt);
 
   // First guess of the amplitudes and the bins' places among the matching periods.
   const double zeta = std::max(target.damping(), 0.005);
@@ -248,18 +259,28 @@ GeneratedMotion SimqkeGenerator::Impl::generate(std::uint64_t seed, std::uint64_
   std::vector<double> cosphi(d.nbins), sinphi(d.nbins), psa, ratio(target.size());
   GeneratedMotion best;
   double best_score = 1e300;
+  int evaluations = 0;
   for (int attempt = 0; attempt < max_attempts; ++attempt) {
     for (std::size_t k = 0; k < d.nbins; ++k) {
+      // A bin without amplitude needs no phase (its term is zero either way); each phase
+      // depends on its own bin's counter only.
+      if (amp[k] == 0.0) {
+        cosphi[k] = 1.0;
+        sinphi[k] = 0.0;
+        continue;
+      }
       const double u = philox_uniform(seed, index, std::uint32_t(k), std::uint32_t(attempt));
       cosphi[k] = std::cos(2.0 * M_PI * u);
       sinphi[k] = std::sin(2.0 * M_PI * u);
     }
-    GroundMotion m = d.synthesise(amp, cosphi, sinphi);
+    GroundMotion m;
+    d.synthesise(amp, cosphi, sinphi, m);
     double attempt_best = 1e300;
     int attempt_best_it = 0;
     for (int it = 0;; ++it) {
-      if (it > 0) m = d.correct(m, ratio);
+      if (it > 0) d.correct(m, ratio);
       d.spectra->compute_psa(m.accel, psa);
+      ++evaluations;
       // Score: the largest |q - 1| over the matching periods, q = computed / target; for a
       // random target the RMS of ln q instead (simqke.hpp).
       double max_dev = 0.0, sum_sq = 0.0;
@@ -292,6 +313,7 @@ GeneratedMotion SimqkeGenerator::Impl::generate(std::uint64_t seed, std::uint64_
     if (best_score <= d.settings.accept_score) break;
   }
   best.target_psa = target;
+  best.spectra = evaluations;
   best.motion.name = "simqke seed " + std::to_string(seed) + " index " + std::to_string(index);
   const GroundKinematics kin = integrate(best.motion);
   best.final_velocity = kin.final_velocity();

@@ -96,6 +96,7 @@ struct GeneratedMotion {
   std::vector<double> target_psa;
   int iterations = 0;               ///< correction iterations of the returned motion
   int attempt = 0;                  ///< phase set of the returned motion (0 = first)
+  int spectra = 0;                  ///< spectrum evaluations, every phase set counted
   SpectrumMatch match;              ///< at the matching periods
   double final_velocity = 0.0;      ///< [m/s]
   double final_displacement = 0.0;  ///< [m]

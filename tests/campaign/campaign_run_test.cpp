@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
@@ -197,6 +198,68 @@ TEST(CampaignRun, KilledRunResumesToTheUninterruptedFile) {
   EXPECT_FALSE(fs::exists(cut));
   // Without --resume the existing journal is refused; with it the run completes.
   EXPECT_EQ(sh(pound(n + " --out " + cut)), 2);
+  ASSERT_EQ(sh("mpirun -np 2 --oversubscribe " + pound(n + " --out " + cut + " --resume")), 0);
+  expect_same_numbers(ref, cut);
+}
+
+TEST(CampaignRun, BatchedOutcomesGiveTheSameNumbersOnThreeRanks) {
+  // Workers return their outcomes five at a time (campaign.batch, issue 13): the journal holds
+  // them in another order, the result file is the same.
+  const std::string one = dir() + "/batch1.h5", three = dir() + "/batch3.h5";
+  const std::string n = "--samples 40";
+  ASSERT_EQ(sh("mpirun -np 1 " + pound(n + " --out " + one)), 0);
+  ASSERT_EQ(sh("mpirun -np 3 --oversubscribe " + pound(n + " --campaign.batch 5 --out " + three)),
+            0);
+  expect_same_numbers(one, three);
+}
+
+// The processes of session `sid` (a job started with setsid: mpirun and its ranks, which
+// Open MPI puts into process groups of their own).
+std::vector<pid_t> session_members(pid_t sid) {
+  std::vector<pid_t> out;
+  for (const auto& e : fs::directory_iterator("/proc")) {
+    const std::string name = e.path().filename();
+    if (name.find_first_not_of("0123456789") != std::string::npos) continue;
+    std::ifstream in(e.path() / "stat");
+    std::string stat((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::size_t close = stat.rfind(')');
+    if (close == std::string::npos) continue;
+    std::istringstream rest(stat.substr(close + 1));
+    std::string state;
+    long ppid = 0, pgrp = 0, session = 0;
+    rest >> state >> ppid >> pgrp >> session;
+    if (session == sid) out.push_back(static_cast<pid_t>(std::stol(name)));
+  }
+  return out;
+}
+
+TEST(CampaignRun, KilledBatchedRunOnThreeRanksResumesToTheUninterruptedFile) {
+  // SIGKILL to every process of a three-rank run whose workers batch their outcomes (a node
+  // lost at once): the journal keeps the whole messages written before, a resumed run on two
+  // ranks completes it to the uninterrupted file.
+  const std::string ref = dir() + "/kref.h5", cut = dir() + "/kcut.h5";
+  const std::string n = "--samples 160 --campaign.batch 4";
+  ASSERT_EQ(sh(pound(n + " --out " + ref)), 0);
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    ::setsid();
+    ::execl("/bin/sh", "sh", "-c",
+            ("exec mpirun -np 3 --oversubscribe " + pound(n + " --out " + cut)).c_str(), nullptr);
+    ::_exit(127);
+  }
+  const std::string journal = cut + ".journal";
+  const auto t0 = std::chrono::steady_clock::now();
+  while (std::chrono::steady_clock::now() - t0 < std::chrono::seconds(60)) {
+    struct stat s;
+    if (::stat(journal.c_str(), &s) == 0 && s.st_size > 40 * 1024 / 10) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  for (pid_t p : session_members(pid)) ::kill(p, SIGKILL);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFSIGNALED(status)) << "the run finished before it could be killed";
+  ASSERT_TRUE(fs::exists(journal));
+  EXPECT_FALSE(fs::exists(cut));
   ASSERT_EQ(sh("mpirun -np 2 --oversubscribe " + pound(n + " --out " + cut + " --resume")), 0);
   expect_same_numbers(ref, cut);
 }
