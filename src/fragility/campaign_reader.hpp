@@ -34,6 +34,10 @@ struct CampaignData {
   double im_period = 0.0;         ///< T1 of Sa(T1) [s] (0 for PGA)
   std::string seed;               ///< study seed (root attribute)
   std::vector<std::string> building_names;
+  /// The name of building b (0-based), or "building<b+1>" when the file names none.
+  std::string building_name(std::size_t b) const {
+    return b < building_names.size() ? building_names[b] : "building" + std::to_string(b + 1);
+  }
   std::vector<double> levels;  ///< stripe intensities [m/s^2]; empty: continuous IM
   std::size_t samples = 0;
   std::vector<int> status;                   ///< 0 ok, else failed

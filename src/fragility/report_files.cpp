@@ -12,31 +12,6 @@
 namespace pound {
 namespace {
 
-// A number, or an empty field for NaN / infinity.
-std::string num(double x) {
-  if (!std::isfinite(x)) return "";
-  char b[32];
-  std::snprintf(b, sizeof b, "%.10g", x);
-  return b;
-}
-
-std::string name_of(const CampaignData& c, std::size_t b) {
-  return b < c.building_names.size() ? c.building_names[b] : "building" + std::to_string(b + 1);
-}
-
-// Writes `text` to path atomically.
-void write_file(const std::string& path, const std::string& text) {
-  AtomicPath out(path);
-  {
-    std::ofstream f(out.temp(), std::ios::binary);
-    if (!f) throw InputError(path + ": cannot write; give a writable --out folder");
-    f << text;
-    f.flush();
-    if (!f) throw InputError(path + ": write failed");
-  }
-  out.commit();
-}
-
 std::string curves_csv(const CampaignData& c, const FragilityReport& r) {
   std::string s =
       "building,building_name,edp,unit,limit,pounding,status,theta_mps2,beta,"
@@ -47,16 +22,18 @@ std::string curves_csv(const CampaignData& c, const FragilityReport& r) {
     long n = 0, z = 0;
     for (const auto& o : k.observed) n += o.n, z += o.z;
     const bool f = k.fit.finite();
-    s += std::to_string(k.building) + "," + name_of(c, k.building) + "," + to_string(k.edp) + "," +
-         unit_of(k.edp) + "," + num(k.limit) + "," + (k.pounding ? "true" : "false") + "," +
-         to_string(k.fit.status) + "," + num(f ? k.fit.theta : NAN) + "," +
-         num(f ? k.fit.beta : NAN) + "," + num(f ? k.theta_ci.lo : NAN) + "," +
-         num(f ? k.theta_ci.hi : NAN) + "," + num(f ? k.beta_ci.lo : NAN) + "," +
-         num(f ? k.beta_ci.hi : NAN) + "," + num(k.theta_asym_lo) + "," + num(k.theta_asym_hi) +
-         "," + num(k.beta_asym_lo) + "," + num(k.beta_asym_hi) + "," +
-         std::to_string(k.theta_ci.finite) + "," + std::to_string(n) + "," + std::to_string(z) +
-         "," + num(k.fit.bracketed() ? k.fit.theta_lo : NAN) + "," +
-         num(k.fit.bracketed() ? k.fit.theta_hi : NAN) + "," + std::to_string(k.left_out) + "\n";
+    s += std::to_string(k.building) + "," + c.building_name(k.building) + "," + to_string(k.edp) +
+         "," + unit_of(k.edp) + "," + csv_number(k.limit) + "," + (k.pounding ? "true" : "false") +
+         "," + to_string(k.fit.status) + "," + csv_number(f ? k.fit.theta : NAN) + "," +
+         csv_number(f ? k.fit.beta : NAN) + "," + csv_number(f ? k.theta_ci.lo : NAN) + "," +
+         csv_number(f ? k.theta_ci.hi : NAN) + "," + csv_number(f ? k.beta_ci.lo : NAN) + "," +
+         csv_number(f ? k.beta_ci.hi : NAN) + "," + csv_number(k.theta_asym_lo) + "," +
+         csv_number(k.theta_asym_hi) + "," + csv_number(k.beta_asym_lo) + "," +
+         csv_number(k.beta_asym_hi) + "," + std::to_string(k.theta_ci.finite) + "," +
+         std::to_string(n) + "," + std::to_string(z) + "," +
+         csv_number(k.fit.bracketed() ? k.fit.theta_lo : NAN) + "," +
+         csv_number(k.fit.bracketed() ? k.fit.theta_hi : NAN) + "," + std::to_string(k.left_out) +
+         "\n";
   }
   return s;
 }
@@ -64,9 +41,9 @@ std::string curves_csv(const CampaignData& c, const FragilityReport& r) {
 std::string shift_csv(const CampaignData& c, const FragilityReport& r) {
   std::string s = "building,building_name,edp,unit,limit,ratio,ratio_ci90_lo,ratio_ci90_hi\n";
   for (const auto& k : r.shifts)
-    s += std::to_string(k.building) + "," + name_of(c, k.building) + "," + to_string(k.edp) + "," +
-         unit_of(k.edp) + "," + num(k.limit) + "," + num(k.ratio) + "," + num(k.ci.lo) + "," +
-         num(k.ci.hi) + "\n";
+    s += std::to_string(k.building) + "," + c.building_name(k.building) + "," + to_string(k.edp) +
+         "," + unit_of(k.edp) + "," + csv_number(k.limit) + "," + csv_number(k.ratio) + "," +
+         csv_number(k.ci.lo) + "," + csv_number(k.ci.hi) + "\n";
   return s;
 }
 
@@ -78,9 +55,9 @@ std::string observations_csv(const FragilityReport& r) {
     if (!p.pounding) continue;
     const bool paired = k + 1 < r.curves.size() && !r.curves[k + 1].pounding;
     for (std::size_t j = 0; j < p.observed.size(); ++j)
-      s += std::to_string(p.building) + "," + to_string(p.edp) + "," + num(p.limit) + "," +
-           std::to_string(j) + "," + num(p.observed[j].im) + "," + std::to_string(p.observed[j].n) +
-           "," + std::to_string(p.observed[j].z) + "," +
+      s += std::to_string(p.building) + "," + to_string(p.edp) + "," + csv_number(p.limit) + "," +
+           std::to_string(j) + "," + csv_number(p.observed[j].im) + "," +
+           std::to_string(p.observed[j].n) + "," + std::to_string(p.observed[j].z) + "," +
            (paired ? std::to_string(r.curves[k + 1].observed[j].z) : "") + "\n";
   }
   return s;
@@ -94,9 +71,9 @@ std::string sensitivity_csv(const CampaignData& c, const FragilityReport& r) {
     const std::string group = std::to_string(k.building) + k.response;
     rank = group == last ? rank + 1 : 1;
     last = group;
-    s += std::to_string(k.building) + "," + name_of(c, k.building) + "," + k.response + "," +
-         std::to_string(rank) + "," + k.parameter + "," + num(k.spearman) + "," + num(k.prcc) +
-         "," + std::to_string(k.samples) + "\n";
+    s += std::to_string(k.building) + "," + c.building_name(k.building) + "," + k.response + "," +
+         std::to_string(rank) + "," + k.parameter + "," + csv_number(k.spearman) + "," +
+         csv_number(k.prcc) + "," + std::to_string(k.samples) + "\n";
   }
   return s;
 }
@@ -171,10 +148,10 @@ std::vector<std::string> write_fragility_files(const std::string& dir, const Cam
   const std::string d = dir.empty() || dir.back() == '/' ? dir : dir + "/";
   const std::vector<std::string> paths = {d + "curves.csv", d + "shift.csv", d + "observations.csv",
                                           d + "sensitivity.csv", d + "fragility.h5"};
-  write_file(paths[0], curves_csv(c, r));
-  write_file(paths[1], shift_csv(c, r));
-  write_file(paths[2], observations_csv(r));
-  write_file(paths[3], sensitivity_csv(c, r));
+  write_text_file(paths[0], curves_csv(c, r));
+  write_text_file(paths[1], shift_csv(c, r));
+  write_text_file(paths[2], observations_csv(r));
+  write_text_file(paths[3], sensitivity_csv(c, r));
   write_h5(paths[4], c, r, info);
   return paths;
 }

@@ -24,4 +24,11 @@ class AtomicPath {
   bool committed_ = false;
 };
 
+/// Writes `text` to `path` whole or not at all (through an AtomicPath); throws InputError naming
+/// the file when it cannot be written.
+void write_text_file(const std::string& path, const std::string& text);
+
+/// A number for a CSV field (10 significant digits), or an empty field for NaN and infinity.
+std::string csv_number(double x);
+
 }  // namespace pound

@@ -12,33 +12,9 @@
 namespace pound {
 namespace {
 
-// A number, or an empty field for NaN / infinity.
-std::string num(double x) {
-  if (!std::isfinite(x)) return "";
-  char b[32];
-  std::snprintf(b, sizeof b, "%.10g", x);
-  return b;
-}
-
-std::string name_of(const CampaignData& c, std::size_t b) {
-  return b < c.building_names.size() ? c.building_names[b] : "building" + std::to_string(b + 1);
-}
-
-void write_file(const std::string& path, const std::string& text) {
-  AtomicPath out(path);
-  {
-    std::ofstream f(out.temp(), std::ios::binary);
-    if (!f) throw InputError(path + ": cannot write; give a writable --out folder");
-    f << text;
-    f.flush();
-    if (!f) throw InputError(path + ": write failed");
-  }
-  out.commit();
-}
-
 std::string fit_fields(const LognormalFit& f) {
-  return std::string(to_string(f.status)) + "," + num(f.finite() ? f.theta : NAN) + "," +
-         num(f.finite() ? f.beta : NAN);
+  return std::string(to_string(f.status)) + "," + csv_number(f.finite() ? f.theta : NAN) + "," +
+         csv_number(f.finite() ? f.beta : NAN);
 }
 
 std::string gaps_csv(const RiskReport& r) {
@@ -48,11 +24,13 @@ std::string gaps_csv(const RiskReport& r) {
       "maf_share_outside_campaign\n";
   for (const auto& p : r.pairs)
     for (const auto& e : p.grid)
-      s += std::to_string(p.pair + 1) + "," + num(e.gap) + "," + std::to_string(e.analyses) + "," +
-           std::to_string(e.pounding) + "," + fit_fields(e.fit) + "," + num(e.maf) + "," +
-           num(e.probability) + "," + num(e.probability_band.lo) + "," +
-           num(e.probability_band.hi) + "," + num(e.fit.bracketed() ? e.fit.theta_lo : NAN) + "," +
-           num(e.fit.bracketed() ? e.fit.theta_hi : NAN) + "," + num(e.outside_share) + "\n";
+      s += std::to_string(p.pair + 1) + "," + csv_number(e.gap) + "," + std::to_string(e.analyses) +
+           "," + std::to_string(e.pounding) + "," + fit_fields(e.fit) + "," + csv_number(e.maf) +
+           "," + csv_number(e.probability) + "," + csv_number(e.probability_band.lo) + "," +
+           csv_number(e.probability_band.hi) + "," +
+           csv_number(e.fit.bracketed() ? e.fit.theta_lo : NAN) + "," +
+           csv_number(e.fit.bracketed() ? e.fit.theta_hi : NAN) + "," +
+           csv_number(e.outside_share) + "\n";
   return s;
 }
 
@@ -62,10 +40,10 @@ std::string rules_csv(const RiskReport& r) {
       "probability\n";
   for (const auto& p : r.pairs)
     for (const auto& k : p.rules)
-      s += std::to_string(p.pair + 1) + "," + to_string(k.rule) + "," + num(k.gap) + "," +
-           std::to_string(k.level) + "," + num(r.design_im) + "," + num(p.rho) + "," +
+      s += std::to_string(p.pair + 1) + "," + to_string(k.rule) + "," + csv_number(k.gap) + "," +
+           std::to_string(k.level) + "," + csv_number(r.design_im) + "," + csv_number(p.rho) + "," +
            std::to_string(k.estimate.pounding) + "," + fit_fields(k.estimate.fit) + "," +
-           num(k.estimate.maf) + "," + num(k.estimate.probability) + "\n";
+           csv_number(k.estimate.maf) + "," + csv_number(k.estimate.probability) + "\n";
   return s;
 }
 
@@ -75,10 +53,11 @@ std::string damage_csv(const CampaignData& c, const RiskReport& r) {
       "status_free,theta_free_mps2,beta_free,maf_pounding_per_year,maf_free_per_year,ratio,"
       "maf_share_outside_campaign_pounding,maf_share_outside_campaign_free\n";
   for (const auto& d : r.damage)
-    s += std::to_string(d.building) + "," + name_of(c, d.building) + "," + to_string(d.edp) + "," +
-         unit_of(d.edp) + "," + num(d.limit) + "," + fit_fields(d.pounding) + "," +
-         fit_fields(d.free) + "," + num(d.maf_pounding) + "," + num(d.maf_free) + "," +
-         num(d.ratio) + "," + num(d.outside_pounding) + "," + num(d.outside_free) + "\n";
+    s += std::to_string(d.building) + "," + c.building_name(d.building) + "," + to_string(d.edp) +
+         "," + unit_of(d.edp) + "," + csv_number(d.limit) + "," + fit_fields(d.pounding) + "," +
+         fit_fields(d.free) + "," + csv_number(d.maf_pounding) + "," + csv_number(d.maf_free) +
+         "," + csv_number(d.ratio) + "," + csv_number(d.outside_pounding) + "," +
+         csv_number(d.outside_free) + "\n";
   return s;
 }
 
@@ -227,9 +206,9 @@ std::vector<std::string> write_risk_files(const std::string& dir, const Campaign
                                           const RiskRunInfo& info) {
   const std::vector<std::string> files = {dir + "/risk_gaps.csv", dir + "/code_rules.csv",
                                           dir + "/damage_maf.csv", dir + "/risk.h5"};
-  write_file(files[0], gaps_csv(r));
-  write_file(files[1], rules_csv(r));
-  write_file(files[2], damage_csv(c, r));
+  write_text_file(files[0], gaps_csv(r));
+  write_text_file(files[1], rules_csv(r));
+  write_text_file(files[2], damage_csv(c, r));
   write_h5(files[3], c, h, r, info);
   return files;
 }
