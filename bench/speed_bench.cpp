@@ -304,7 +304,8 @@ void inelastic_case(const std::string& src, long samples) {
 // and the rest (both simulations, with and without pounding). Process CPU times, the smallest
 // of `repeat` runs per sample.
 void samples_case(const std::string& src, long samples, int repeat, const std::string& only = "",
-                  const std::string& variabilities = "spectral,none") {
+                  const std::string& variabilities = "spectral,none",
+                  const std::vector<std::string>& overrides = {}) {
   std::printf(
       "\n5. sample cost: studies/fragility-default.ini, samples 0-%ld, process CPU time, the "
       "smallest of %d runs each\n",
@@ -314,8 +315,10 @@ void samples_case(const std::string& src, long samples, int repeat, const std::s
   for (const std::string variability : {"spectral", "none"}) {
     if (variabilities.find(variability) == std::string::npos) continue;
     Options oc("campaign", "speed benchmark", campaign_option_specs());
-    oc.parse({"--config", src + "/studies/fragility-default.ini", "--generator.variability",
-              variability.c_str()});
+    std::vector<std::string> args = {"--config", src + "/studies/fragility-default.ini",
+                                     "--generator.variability", variability};
+    args.insert(args.end(), overrides.begin(), overrides.end());
+    oc.parse(args);
     const CampaignStudy study = campaign_from_options(oc, samples, -1);
     SampleRunner runner(study);
     SimqkeGenerator gen(*study.spectrum, study.motion_duration, study.generator);
@@ -389,8 +392,10 @@ int main(int argc, char** argv) {
     return 0;
   }
   if (argc > 2 && std::string(argv[2]) == "samples") {  // case 5 alone
+    // Further arguments are study options (e.g. --integrator.h_max 0.01).
     samples_case(src, argc > 3 ? std::stol(argv[3]) : 48, argc > 4 ? std::stoi(argv[4]) : 3,
-                 argc > 5 ? argv[5] : "", argc > 6 ? argv[6] : "spectral,none");
+                 argc > 5 ? argv[5] : "", argc > 6 ? argv[6] : "spectral,none",
+                 std::vector<std::string>(argv + std::min(argc, 7), argv + argc));
     return 0;
   }
   if (argc > 2 && std::string(argv[2]) == "inelastic") {  // case 4 alone

@@ -70,6 +70,12 @@ enum Tag : int {
 // sample's time.
 class PendingSends {
  public:
+  PendingSends() = default;
+  PendingSends(const PendingSends&) = delete;
+  PendingSends& operator=(const PendingSends&) = delete;
+  // Also when a failure unwinds: MPI reads the buffers until the sends complete (the receivers
+  // always take their messages, so this ends).
+  ~PendingSends() { wait_all(); }
   void send(std::vector<char> bytes, int dest, int tag, MPI_Comm comm) {
     items_.push_back({std::move(bytes), MPI_REQUEST_NULL});
     auto& it = items_.back();
@@ -327,7 +333,14 @@ CampaignSummary master_loop(const CampaignStudy& st, const CampaignRunOptions& o
         continue;
       }
       if (count > 0) ++sum.messages;
-      record(buf.get(), static_cast<std::size_t>(count));
+      try {
+        record(buf.get(), static_cast<std::size_t>(count));
+      } catch (...) {
+        // This request gets no other answer: without one its worker would wait for it for
+        // ever and never report done to drain_workers.
+        MPI_Send(nullptr, 0, MPI_BYTE, s.MPI_SOURCE, kStopNow, comm);
+        throw;
+      }
       std::vector<long> ids;
       long id = 0;
       while (!stopping && ids.size() < static_cast<std::size_t>(batch) && schedule.take(id))
