@@ -53,8 +53,11 @@ void count_journal(const CampaignStudy& st, const std::string& path, CampaignSum
 }
 
 // Work requests each worker keeps in flight: with several, a worker always holds queued work
-// while the master is busy with its own sample and cannot answer at once.
-constexpr int kRequestsInFlight = 4;
+// while the master is busy with its own sample and cannot answer at once. Eight, not four: on
+// two ranks of the default study a master's `sears` sample (up to about 60 ms) outlasted four
+// queued lumped samples (about 7 ms each) and the worker waited; two ranks made 85.7 samples/s
+// with four and 92.8-93.9 with eight (docs/speed.md, "Two ranks").
+constexpr int kRequestsInFlight = 8;
 
 enum Tag : int {
   kRequest = 1,  // worker -> master: finished records (0..n), asks for one more batch
