@@ -218,6 +218,11 @@ GroundMotion read_fixed_width(const MotionFileSpec& spec, const std::vector<Line
     throw InputError(at(spec.path, 1) +
                      ": no header line 'N points at equal spacing of DT sec'; the fixed-width "
                      "format needs it");
+  // The values beyond N are dropped below, so N itself must make a record (found by
+  // fuzz_motion_auto: "1 points" and two values gave a record of one).
+  if (npts < 2)
+    throw InputError(at(spec.path, 1) + ": the header says " + std::to_string(npts) +
+                     " point; valid: at least 2 points");
   const Units units = resolve_units(spec, hu, units_line);
   std::vector<double> a;
   int last = lines.empty() ? 1 : lines.back().number;

@@ -268,5 +268,20 @@ TEST(MotionReader, ALineOfOnlyCommasIsRefused) {
       << error_of(spec);
 }
 
+TEST(MotionReader, AFixedWidthHeaderOfOnePointIsRefused) {
+  // fuzz_motion_auto's input, reduced: the header's "1 points" and two values on the line (the
+  // second zero padding) used to give a record of one value.
+  MotionFileSpec spec;
+  spec.path =
+      write_temp("one-point.txt", "#1 points at equal spacing of 0.01 sec (g)\n 0.02075  00\n");
+  EXPECT_EQ(error_of(spec), spec.path + ":1: the header says 1 point; valid: at least 2 points");
+  // Two points read as a record of two.
+  spec.path = write_temp("two-points.txt",
+                         "#2 points at equal spacing of 0.01 sec (g)\n   0.02075  -0.01000\n");
+  const GroundMotion m = read_motion(spec);
+  ASSERT_EQ(m.accel.size(), 2u);
+  EXPECT_NEAR(m.accel[1], -0.01 * kGravity, 1e-15);
+}
+
 }  // namespace
 }  // namespace pound
