@@ -71,6 +71,8 @@ RowSimulation simulate_row(const BuildingRow& row, const GroundMotion& motion,
   p.t_end = motion.duration() + opt.extra_time;
   p.record_history = opt.record_history;
   p.track_energy = opt.track_energy;
+  ExactStepCache cache;  // the free run's propagators serve the pounding run too
+  p.exact_cache = &cache;
   RowResult free = solve(p, integ);  // no laws: contacts off
   for (const auto& l : laws) p.laws.push_back(l.get());
   RowResult pounding = solve(p, integ);

@@ -71,4 +71,60 @@ struct Hermite {
   }
 };
 
+// Quintic Hermite interpolation over one step of a quantity known with its first and second
+// time derivatives at both ends (sixth-order accurate; the standard quintic Hermite basis):
+// the peaks of displacements and drifts between steps, where the accelerations are known.
+struct QuinticHermite {
+  double g0, g1, m0, m1, c0, c1;  // m = h * first derivative, c = h^2 * second derivative
+  double at(double t) const {
+    const double t2 = t * t, t3 = t2 * t, t4 = t3 * t, t5 = t4 * t;
+    return g0 * (1 - 10 * t3 + 15 * t4 - 6 * t5) + m0 * (t - 6 * t3 + 8 * t4 - 3 * t5) +
+           c0 * 0.5 * (t2 - 3 * t3 + 3 * t4 - t5) + c1 * 0.5 * (t3 - 2 * t4 + t5) +
+           m1 * (-4 * t3 + 7 * t4 - 3 * t5) + g1 * (10 * t3 - 15 * t4 + 6 * t5);
+  }
+  double slope(double t) const {  // d/dt of at()
+    const double t2 = t * t, t3 = t2 * t, t4 = t3 * t;
+    return g0 * (-30 * t2 + 60 * t3 - 30 * t4) + m0 * (1 - 18 * t2 + 32 * t3 - 15 * t4) +
+           c0 * 0.5 * (2 * t - 9 * t2 + 12 * t3 - 5 * t4) + c1 * 0.5 * (3 * t2 - 8 * t3 + 5 * t4) +
+           m1 * (-12 * t2 + 28 * t3 - 15 * t4) + g1 * (30 * t2 - 60 * t3 + 30 * t4);
+  }
+  double curvature(double t) const {  // d2/dt2 of at()
+    const double t2 = t * t, t3 = t2 * t;
+    return g0 * (-60 * t + 180 * t2 - 120 * t3) + m0 * (-36 * t + 96 * t2 - 60 * t3) +
+           c0 * 0.5 * (2 - 18 * t + 36 * t2 - 20 * t3) + c1 * 0.5 * (6 * t - 24 * t2 + 20 * t3) +
+           m1 * (-24 * t + 84 * t2 - 60 * t3) + g1 * (60 * t - 180 * t2 + 120 * t3);
+  }
+  // The cubic of the same values and slopes.
+  Hermite cubic() const { return {g0, g1, m0, m1}; }
+  // Upper bound of |value| over the step: the basis functions of g0 and g1 are >= 0 and sum to
+  // 1; those of m0 and m1 are at most 16/81 in magnitude, those of c0 and c1 at most 54/3125.
+  double absmax_bound() const {
+    return (std::max(std::fabs(g0), std::fabs(g1)) + 16.0 / 81.0 * (std::fabs(m0) + std::fabs(m1)) +
+            54.0 / 3125.0 * (std::fabs(c0) + std::fabs(c1))) *
+           (1.0 + 1e-12);
+  }
+  // max(peak, |value| over the step): the interior extrema are the cubic's stationary points
+  // refined by Newton's method on the quintic's slope (three steps, kept inside (0, 1)); skipped
+  // when the bound cannot raise the peak.
+  double raise_peak(double peak) const { return absmax_bound() <= peak ? peak : refine_peak(peak); }
+  __attribute__((noinline)) double refine_peak(double peak) const {
+    const Hermite c = cubic();
+    double m = std::max({peak, std::fabs(g0), std::fabs(g1)});
+    double st[2];
+    const int n = c.stationary(st);
+    for (int k = 0; k < n; ++k) {
+      double t = st[k];
+      for (int it = 0; it < 3; ++it) {
+        const double d2 = curvature(t);
+        if (d2 == 0.0) break;
+        const double tn = t - slope(t) / d2;
+        if (!(tn > 0.0 && tn < 1.0)) break;
+        t = tn;
+      }
+      m = std::max(m, std::fabs(at(t)));
+    }
+    return m;
+  }
+};
+
 }  // namespace pound

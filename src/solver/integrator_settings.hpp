@@ -15,6 +15,11 @@ struct IntegratorSettings {
   double dt = 0.0;     ///< fixed step [s] (StepControl::fixed)
   double h_max = 0.0;  ///< largest step [s]; 0 = automatic: min(record step, T_min / 20)
   long max_steps = 200000000;  ///< guard against runaway step counts
+  /// Adaptive control: between contacts and yield events, a row whose storeys are linear or
+  /// piecewise linear (and no energy balance is tracked) takes exact steps of the linear
+  /// system on the grid of h_max (linear_step.hpp; docs/integration.md, "Exact steps");
+  /// false: Dormand-Prince throughout.
+  bool exact_free = true;
 };
 
 }  // namespace pound

@@ -60,6 +60,19 @@ void RowForces::set_lines(const std::vector<StoreyState>& states) {
   }
 }
 
+void RowForces::stiffness(bool affine, Eigen::MatrixXd& K) const {
+  if (!affine) {
+    K = row_.K;
+    return;
+  }
+  K.setZero(n_, n_);  // allocates only the first time
+  for (int i = 0; i < n_; ++i) {
+    K(i, i) = td_[i];
+    if (i > 0) K(i, i - 1) = tl_[i];
+    if (i + 1 < n_) K(i, i + 1) = tu_[i];
+  }
+}
+
 void RowForces::general(const Eigen::VectorXd& y, const std::vector<StoreyState>& states,
                         const std::vector<int>& xoff, double ag, double* dy) const {
   const double* u = y.data();

@@ -32,6 +32,11 @@ class RowForces {
                const std::vector<int>& xoff, double ag, double* dy) const;
   /// C v [N].
   void damping(const double* v, double* cv) const;
+  /// The stiffness of the linear or affine right-hand side [N/m]: K (linear storeys) or the
+  /// tangent K_t of set_lines() (affine), so that f = K u + offsets().
+  void stiffness(bool affine, Eigen::MatrixXd& K) const;
+  /// The offsets of set_lines() [N] (zero before the first call).
+  const std::vector<double>& offsets() const { return off_; }
 
  private:
   const AssembledRow& row_;

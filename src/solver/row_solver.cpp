@@ -8,6 +8,7 @@
 #include "core/error.hpp"
 #include "solver/dopri5.hpp"
 #include "solver/hermite.hpp"
+#include "solver/linear_step.hpp"
 #include "solver/row_forces.hpp"
 
 namespace pound {
@@ -110,10 +111,20 @@ class Solver {
   void reject(double hf, double enf);
 
   void start();
+  // Exact steps between events (docs/integration.md, "Exact steps"): at a point of the grid
+  // t_k = k h_sub with no contact active, the row is linear in its state with the current
+  // branches' stiffness and offsets and a piecewise-linear ag, so one step of linear_step()
+  // reaches t_k+1 exactly. false (nothing changed) when a switch fires inside the step: the
+  // Dormand-Prince path then takes the step and locates the event.
+  bool exact_step();
+  bool on_exact_grid();
+  bool contacts_open() const;
+  bool exact_setup();
   double next_stop();
   void accept(double hs, double en, double t_stop);
   void finish();
-  void update_peaks(const Eigen::VectorXd& y0, const Eigen::VectorXd& y1, double h);
+  void update_peaks(const Eigen::VectorXd& y0, const Eigen::VectorXd& y1,
+                    const Eigen::VectorXd& dy0, const Eigen::VectorXd& dy1, double h);
   void record(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& dy);
   void check_finite(double t, const Eigen::VectorXd& y) const {
     if (!y.allFinite())
@@ -146,6 +157,20 @@ class Solver {
   std::vector<double> safe_lo_, safe_hi_;
   Dopri5Work work_;
   RowResult r_;
+
+  // Exact steps: eligible row, grid step [s], index of the last grid point reached, the
+  // propagators (RowProblem::exact_cache or this run's own), the current stiffness' entry (-1:
+  // look it up again, after a switch), the offsets' response P1 [0; -M^-1] off [m, m/s].
+  bool exact_ = false;
+  double h_sub_ = 0.0;
+  long sub_ = 0;
+  ExactStepCache own_cache_;
+  ExactStepCache* cache_ = &own_cache_;
+  int config_ = -1;
+  bool c_off_ready_ = false;
+  Eigen::VectorXd c_off_;
+  Eigen::MatrixXd k_scratch_;  // the current stiffness, to look up its entry [N/m]
+  std::vector<int> visits_;    // per entry: grid points of this run met with its stiffness
 
   // Integration state.
   double t_ = 0.0, h_ = 0.0, h_max_ = 0.0, rec_dt_ = 0.0;
@@ -227,6 +252,8 @@ void Solver::rhs(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy) {
 // After storey `dof` changed branch: its line (piecewise-linear rows) and safe interval.
 void Solver::storey_changed(int dof) {
   if (affine_) forces_.set_lines(storey_);
+  config_ = -1;
+  c_off_ready_ = false;
   const RowStorey& st = storeys_[dof];
   has_safe_[dof] = st.law->safe_drift(st.p, storey_[dof], safe_lo_[dof], safe_hi_[dof]);
 }
@@ -291,6 +318,9 @@ int Solver::find_event(const Eigen::VectorXd& y0, const Eigen::VectorXd& y1,
       }
     }
     const Hermite c = switch_hermite(k, y0, y1, dy0, dy1, h);
+    // The cubic stays below max(g0, g1) + 4/27 (|m0| + |m1|) (Hermite::absmax_bound): no
+    // crossing when that is negative.
+    if (std::max(c.g0, c.g1) + 4.0 / 27.0 * (std::fabs(c.m0) + std::fabs(c.m1)) < 0.0) continue;
     bool ev;
     if (k < ns_ && !active_[k] && c.g0 > 0.0)  // across within the location tolerance: only
       ev = c.m0 > 0.0 || c.g1 > c.g0;          // a renewed approach counts
@@ -367,12 +397,18 @@ Solver::Located Solver::locate(int ev, double theta, double hs, double en, bool 
   }
   // Storey switches land strictly across (a kink of the law must not be undone by round-off).
   const bool must_cross = ev >= ns_;
+  // The first try is the interpolant's crossing; then Newton's step on the switch's rate at the
+  // last try when it falls inside the bracket, else Illinois (each try is a re-taken step).
+  double guess = theta * hs;
   for (int it = 0; it < 100 && !found; ++it) {
-    hc = (a * fb - b * fa) / (fb - fa);
+    hc = guess;
+    if (!(hc > a && hc < b)) hc = (a * fb - b * fa) / (fb - fa);
     if (!(hc > a && hc < b)) hc = 0.5 * (a + b);
     step(t_, hc, y_, k1_, ytry_, etry_, ktry_);
     const SwitchValue c = switch_at(ev, ytry_, ktry_);
     const double fc = c.value;
+    // Newton aims at 0 (contacts) or half the tolerance across (storeys must cross).
+    guess = c.rate != 0.0 ? hc + ((must_cross ? 0.5e-15 : 0.0) - fc) / c.rate : kNaN;
     if (fc > 0.0) {
       b = hc;
       fb = fc;
@@ -421,7 +457,7 @@ Solver::Located Solver::locate(int ev, double theta, double hs, double en, bool 
     }
   }
   if (hc > 0.0) {
-    update_peaks(y_, ytry_, hc);
+    update_peaks(y_, ytry_, k1_, ktry_, hc);
     y_ = ytry_;
     t_ += hc;
     ++r_.steps;
@@ -527,19 +563,25 @@ void Solver::record(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& d
   }
 }
 
-void Solver::update_peaks(const Eigen::VectorXd& y0, const Eigen::VectorXd& y1, double h) {
-  // Displacement and drift extrema inside the step from the cubic Hermite interpolant
-  // (fourth-order accurate, like the integrator's own error).
+void Solver::update_peaks(const Eigen::VectorXd& y0, const Eigen::VectorXd& y1,
+                          const Eigen::VectorXd& dy0, const Eigen::VectorXd& dy1, double h) {
+  // Displacement and drift extrema inside the step from the quintic Hermite interpolant of the
+  // displacements, velocities and accelerations at both ends (sixth-order accurate: exact steps
+  // of h_max = T_min / 20 leave the peaks within 1e-8 of the motion between them).
+  const double h2 = h * h;
   for (int i = 0; i < n_; ++i) {
-    const Hermite c{y0(i), y1(i), h * y0(n_ + i), h * y1(n_ + i)};
+    const QuinticHermite c{y0(i),           y1(i), h * y0(n_ + i), h * y1(n_ + i), h2 * dy0(n_ + i),
+                           h2 * dy1(n_ + i)};
     r_.peak_disp(i) = c.raise_peak(r_.peak_disp(i));
     const int b = storeys_[i].below;
-    Hermite d = c;
+    QuinticHermite d = c;
     if (b >= 0) {
       d.g0 -= y0(b);
       d.g1 -= y1(b);
       d.m0 -= h * y0(n_ + b);
       d.m1 -= h * y1(n_ + b);
+      d.c0 -= h2 * dy0(n_ + b);
+      d.c1 -= h2 * dy1(n_ + b);
     }
     r_.peak_drift(i) = d.raise_peak(r_.peak_drift(i));
   }
@@ -605,7 +647,24 @@ void Solver::start() {
   h_max_ = s_.h_max > 0 ? s_.h_max : tmin_period / 20.0;
   rec_dt_ = p_.motion ? p_.motion->dt : 0.0;
   if (s_.h_max <= 0 && rec_dt_ > 0) h_max_ = std::min(h_max_, rec_dt_);
-  if (!std::isfinite(h_max_)) h_max_ = std::max(p_.t_end, 1e-6);
+  const bool h_max_known = std::isfinite(h_max_);
+  if (!h_max_known) h_max_ = std::max(p_.t_end, 1e-6);
+  // Exact steps for rows that are linear between events (no storey state integrated, no
+  // energy balance), on a grid of h_max that holds every record sample.
+  exact_ = s_.exact_free && !fixed_ && !track_ && h_max_known && (linear_ || affine_) && nx_ == 0;
+  if (exact_) {
+    h_sub_ = h_max_;
+    if (rec_dt_ > 0) h_sub_ = rec_dt_ / std::ceil(rec_dt_ / h_max_ * (1 - 1e-12));
+    sub_ = 0;
+    if (p_.exact_cache) cache_ = p_.exact_cache;
+    if (cache_->row != &row_ || cache_->h != h_sub_) {
+      cache_->entries.clear();
+      cache_->row = &row_;
+      cache_->h = h_sub_;
+    }
+    config_ = -1;
+    c_off_ready_ = false;
+  }
   if (fixed_ && !(s_.dt > 0)) throw InputError("fixed-step integration needs dt > 0");
   h_ = fixed_ ? s_.dt : std::min(h_max_, 1e-4);
   // Contacts already closed at t = 0 (a negative gap or initial overlap) start at once, and
@@ -621,6 +680,101 @@ void Solver::start() {
   record(t_, y_, k1_);
 }
 
+// The cache entry of the current tangent stiffness (added when new); its propagator is formed
+// at its kExactWarmup-th grid point. Returns whether it is ready.
+bool Solver::exact_setup() {
+  auto& entries = cache_->entries;
+  if (config_ < 0) {
+    forces_.stiffness(affine_, k_scratch_);
+    for (std::size_t i = 0; i < entries.size() && config_ < 0; ++i)
+      if (entries[i].K == k_scratch_) config_ = static_cast<int>(i);
+    if (config_ < 0) {
+      entries.push_back({k_scratch_, false, {}});
+      config_ = static_cast<int>(entries.size()) - 1;
+    }
+    if (visits_.size() < entries.size()) visits_.resize(entries.size(), 0);
+  }
+  if (visits_[config_] < ExactStepCache::kExactWarmup &&
+      ++visits_[config_] < ExactStepCache::kExactWarmup)
+    return false;
+  ExactStepCache::Entry& e = entries[config_];
+  if (!e.ready) {
+    // z = [u; v], z' = A z + B w, w = [off; ag]: u' = v, v' = -M^-1 (K u + C v + off) - ag
+    // (physics.md section 1, without contact forces; docs/hysteresis.md for K_t and off).
+    const int n = n_;
+    const Eigen::VectorXd& im = row_.inv_mass;
+    Eigen::MatrixXd A = Eigen::MatrixXd::Zero(2 * n, 2 * n);
+    A.topRightCorner(n, n).setIdentity();
+    A.bottomLeftCorner(n, n) = -(im.asDiagonal() * e.K);
+    A.bottomRightCorner(n, n) = -(im.asDiagonal() * row_.C);
+    Eigen::MatrixXd B = Eigen::MatrixXd::Zero(2 * n, n + 1);
+    B.block(n, 0, n, n) = -Eigen::MatrixXd(im.asDiagonal());
+    B.block(n, n, n, 1).setConstant(-1.0);
+    // Balance displacements against velocities by the row's largest frequency scale.
+    const double w = std::sqrt(A.bottomLeftCorner(n, n).cwiseAbs().rowwise().sum().maxCoeff());
+    Eigen::VectorXd scale = Eigen::VectorXd::Ones(2 * n);
+    if (w > 0.0 && std::isfinite(w)) scale.head(n).setConstant(1.0 / w);
+    e.step = linear_step(A, B, h_sub_, scale);
+    e.ready = true;
+  }
+  if (!c_off_ready_) {
+    const std::vector<double>& off = forces_.offsets();
+    c_off_.setZero(2 * n_);
+    if (affine_)
+      for (int j = 0; j < n_; ++j)
+        if (off[j] != 0.0) c_off_ += e.step.p1.col(j) * off[j];
+    c_off_ready_ = true;
+  }
+  return true;
+}
+
+// Whether t_ is on the exact steps' grid (advancing sub_ to the last grid point <= t_).
+bool Solver::on_exact_grid() {
+  while (double(sub_ + 1) * h_sub_ <= t_ * (1 + 1e-14) + 1e-15) ++sub_;
+  return std::fabs(t_ - double(sub_) * h_sub_) <= 1e-14 * std::max(1.0, t_) + 1e-15;
+}
+
+// No contact active, and every site open by more than kTouching: floors touching at rest (a zero
+// gap at t = 0) or just apart may close within a step by an amount the step's interpolant does
+// not resolve; Dormand-Prince's steps, from its small initial step on, do.
+bool Solver::contacts_open() const {
+  constexpr double kTouching = 1e-9;  // [m]
+  for (int i = 0; i < ns_ && pounding_; ++i)
+    if (active_[i] || gap_function(y_, i) > -kTouching) return false;
+  return true;
+}
+
+bool Solver::exact_step() {
+  if (!exact_setup()) return false;
+  const double t1 = double(sub_ + 1) * h_sub_;
+  const double h = t1 - t_;
+  const LinearStep& L = cache_->entries[config_].step;
+  // ag over the step: linear between its ends (the grid holds every record sample); zero on a
+  // step after the record's last sample (GroundMotion::at).
+  double a0 = 0.0, a1 = 0.0;
+  if (p_.motion && t_ + 0.5 * h < p_.motion->duration()) {
+    a0 = p_.motion->at(std::max(t_, 0.0));
+    a1 = p_.motion->at(std::min(t1, p_.motion->duration()));
+  }
+  y1_ = y_;
+  linear_step_apply(L, a0, a1, c_off_.data(), y_.data(), y1_.data());
+  rhs(t1, y1_, k7_);
+  check_finite(t1, y1_);
+  if (pounding_ || !sw_.empty()) {
+    double theta;
+    if (find_event(y_, y1_, k1_, k7_, h, theta) >= 0) return false;
+  }
+  update_peaks(y_, y1_, k1_, k7_, h);
+  y_.swap(y1_);
+  k1_.swap(k7_);
+  t_ = t1;
+  ++sub_;
+  ++r_.steps;
+  ++r_.exact_steps;
+  record(t_, y_, k1_);
+  return true;
+}
+
 // The next step ends at the next record sample, grid point or the end [s].
 double Solver::next_stop() {
   double t_stop = p_.t_end;
@@ -632,12 +786,16 @@ double Solver::next_stop() {
     while ((grid_ + 1) * s_.dt <= t_ * (1 + 1e-14) + 1e-15) ++grid_;
     t_stop = std::min(t_stop, (grid_ + 1) * s_.dt);
   }
+  if (exact_) {  // Dormand-Prince steps (through events) end on the exact steps' grid
+    on_exact_grid();
+    t_stop = std::min(t_stop, double(sub_ + 1) * h_sub_);
+  }
   return t_stop;
 }
 
 // Accepts the trial step (y_ -> y1_) and chooses the next step length.
 void Solver::accept(double hs, double en, double t_stop) {
-  update_peaks(y_, y1_, hs);
+  update_peaks(y_, y1_, k1_, k7_, hs);
   y_ = y1_;
   k1_ = k7_;
   t_ += hs;
@@ -683,6 +841,9 @@ RowResult Solver::run() {
     if (r_.steps + r_.rejected > s_.max_steps)
       throw NumericalError("more than " + std::to_string(s_.max_steps) +
                            " steps by t = " + std::to_string(t_) + " s");
+    if (exact_ && on_exact_grid() && double(sub_ + 1) * h_sub_ <= t_end * (1 + 1e-14) &&
+        contacts_open() && exact_step())
+      continue;
     const double t_stop = next_stop();
     double hs = fixed_ ? t_stop - t_ : std::min(h_, t_stop - t_);
     if (t_ + hs > t_stop * (1 - 1e-14)) hs = t_stop - t_;

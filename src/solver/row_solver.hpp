@@ -13,6 +13,7 @@
 #include "contact/contact_law.hpp"
 #include "motion/ground_motion.hpp"
 #include "solver/integrator_settings.hpp"
+#include "solver/linear_step.hpp"
 #include "structure/building_row.hpp"
 
 namespace pound {
@@ -63,7 +64,26 @@ struct RowResult {
   Eigen::VectorXd u_end, v_end;       ///< state at the end [m], [m/s]
   double t_end = 0.0;                 ///< time reached [s]
   long steps = 0, rejected = 0, events = 0;
+  long exact_steps = 0;  ///< of `steps`, exact steps of the linear system (linear_step.hpp)
   History history;
+};
+
+/// The exact steps' propagators of one row (docs/integration.md, "Exact steps"), one per
+/// tangent stiffness met, kept between the runs that share the row, the motion's spacing and the
+/// integrator settings (simulate_row: the free and the pounding run of a sample). A run uses a
+/// stiffness' propagator from the kExactWarmup-th grid point at which it met that stiffness on
+/// (briefer branches, a storey yielding for a few steps, cost less by Dormand-Prince than a
+/// propagator); counted per run, so that a run takes the same steps with or without the cache.
+struct ExactStepCache {
+  static constexpr int kExactWarmup = 32;
+  struct Entry {
+    Eigen::MatrixXd K;  ///< tangent stiffness [N/m]
+    bool ready = false;
+    LinearStep step;
+  };
+  std::vector<Entry> entries;
+  const AssembledRow* row = nullptr;  ///< the row and grid step [s] of the entries (a run of
+  double h = 0.0;                     ///< another row or step clears them)
 };
 
 struct RowProblem {
@@ -77,6 +97,8 @@ struct RowProblem {
   bool track_energy = false;  ///< integrate the energy balance (RowResult::energy)
   /// Stop as soon as every contact has ended and all sites separate (free impacts).
   bool stop_after_separation = false;
+  /// Propagators shared with the other runs of this row (null: kept for this run only).
+  ExactStepCache* exact_cache = nullptr;
 };
 
 /// Integrates the problem. Throws NumericalError on a non-finite state, step-size underflow or

@@ -61,6 +61,9 @@ std::vector<OptionSpec> row_option_specs() {
       {"integrator.atol", "m", "1e-10", "absolute local-error tolerance (m and m/s)"},
       {"integrator.dt", "s", "", "step of the fixed-step integrator"},
       {"integrator.h_max", "s", "", "largest adaptive step (default min(record dt, T_min/20))"},
+      {"integrator.free_steps", "", "exact",
+       "lumped rows between contacts and yield events: exact (the linear system's exact step "
+       "on the h_max grid) or dopri5 (adaptive Dormand-Prince throughout)"},
       {"simulation.extra_time", "s", "0", "free vibration simulated after the record ends"},
   };
 }
@@ -209,6 +212,13 @@ IntegratorSettings integrator_from_options(const Options& opt) {
   if (s.control == StepControl::fixed && !(s.dt > 0))
     throw opt.invalid(dt_key, "fixed-step integration needs a step dt > 0 s (--dt)");
   if (opt.given("integrator.h_max")) s.h_max = opt.get_positive("integrator.h_max");
+  const std::string free_steps = opt.get_string("integrator.free_steps");
+  if (free_steps == "exact")
+    s.exact_free = true;
+  else if (free_steps == "dopri5")
+    s.exact_free = false;
+  else
+    throw opt.invalid("integrator.free_steps", "valid: exact or dopri5");
   return s;
 }
 
