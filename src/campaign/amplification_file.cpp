@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "core/error.hpp"
 #include "io/h5.hpp"
@@ -200,9 +201,14 @@ AmplificationTable compute_amplification(hid_t file, const std::string& path) {
   std::vector<double> bp, bf;
   for (const Measure& m : kMeasures) {
     const Dataset pd(file, m.pounding, path), fd(file, m.free, path);
-    if (pd.dims().size() != 3 || pd.dims() != fd.dims() || pd.dims()[0] != n)
+    // The same [samples, buildings, floors] for every measure, at least one building and one
+    // floor: `pound summary` indexes the three measures' statistics with one (b, f).
+    if (pd.dims().size() != 3 || pd.dims() != fd.dims() || pd.dims()[0] != n || pd.dims()[1] < 1 ||
+        pd.dims()[2] < 1 ||
+        (!t.measures.empty() && (pd.dims()[1] != t.buildings || pd.dims()[2] != t.floors)))
       throw InputError(path + ": " + m.pounding + " and " + m.free +
-                       " must both have the shape [samples, buildings, floors]");
+                       " must both have the shape [samples, buildings, floors] of the other "
+                       "peak_* datasets, with at least one building and one floor");
     t.buildings = pd.dims()[1];
     t.floors = pd.dims()[2];
     const std::size_t B = t.buildings, F = t.floors;
@@ -338,8 +344,21 @@ bool read_amplification(hid_t file, const std::string& path, AmplificationTable*
   if (design != "stripes" && design != "bins")
     throw bad(" has no attribute design = stripes or bins; " + kind);
   t->stripes = design == "stripes";
+  // Counts are whole numbers from 0 to 1e15: a damaged file's NaN or 1e300 is refused here,
+  // before a conversion to long (undefined behaviour out of range).
+  auto count_of = [&](double x, const std::string& name) {
+    if (!(x >= 0.0 && x <= 1e15 && x == std::floor(x))) {
+      char shown[32];
+      std::snprintf(shown, sizeof shown, "%.15g", x);
+      throw bad(name + " holds " + shown + "; valid: whole numbers from 0 to 1e15 (counts); " +
+                kind);
+    }
+    return long(x);
+  };
   const std::string failed = h5::attribute_text(file, root, "failed");
-  t->failed_total = failed.empty() ? 0 : long(parse_number(failed, path + ": " + root + ":failed"));
+  t->failed_total = failed.empty()
+                        ? 0
+                        : count_of(parse_number(failed, path + ": " + root + ":failed"), ":failed");
   // Every array has G rows (the groups of /amplification/im) and every 3-D array of a kind the
   // same shape: a damaged file is refused before anything is indexed.
   std::vector<hsize_t> dims;
@@ -349,15 +368,18 @@ bool read_amplification(hid_t file, const std::string& path, AmplificationTable*
       throw bad(name + " is not one value per group of /amplification/im; " + kind);
     return v;
   };
-  auto as_longs = [](const std::vector<double>& v) {
-    return std::vector<long>(v.begin(), v.end());
+  auto as_longs = [&](const std::vector<double>& v, const std::string& name) {
+    std::vector<long> out;
+    out.reserve(v.size());
+    for (double x : v) out.push_back(count_of(x, name));
+    return out;
   };
   t->im = one_d("/im");
   t->groups = t->im.size();
   t->im_lo = one_d("/im_lo");
   t->im_hi = one_d("/im_hi");
-  t->samples = as_longs(one_d("/samples"));
-  t->failed = as_longs(one_d("/failed"));
+  t->samples = as_longs(one_d("/samples"), "/samples");
+  t->failed = as_longs(one_d("/failed"), "/failed");
   // A 3-D array [G, a, b]; its a and b when `shape` is empty, else they must be those.
   auto three_d = [&](const std::string& name, std::vector<hsize_t>& shape) {
     std::vector<double> v = h5::read_numbers(file, root + name, path, &dims, kind);
@@ -375,7 +397,7 @@ bool read_amplification(hid_t file, const std::string& path, AmplificationTable*
     AmplificationMeasure a;
     a.name = m.name;
     const std::string p = std::string("/") + m.name;
-    a.count = as_longs(three_d(p + "/count", floors));
+    a.count = as_longs(three_d(p + "/count", floors), p + "/count");
     a.mean = three_d(p + "/mean", floors);
     a.median = three_d(p + "/median", floors);
     a.p16 = three_d(p + "/p16", floors);
@@ -383,10 +405,15 @@ bool read_amplification(hid_t file, const std::string& path, AmplificationTable*
     a.fraction_above_1 = three_d(p + "/fraction_above_1", floors);
     t->measures.push_back(std::move(a));
   }
+  if (floors[1] < 1 || floors[2] < 1)
+    throw bad(
+        "/disp/count has no building or no floor (shape [groups, buildings, floors] with "
+        "buildings, floors >= 1); " +
+        kind);
   t->buildings = floors[1];
   t->floors = floors[2];
   std::vector<hsize_t> levels;
-  t->contact_count = as_longs(three_d("/contact/count", levels));
+  t->contact_count = as_longs(three_d("/contact/count", levels), "/contact/count");
   t->pounded_fraction = three_d("/contact/pounded_fraction", levels);
   t->force_median = three_d("/contact/force_median", levels);
   t->force_median_pounded = three_d("/contact/force_median_pounded", levels);

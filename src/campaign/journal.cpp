@@ -201,9 +201,9 @@ JournalWriter::JournalWriter(const std::string& path, const CampaignStudy& st, b
   if (append) {
     end = for_each_record(path, st, [](const SampleOutcome&) {});
     if (::truncate(path.c_str(), end) != 0) fail("cannot cut the torn tail of the journal");
-    f_ = std::fopen(path.c_str(), "ab");
+    f_.reset(std::fopen(path.c_str(), "ab"));
   } else {
-    f_ = std::fopen(path.c_str(), "wb");
+    f_.reset(std::fopen(path.c_str(), "wb"));
   }
   if (!f_) fail("cannot write the campaign journal");
   if (end == 0) {  // new, or cut short inside its header
@@ -225,9 +225,8 @@ void JournalWriter::guarded(Step step) {
   }
 }
 
-JournalWriter::~JournalWriter() {
-  if (f_) std::fclose(f_);  // after close() failed or an error elsewhere: nothing to report
-}
+// After close() failed or an error elsewhere, f_ closes the file without reporting.
+JournalWriter::~JournalWriter() = default;
 
 void JournalWriter::fail(const char* what) const {
   throw WriteError(path_ + ": " + what + " (" + std::strerror(errno) + ")");
@@ -237,22 +236,22 @@ void JournalWriter::append(const char* bytes, std::size_t n) {
   // Every byte reaches the kernel before this returns (and so survives the process being
   // killed); a short write or a failed flush (disk full, file size limit) is an error at once.
   guarded([&] {
-    if (n && std::fwrite(bytes, 1, n, f_) != n) fail("cannot write the campaign journal");
-    if (std::fflush(f_) != 0) fail("cannot write the campaign journal");
+    if (n && std::fwrite(bytes, 1, n, f_.get()) != n) fail("cannot write the campaign journal");
+    if (std::fflush(f_.get()) != 0) fail("cannot write the campaign journal");
   });
 }
 
 void JournalWriter::sync() {
   guarded([&] {
-    if (std::fflush(f_) != 0 || ::fsync(fileno(f_)) != 0) fail("cannot sync the campaign journal");
+    if (std::fflush(f_.get()) != 0 || ::fsync(fileno(f_.get())) != 0)
+      fail("cannot sync the campaign journal");
   });
 }
 
 void JournalWriter::close() {
   sync();
   guarded([&] {
-    std::FILE* f = f_;
-    f_ = nullptr;
+    std::FILE* f = f_.release();
     if (std::fclose(f) != 0) fail("cannot close the campaign journal");
   });
 }

@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -72,7 +73,13 @@ class JournalWriter {
   /// Runs a write step; a WriteError goes to on_write_error_ when there is one.
   template <class Step>
   void guarded(Step step);
-  std::FILE* f_ = nullptr;
+  // Closes without reporting (error paths). A unique_ptr, so that the file is closed when the
+  // constructor throws after opening it (writing the header failed): the destructor of a
+  // half-built object does not run, the destructors of its built members do.
+  struct CloseFile {
+    void operator()(std::FILE* f) const { std::fclose(f); }
+  };
+  std::unique_ptr<std::FILE, CloseFile> f_;
   std::string path_;
   std::function<void(const WriteError&)> on_write_error_;
   bool failed_ = false;  ///< a write failed and was handed on: no more records

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -125,10 +126,16 @@ void merge_campaign_parts(const std::vector<std::string>& paths, const std::stri
                        std::to_string(next - 1) + (p.lo < next ? " (overlap)" : " (gap)"));
     next = p.hi;
   }
-  if (!(samples >= 1 && samples <= 1e15) || next != static_cast<long>(samples))
+  // The attribute as stored (NaN, 1e300, 2.5 or -1 when absent or not one number): converting
+  // such a value to long would be undefined behaviour, so only a valid count is converted.
+  const bool whole = samples >= 1 && samples <= 1e15 && samples == std::floor(samples);
+  if (!whole || next != static_cast<long>(samples)) {
+    char shown[32];
+    std::snprintf(shown, sizeof shown, "%.15g", samples);
     throw InputError(parts.back().path + ": the parts end at sample " + std::to_string(next - 1) +
-                     " but the campaign has " + std::to_string(static_cast<long>(samples)) +
-                     " samples");
+                     " but the campaign has " + shown + " samples" +
+                     (whole ? "" : " (attribute samples; valid: one whole number from 1 to 1e15)"));
+  }
 
   h5::File f(out);
   const hsize_t total = static_cast<hsize_t>(samples);

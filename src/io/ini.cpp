@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "io/utf8_bom.hpp"
 
 namespace pound {
 namespace {
@@ -43,8 +44,9 @@ std::vector<IniEntry> parse_ini(const std::string& text, const std::string& name
   std::vector<IniEntry> out;
   std::set<std::string> seen;
   // A UTF-8 byte-order mark, as Windows editors save "UTF-8" files, is not part of the text.
-  const bool bom = text.compare(0, 3, "\xEF\xBB\xBF") == 0;
-  std::istringstream in(bom ? text.substr(3) : text);
+  std::string body = text;
+  strip_utf8_bom(body);
+  std::istringstream in(body);
   std::string raw, section;
   int lineno = 0;
   while (std::getline(in, raw)) {

@@ -5,6 +5,7 @@
 
 #include "core/error.hpp"
 #include "io/options.hpp"
+#include "io/utf8_bom.hpp"
 
 namespace pound {
 
@@ -17,6 +18,7 @@ std::vector<PeriodTableRow> read_period_table(const std::string& path, const std
   int n = 0;
   while (std::getline(in, line)) {
     ++n;
+    if (n == 1) strip_utf8_bom(line);  // as Windows editors save "UTF-8" files
     const auto b = line.find_first_not_of(" \t\r");
     if (b == std::string::npos || line[b] == '#') continue;
     PeriodTableRow r;

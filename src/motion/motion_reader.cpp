@@ -12,6 +12,7 @@
 
 #include "core/error.hpp"
 #include "io/number.hpp"
+#include "io/utf8_bom.hpp"
 
 namespace pound {
 namespace {
@@ -47,7 +48,7 @@ std::vector<Line> read_lines(const std::string& path) {
   int n = 0;
   while (std::getline(in, s)) lines.push_back(Line{s, ++n});
   // A UTF-8 byte-order mark, as some editors save text files.
-  if (!lines.empty() && lines[0].text.compare(0, 3, "\xEF\xBB\xBF") == 0) lines[0].text.erase(0, 3);
+  if (!lines.empty()) strip_utf8_bom(lines[0].text);
   return lines;
 }
 

@@ -8,7 +8,9 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "io/atomic_file.hpp"
 #include "io/options.hpp"
+#include "io/utf8_bom.hpp"
 #include "motion/ground_motion.hpp"
 
 namespace pound {
@@ -33,6 +35,12 @@ bool two_fields(const std::string& line, std::string* a, std::string* b) {
   *a = trim(line.substr(0, comma));
   *b = trim(line.substr(comma + 1));
   return true;
+}
+
+// A point's value for a message: 10 significant digits (6.5e-07, not std::to_string's
+// 0.000000), and nan / inf spelled out where a CSV field would be empty.
+std::string shown(double x) {
+  return std::isfinite(x) ? csv_number(x) : std::to_string(x);
 }
 
 // "name [unit]" -> name, unit; false without brackets.
@@ -61,9 +69,8 @@ HazardCurve make_hazard_curve(std::vector<double> im, std::vector<double> rate,
                      " hazard points; valid: at least two (intensity, rate) points");
   const double factor = unit == "g" ? kGravity : 1.0;
   for (std::size_t i = 0; i < im.size(); ++i) {
-    const std::string at = source + ": point " + std::to_string(i + 1) + " (" +
-                           std::to_string(im[i]) + " " + unit + ", " + std::to_string(rate[i]) +
-                           " /yr)";
+    const std::string at = source + ": point " + std::to_string(i + 1) + " (" + shown(im[i]) + " " +
+                           unit + ", " + shown(rate[i]) + " /yr)";
     if (!(std::isfinite(im[i]) && im[i] > 0))
       throw InputError(at + ": the intensity must be a finite number > 0");
     if (!(std::isfinite(rate[i]) && rate[i] > 0))
@@ -92,6 +99,7 @@ HazardCurve read_hazard_curve(const std::string& path) {
   int n = 0;
   while (std::getline(in, line)) {
     ++n;
+    if (n == 1) strip_utf8_bom(line);  // as Windows editors save "UTF-8" files
     const std::string t = trim(line);
     if (t.empty() || t[0] == '#') continue;
     const std::string where = path + ":" + std::to_string(n);
@@ -108,9 +116,9 @@ HazardCurve read_hazard_curve(const std::string& path) {
                          "(measure pga or sa(T) with T in s; unit g or m/s2)");
       if (unit == "m/s^2") unit = "m/s2";
       if (unit != "g" && unit != "m/s2")
-        throw InputError(where + ": intensity unit '" + unit + "'; valid: g, m/s2");
+        throw InputError(where + ": intensity unit '" + unit + "'; valid: g, m/s2, m/s^2");
       if (rate_unit != "1/yr" && rate_unit != "1/year")
-        throw InputError(where + ": rate unit '" + rate_unit + "'; valid: 1/yr");
+        throw InputError(where + ": rate unit '" + rate_unit + "'; valid: 1/yr, 1/year");
       if (name == "pga") {
         measure = "pga";
       } else if (name.rfind("sa(", 0) == 0 && name.back() == ')') {

@@ -19,7 +19,9 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kDesignReturnPeriod = 475.0;  // years: 10 % in 50 years (EN 1998-1 2.1)
 
-// The share of nu from intensities outside [lo, hi] (NaN without a finite fit).
+// The share of nu from intensities outside [lo, hi]: 1 - integral_lo^hi P |d lambda| / nu, the
+// part with the boundary terms of the integration by parts (risk_integral.hpp). NaN without a
+// finite fit.
 double outside_share(const HazardCurve& h, const LognormalFit& f, double nu, double lo, double hi) {
   if (!f.finite() || !(nu > 0)) return kNaN;
   return std::max(0.0, 1.0 - mean_annual_frequency(h, f.theta, f.beta, lo, hi) / nu);

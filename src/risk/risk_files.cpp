@@ -195,6 +195,7 @@ void write_h5(const std::string& path, const CampaignData& c, const HazardCurve&
     put(id, g + "/damage/maf_pounding", mp, {D}, "1/yr");
     put(id, g + "/damage/maf_free", mf, {D}, "1/yr");
     put(id, g + "/damage/ratio", ratio, {D}, "-");
+    f.close();  // a failed write (disk full) is reported here, before the file is renamed
   }
   out.commit();
 }

@@ -15,6 +15,16 @@
 //
 // which for one power law lambda = k0 x^-k over (0, inf) is Cornell et al.'s
 // nu = k0 theta^-k exp(k^2 beta^2 / 2) (their eq. 11 with the median demand at the capacity).
+//
+// The part of nu from intensities in [x_lo, x_hi] is integral_lo^hi P |d lambda|; by parts
+// (d lambda < 0) it is NOT the by-parts form restricted to [x_lo, x_hi] but
+//
+//   integral_lo^hi P |d lambda| = integral_lo^hi lambda dP + P(x_lo) lambda(x_lo)
+//                                                          - P(x_hi) lambda(x_hi)
+//
+// (the boundary terms vanish only at x_lo = 0 and x_hi = inf), so the pieces of any partition
+// of (0, inf) add up to nu.
+//
 // The probability of at least one event in T years (Poisson) is 1 - exp(-nu T).
 #include <limits>
 
@@ -23,8 +33,9 @@
 namespace pound {
 
 /// nu [1/yr] of a lognormal fragility (theta [m/s^2], beta > 0) on the hazard curve; with
-/// x_lo, x_hi [m/s^2] only the part of the integral from intensities between them (to tell how
-/// much of nu comes from intensities a campaign did not simulate).
+/// x_lo, x_hi [m/s^2] the part of nu from the events whose intensity lies between them,
+/// integral_lo^hi P(x) |d lambda(x)| (by parts with the boundary terms above; 0 when
+/// x_hi <= x_lo): to tell how much of nu comes from intensities a campaign did not simulate.
 double mean_annual_frequency(const HazardCurve& h, double theta, double beta, double x_lo = 0.0,
                              double x_hi = std::numeric_limits<double>::infinity());
 

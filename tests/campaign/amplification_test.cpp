@@ -285,6 +285,41 @@ TEST(Amplification, ADamagedGroupIsRefusedBeforeAnythingIsIndexed) {
          H5Tclose(t);
        },
        "/amplification/drift/median does not hold numbers"},
+      // Counts that are no counts: converting NaN or 1e300 to long was undefined behaviour.
+      {"NaN in a count",
+       [](hid_t f) {
+         H5Ldelete(f, "/amplification/disp/count", H5P_DEFAULT);
+         put(f, "/amplification/disp/count", {3.0, NAN, 3.0, 3.0}, 2, 1, 2);
+       },
+       "/amplification/disp/count holds nan; valid: whole numbers from 0 to 1e15 (counts)"},
+      {"1e300 samples",
+       [](hid_t f) {
+         H5Ldelete(f, "/amplification/samples", H5P_DEFAULT);
+         h5::write(f, "/amplification/samples", std::vector<double>{1e300, 3.0}, 2);
+       },
+       "/amplification/samples holds 1e+300; valid: whole numbers from 0 to 1e15"},
+      {"a fraction of a contact",
+       [](hid_t f) {
+         H5Ldelete(f, "/amplification/contact/count", H5P_DEFAULT);
+         put(f, "/amplification/contact/count", {3.0, 2.5}, 2, 1, 1);
+       },
+       "/amplification/contact/count holds 2.5; valid: whole numbers"},
+      {"1e300 failed samples",
+       [](hid_t f) {
+         H5Adelete_by_name(f, "/amplification", "failed", H5P_DEFAULT);
+         h5::attribute(f, "/amplification", "failed", 1e300);
+       },
+       "/amplification:failed holds 1e+300; valid: whole numbers"},
+      {"no floor",
+       [](hid_t f) {
+         for (const char* m : {"disp", "drift", "accel"})
+           for (const char* a : {"count", "mean", "median", "p16", "p84", "fraction_above_1"}) {
+             const std::string name = std::string("/amplification/") + m + "/" + a;
+             H5Ldelete(f, name.c_str(), H5P_DEFAULT);
+             put(f, name, {}, 2, 1, 0);
+           }
+       },
+       "/amplification/disp/count has no building or no floor"},
   };
   for (const Damage& d : damages) {
     {

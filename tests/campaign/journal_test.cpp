@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <vector>
 
@@ -207,6 +208,22 @@ TEST(Journal, AWriteThatFailsNamesTheJournalAndTheSystemsReason) {
     EXPECT_STREQ(e.what(),
                  "/dev/full: cannot write the campaign journal (No space left on device)");
   }
+}
+
+// The open file descriptors of this process (the listing's own one included, every time).
+long open_descriptors() {
+  long n = 0;
+  for (const auto& e : std::filesystem::directory_iterator("/proc/self/fd")) n += !e.path().empty();
+  return n;
+}
+
+// A header that cannot be written throws from the constructor, whose destructor then does not
+// run: the file it opened is closed all the same (it leaked before).
+TEST(Journal, AConstructorThatThrowsClosesTheFileItOpened) {
+  const CampaignStudy st = tiny_study();
+  const long before = open_descriptors();
+  for (int i = 0; i < 3; ++i) EXPECT_THROW(JournalWriter("/dev/full", st, false), WriteError);
+  EXPECT_EQ(open_descriptors(), before);
 }
 
 TEST(Journal, AfterAFailedAppendTheHandlerIsToldOnceAndTheResumeCutsTheTornRecord) {

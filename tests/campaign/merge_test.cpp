@@ -7,6 +7,8 @@
 #include <gtest/gtest.h>
 #include <hdf5.h>
 
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -117,6 +119,24 @@ TEST(Merge, DamagedPartsAreRefusedWithOneLineAndEveryIdentifierClosed) {
             std::string::npos)
       << error_of(three);
   // Nothing left open: no file, dataset, group, attribute or named datatype.
+  EXPECT_EQ(H5Fget_obj_count(H5F_OBJ_ALL, H5F_OBJ_ALL), 0);
+}
+
+// A "samples" attribute that is no count (NaN, 1e300, 2.5) was converted to long for the
+// message (undefined behaviour): the message shows it as stored and says what is valid.
+TEST(Merge, ASampleCountThatIsNoCountIsShownAsStored) {
+  for (const double n : {double(NAN), 1e300, 2.5, 0.0}) {
+    const std::string p = part("count.h5", 4, true, true, true);
+    const hid_t f = H5Fopen(p.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+    H5Adelete(f, "samples");
+    h5::attribute(f, "/", "samples", n);
+    H5Fclose(f);
+    char shown[32];
+    std::snprintf(shown, sizeof shown, "%.15g", n);
+    EXPECT_EQ(error_of(p), p + ": the parts end at sample 3 but the campaign has " + shown +
+                               " samples (attribute samples; valid: one whole number from 1 "
+                               "to 1e15)");
+  }
   EXPECT_EQ(H5Fget_obj_count(H5F_OBJ_ALL, H5F_OBJ_ALL), 0);
 }
 

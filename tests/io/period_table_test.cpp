@@ -42,6 +42,23 @@ TEST(PeriodTable, RowsKeepTheirLinesAndTheValuesAsWritten) {
   EXPECT_TRUE(read_period_table(write("empty.txt", "# nothing\n"), "t", "'T v'").empty());
 }
 
+TEST(PeriodTable, SkipsAUtf8ByteOrderMark) {
+  // A "UTF-8" file saved by a Windows editor starts with EF BB BF: before a row and before a
+  // comment; the row keeps its line number.
+  const std::string row = write("bom-row.txt",
+                                "\xEF\xBB\xBF"
+                                "0.1 2.5\n0.4 3\n");
+  const auto a = read_period_table(row, "the test table", "'T v'");
+  ASSERT_EQ(a.size(), 2u);
+  EXPECT_EQ(a[0].period, 0.1);
+  EXPECT_EQ(a[0].value, 2.5);
+  EXPECT_EQ(a[0].where, row + ":1");
+  const std::string comment = write("bom-comment.txt", "\xEF\xBB\xBF# T v\n0.1 2.5\n");
+  const auto b = read_period_table(comment, "the test table", "'T v'");
+  ASSERT_EQ(b.size(), 1u);
+  EXPECT_EQ(b[0].where, comment + ":2");
+}
+
 TEST(PeriodTable, ErrorsNameTheFileTheLineAndWhatIsValid) {
   const std::string missing = test::process_scratch_dir() / "missing.txt";
   EXPECT_EQ(error_of(missing),

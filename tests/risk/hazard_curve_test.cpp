@@ -82,7 +82,10 @@ TEST(HazardCurve, BadInputNamesTheFileAndWhatIsValid) {
       {"unit.csv", "pga [cm/s2], annual_rate [1/yr]\n0.1, 1e-3\n0.2, 1e-4\n", "valid: g, m/s2"},
       {"measure.csv", "pgv [g], annual_rate [1/yr]\n0.1, 1e-3\n0.2, 1e-4\n", "valid: pga, sa(T)"},
       {"header.csv", "0.1, 1e-3\n0.2, 1e-4\n", "header"},
-      {"rate-unit.csv", "pga [g], annual_rate [1/s]\n0.1, 1e-3\n0.2, 1e-4\n", "valid: 1/yr"},
+      {"rate-unit.csv", "pga [g], annual_rate [1/s]\n0.1, 1e-3\n0.2, 1e-4\n",
+       "valid: 1/yr, 1/year"},
+      {"unit-caret.csv", "pga [cm/s^2], annual_rate [1/yr]\n0.1, 1e-3\n0.2, 1e-4\n",
+       "valid: g, m/s2, m/s^2"},
       {"columns.csv", head + "0.1, 1e-3, 5\n", "two comma-separated columns"},
   };
   for (const auto& c : cases) {
@@ -92,6 +95,38 @@ TEST(HazardCurve, BadInputNamesTheFileAndWhatIsValid) {
     EXPECT_EQ(m.find('\n'), std::string::npos) << m;
   }
   EXPECT_THROW(read_hazard_curve(test::process_scratch_dir() / "missing.csv"), InputError);
+}
+
+TEST(HazardCurve, SkipsAUtf8ByteOrderMarkAndAcceptsEverySpellingOfTheUnits) {
+  // A "UTF-8" CSV saved by a Windows editor starts with EF BB BF; before the header line, and
+  // before a first comment line.
+  for (const std::string first : {"", "# USGS\n"}) {
+    const HazardCurve h = read_hazard_curve(
+        write("bom.csv",
+              "\xEF\xBB\xBF" + first + "pga [m/s^2], annual_rate [1/year]\n1, 0.1\n10, 1e-4\n"));
+    EXPECT_EQ(h.measure, "pga");
+    EXPECT_EQ(h.file_unit, "m/s2");
+    ASSERT_EQ(h.im.size(), 2u);
+    EXPECT_EQ(h.im[1], 10.0);
+    EXPECT_EQ(h.rate[1], 1e-4);
+  }
+}
+
+TEST(HazardCurve, AMessageShowsASmallRateReadably) {
+  // 6.5e-7 /yr (a 1.5-million-year event) was shown as std::to_string's 0.000000.
+  const std::string m =
+      error_of("small.csv", "pga [g], annual_rate [1/yr]\n2.5, 6.5e-7\n3.75, 8e-7\n");
+  EXPECT_NE(m.find("small.csv: point 2 (3.75 g, 8e-07 /yr): the rate of exceedance must fall"),
+            std::string::npos)
+      << m;
+  // And the point before it, through the API: NaN is named, not left blank.
+  try {
+    make_hazard_curve({0.1, 0.2}, {6.5e-7, NAN}, "pga", 0.0, "g", "api");
+    ADD_FAILURE() << "a NaN rate was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("api: point 2 (0.2 g, nan /yr)"), std::string::npos)
+        << e.what();
+  }
 }
 
 }  // namespace

@@ -5,7 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
+#include <string>
 
 #include "fragility/lognormal_fit.hpp"
 #include "motion/ground_motion.hpp"
@@ -70,6 +73,59 @@ TEST(RiskIntegral, AgreesWithQuadratureOnACurveThatIsNoPowerLaw) {
       const double nu = mean_annual_frequency(h, theta_g * kGravity, beta);
       EXPECT_NEAR(nu, q, 0.005 * q) << theta_g << " " << beta;
     }
+}
+
+// integral_{x_lo}^{x_hi} Phi(ln(x / theta) / beta) (-d lambda / dx) dx by composite Simpson in
+// u = ln x with 20,000 intervals on each segment's part of [ln x_lo, ln x_hi] (finite bounds):
+// on a segment, -d lambda / dx dx = -b e^{a + b u} du. The integrand is smooth on a segment.
+double simpson_part(const HazardCurve& h, double theta, double beta, double x_lo, double x_hi) {
+  const double mu = std::log(theta);
+  auto f = [&](const HazardCurve::Segment& s, double u) {
+    return std::exp(log_normal_cdf((u - mu) / beta)) * (-s.b) * std::exp(s.a + s.b * u);
+  };
+  double q = 0.0;
+  for (const auto& s : h.segments()) {
+    const double lo = std::max(s.lo, std::log(x_lo)), hi = std::min(s.hi, std::log(x_hi));
+    if (!(hi > lo)) continue;
+    const int n = 20000;  // even
+    const double dh = (hi - lo) / n;
+    double sum = f(s, lo) + f(s, hi);
+    for (int i = 1; i < n; ++i) sum += (i % 2 ? 4.0 : 2.0) * f(s, lo + i * dh);
+    q += sum * dh / 3.0;
+  }
+  return q;
+}
+
+// The part of nu from intensities in [x_lo, x_hi] is integral_lo^hi P |d lambda|, which by parts
+// is integral_lo^hi lambda dP + P(lo) lambda(lo) - P(hi) lambda(hi) (risk_integral.hpp); the
+// by-parts form alone (as computed before) is not that part, and the parts of a partition did
+// not add up to nu. On the Los Angeles curve (18 segments, slopes 0.3-15), read from the file.
+TEST(RiskIntegral, ThePartFromARangeOfIntensitiesIsThatRangesShareOfTheIntegral) {
+  const HazardCurve h =
+      read_hazard_curve(std::string(POUND_SOURCE_DIR) + "/studies/hazard-los-angeles-pga.csv");
+  ASSERT_EQ(h.im.size(), 19u);
+  const double inf = std::numeric_limits<double>::infinity();
+  // Ranges in g: the default study's stripes (0.05-1.5), one segment exactly, one reaching
+  // below the first point (0.0025 g) and one above the last (4.92 g): the extensions.
+  const double ranges[][2] = {{0.05, 1.5}, {0.0854, 0.128}, {0.001, 0.3}, {0.2, 8.0}};
+  for (double theta_g : {0.1, 0.5, 2.0})
+    for (double beta : {0.3, 0.7})
+      for (const auto& r : ranges) {
+        const double theta = theta_g * kGravity, lo = r[0] * kGravity, hi = r[1] * kGravity;
+        const double part = mean_annual_frequency(h, theta, beta, lo, hi);
+        const double q = simpson_part(h, theta, beta, lo, hi);
+        EXPECT_NEAR(part, q, 1e-6 * q)
+            << "theta " << theta_g << " g, beta " << beta << ", " << r[0] << "-" << r[1] << " g";
+        // Below, inside and above the range add up to nu: the boundary terms cancel.
+        const double nu = mean_annual_frequency(h, theta, beta);
+        const double below = mean_annual_frequency(h, theta, beta, 0.0, lo);
+        const double above = mean_annual_frequency(h, theta, beta, hi, inf);
+        EXPECT_NEAR(below + part + above, nu, 1e-12 * nu)
+            << "theta " << theta_g << " g, beta " << beta << ", " << r[0] << "-" << r[1] << " g";
+      }
+  // An empty or reversed range holds nothing.
+  EXPECT_EQ(mean_annual_frequency(h, kGravity, 0.5, 3.0, 3.0), 0.0);
+  EXPECT_EQ(mean_annual_frequency(h, kGravity, 0.5, 3.0, 2.0), 0.0);
 }
 
 TEST(RiskIntegral, ProbabilityInYearsIsPoisson) {
