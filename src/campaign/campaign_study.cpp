@@ -162,6 +162,12 @@ CampaignStudy campaign_from_options(const Options& opt, long samples_override, l
   const std::string src = opt.get_string("motion.source");
   if (src == "generated") {
     st.source = MotionSource::generated;
+    // A record named for a campaign of generated motions would be ignored without a word.
+    for (const char* key : {"motion.file", "motion.records"})
+      if (opt.given(key))
+        throw InputError(opt.where(key) +
+                         ": not used: motion.source is 'generated' (every sample generates its "
+                         "own motion); set motion.source = records to simulate record files");
     const Options gen = opt.section("generator", generator_specs());
     if (!gen.given("spectrum"))
       throw InputError(opt.where("generator.spectrum") +

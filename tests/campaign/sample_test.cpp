@@ -288,6 +288,22 @@ CampaignStudy generated_study(std::vector<const char*> extra) {
   return campaign_from_options(opt, 12, 5);
 }
 
+TEST(Sample, ARecordNamedForGeneratedMotionsIsRefused) {
+  // motion.source = generated (the default) ignores record files: naming one is an error that
+  // names the key and the way to use it.
+  for (const char* key : {"--motion.file", "--motion.records"}) {
+    try {
+      generated_study({key, POUND_SOURCE_DIR "/motions/elcentro-1940-ns.dat"});
+      ADD_FAILURE() << key << " accepted";
+    } catch (const InputError& e) {
+      const std::string m = e.what();
+      EXPECT_NE(m.find(std::string(key).substr(2)), std::string::npos) << m;
+      EXPECT_NE(m.find("motion.source = records"), std::string::npos) << m;
+      EXPECT_EQ(m.find('\n'), std::string::npos) << m;
+    }
+  }
+}
+
 TEST(Sample, GeneratedMotionsWithoutVariabilityAreThoseOfBeforeIssue12) {
   // Outcomes computed with the code of commit e53f1b8 (before issue 12): variability none
   // (the default) gives them bit for bit on one machine (checked by building e53f1b8 beside
