@@ -164,6 +164,7 @@ class Solver {
   bool exact_ = false;
   double h_sub_ = 0.0;
   long sub_ = 0;
+  long exact_declined_ = -1;  // the grid point whose exact step was declined
   ExactStepCache own_cache_;
   ExactStepCache* cache_ = &own_cache_;
   int config_ = -1;
@@ -841,9 +842,11 @@ RowResult Solver::run() {
     if (r_.steps + r_.rejected > s_.max_steps)
       throw NumericalError("more than " + std::to_string(s_.max_steps) +
                            " steps by t = " + std::to_string(t_) + " s");
-    if (exact_ && on_exact_grid() && double(sub_ + 1) * h_sub_ <= t_end * (1 + 1e-14) &&
-        contacts_open() && exact_step())
-      continue;
+    if (exact_ && on_exact_grid() && sub_ != exact_declined_ &&
+        double(sub_ + 1) * h_sub_ <= t_end * (1 + 1e-14) && contacts_open()) {
+      if (exact_step()) continue;
+      exact_declined_ = sub_;  // Dormand-Prince to the next grid point (rejections included)
+    }
     const double t_stop = next_stop();
     double hs = fixed_ ? t_stop - t_ : std::min(h_, t_stop - t_);
     if (t_ + hs > t_stop * (1 - 1e-14)) hs = t_stop - t_;
