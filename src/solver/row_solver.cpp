@@ -257,6 +257,11 @@ void Solver::storey_changed(int dof) {
   c_off_ready_ = false;
   const RowStorey& st = storeys_[dof];
   has_safe_[dof] = st.law->safe_drift(st.p, storey_[dof], safe_lo_[dof], safe_hi_[dof]);
+  if (has_safe_[dof]) {  // find_event's margin for round-off
+    const double margin = 1e-12 * (std::fabs(safe_lo_[dof]) + std::fabs(safe_hi_[dof]));
+    safe_lo_[dof] += margin;
+    safe_hi_[dof] -= margin;
+  }
 }
 
 // E' = [input -ag 1^T M v, damping v^T C v, contact sum_s F_s (v_L - v_R)] [W].
@@ -307,14 +312,13 @@ int Solver::find_event(const Eigen::VectorXd& y0, const Eigen::VectorXd& y1,
     if (k >= ns_) {
       const int dof = sw_[k - ns_].dof;
       if (has_safe_[dof]) {
-        // Skip a storey whose drift stays inside its safe interval: a bound of the drift's
-        // cubic over the step (its basis functions of the end slopes are at most 4/27).
+        // Skip a storey whose drift stays inside its safe interval (shrunk by 1e-12 of its
+        // ends, storey_changed): a bound of the drift's cubic over the step (its basis
+        // functions of the end slopes are at most 4/27).
         const double d0 = drift(y0, 0, dof), d1 = drift(y1, 0, dof);
         const double m4 =
             4.0 / 27.0 * h * (std::fabs(drift(y0, n_, dof)) + std::fabs(drift(y1, n_, dof)));
-        const double margin = 1e-12 * (std::fabs(safe_lo_[dof]) + std::fabs(safe_hi_[dof]));
-        if (std::max(d0, d1) + m4 < safe_hi_[dof] - margin &&
-            std::min(d0, d1) - m4 > safe_lo_[dof] + margin)
+        if (std::max(d0, d1) + m4 < safe_hi_[dof] && std::min(d0, d1) - m4 > safe_lo_[dof])
           continue;
       }
     }
@@ -575,15 +579,17 @@ void Solver::update_peaks(const Eigen::VectorXd& y0, const Eigen::VectorXd& y1,
                            h2 * dy1(n_ + i)};
     r_.peak_disp(i) = c.raise_peak(r_.peak_disp(i));
     const int b = storeys_[i].below;
-    QuinticHermite d = c;
-    if (b >= 0) {
-      d.g0 -= y0(b);
-      d.g1 -= y1(b);
-      d.m0 -= h * y0(n_ + b);
-      d.m1 -= h * y1(n_ + b);
-      d.c0 -= h2 * dy0(n_ + b);
-      d.c1 -= h2 * dy1(n_ + b);
+    if (b < 0) {  // a first storey: its drift is the floor's displacement
+      r_.peak_drift(i) = r_.peak_disp(i);
+      continue;
     }
+    QuinticHermite d = c;
+    d.g0 -= y0(b);
+    d.g1 -= y1(b);
+    d.m0 -= h * y0(n_ + b);
+    d.m1 -= h * y1(n_ + b);
+    d.c0 -= h2 * dy0(n_ + b);
+    d.c1 -= h2 * dy1(n_ + b);
     r_.peak_drift(i) = d.raise_peak(r_.peak_drift(i));
   }
   for (int i = 0; i < ns_; ++i) {
