@@ -404,7 +404,10 @@ Solver::Located Solver::locate(int ev, double theta, double hs, double en, bool 
   const bool must_cross = ev >= ns_;
   // The first try is the interpolant's crossing; then Newton's step on the switch's rate at the
   // last try when it falls inside the bracket, else Illinois (each try is a re-taken step).
-  double guess = theta * hs;
+  // Newton stops for good once a try does not halve |f|: the rate is that of the motion, and
+  // a long re-taken step (through a contact) may not follow it closely enough.
+  double guess = theta * hs, f_last = kNaN;
+  bool newton = true;
   for (int it = 0; it < 100 && !found; ++it) {
     hc = guess;
     if (!(hc > a && hc < b)) hc = (a * fb - b * fa) / (fb - fa);
@@ -413,7 +416,9 @@ Solver::Located Solver::locate(int ev, double theta, double hs, double en, bool 
     const SwitchValue c = switch_at(ev, ytry_, ktry_);
     const double fc = c.value;
     // Newton aims at 0 (contacts) or half the tolerance across (storeys must cross).
-    guess = c.rate != 0.0 ? hc + ((must_cross ? 0.5e-15 : 0.0) - fc) / c.rate : kNaN;
+    if (it > 0 && !(std::fabs(fc) <= 0.5 * f_last)) newton = false;
+    f_last = std::fabs(fc);
+    guess = newton && c.rate != 0.0 ? hc + ((must_cross ? 0.5e-15 : 0.0) - fc) / c.rate : kNaN;
     if (fc > 0.0) {
       b = hc;
       fb = fc;
