@@ -12,6 +12,7 @@
 #include "app/commands.hpp"
 #include "campaign/amplification_file.hpp"
 #include "core/error.hpp"
+#include "fragility/campaign_reader.hpp"
 #include "io/h5.hpp"
 #include "io/json.hpp"
 #include "io/options.hpp"
@@ -25,22 +26,6 @@ std::string fmt(const char* f, double x) {
   char b[64];
   std::snprintf(b, sizeof b, f, x);
   return b;
-}
-
-std::vector<std::string> split_names(const std::string& s, std::size_t n) {
-  std::vector<std::string> out;
-  std::size_t start = 0;
-  while (start <= s.size() && !s.empty()) {
-    const auto comma = s.find(',', start);
-    std::string item =
-        s.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-    const auto b = item.find_first_not_of(' '), e = item.find_last_not_of(' ');
-    out.push_back(b == std::string::npos ? "" : item.substr(b, e - b + 1));
-    if (comma == std::string::npos) break;
-    start = comma + 1;
-  }
-  for (std::size_t i = out.size(); i < n; ++i) out.push_back("building" + std::to_string(i + 1));
-  return out;
 }
 
 // "median [p16, p84] share" of one floor.
@@ -191,7 +176,8 @@ int run_summary(int argc, const char* const* argv) {
   AmplificationTable t;
   const bool stored = read_amplification(f, input, &t);
   if (!stored) t = compute_amplification(f, input);
-  const auto names = split_names(h5::root_attribute_text(f, "building_names"), t.buildings);
+  const auto names =
+      split_building_names(h5::root_attribute_text(f, "building_names"), t.buildings);
   if (opt.flag("json"))
     print_json(t, input, names, !stored);
   else

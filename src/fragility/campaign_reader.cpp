@@ -84,18 +84,22 @@ FloorArray floor_array(const Reader& r, const std::string& p, std::size_t sample
   return a;
 }
 
-std::vector<std::string> split_names(const std::string& s) {
+}  // namespace
+
+std::vector<std::string> split_building_names(const std::string& joined, std::size_t buildings) {
   std::vector<std::string> out;
-  std::stringstream in(s);
+  std::stringstream in(joined);
   std::string item;
-  while (std::getline(in, item, ',')) {
+  while (!joined.empty() && std::getline(in, item, ',')) {
     const auto b = item.find_first_not_of(" \t"), e = item.find_last_not_of(" \t");
-    if (b != std::string::npos) out.push_back(item.substr(b, e - b + 1));
+    out.push_back(b == std::string::npos ? "" : item.substr(b, e - b + 1));
   }
+  if (!joined.empty() && joined.back() == ',') out.emplace_back();  // getline drops it
+  if (out.size() < buildings) out.resize(buildings);
+  for (std::size_t i = 0; i < out.size(); ++i)
+    if (out[i].empty()) out[i] = "building" + std::to_string(i + 1);
   return out;
 }
-
-}  // namespace
 
 double FloorArray::max_over_floors(std::size_t s, std::size_t b) const {
   double m = NAN;
@@ -158,11 +162,9 @@ CampaignData read_campaign(const std::string& path) {
   c.seed = r.text_attribute("seed");
   const std::string period = r.text_attribute("im_period_s");
   c.im_period = period.empty() ? 0.0 : std::atof(period.c_str());
-  c.building_names = split_names(r.text_attribute("building_names"));
+  c.building_names = split_building_names(r.text_attribute("building_names"), c.buildings);
   const std::string levels = r.text_attribute("im_levels_mps2");
   if (!levels.empty()) c.levels = parse_number_list(levels, path + ": attribute im_levels_mps2");
-  for (std::size_t b = c.building_names.size(); b < c.buildings; ++b)
-    c.building_names.push_back("building" + std::to_string(b + 1));
   return c;
 }
 

@@ -27,6 +27,11 @@ struct SampledColumn {
   std::vector<double> values;  ///< per sample (SI, as stored)
 };
 
+/// The building names of a result file's attribute building_names ("a, b, c"): item i, trimmed,
+/// for building i, or "building<i+1>" where it is empty or missing, for `buildings` buildings
+/// (more when the attribute lists more).
+std::vector<std::string> split_building_names(const std::string& joined, std::size_t buildings);
+
 struct CampaignData {
   std::string path;
   std::string study;              ///< resolved study text (root attribute "study")

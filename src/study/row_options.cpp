@@ -125,6 +125,10 @@ BuildingRow row_from_options(const Options& opt) {
     Building bd;
     bd.name =
         opt.given(pre + "name") ? opt.get_string(pre + "name") : "building" + std::to_string(b);
+    // Result files list the names joined by commas (building_names).
+    if (bd.name.find_first_not_of(" \t") == std::string::npos ||
+        bd.name.find(',') != std::string::npos)
+      throw opt.invalid(pre + "name", "valid: a non-empty label without commas");
     const auto masses = opt.get_doubles(pre + "masses");
     for (double m : masses)
       if (!(m > 0)) throw opt.invalid(pre + "masses", "every floor mass must be > 0 kg");

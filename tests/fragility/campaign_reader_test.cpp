@@ -8,6 +8,7 @@
 #include <hdf5.h>
 
 #include <string>
+#include <vector>
 
 #include "../support/scratch_dir.hpp"
 #include "core/error.hpp"
@@ -31,6 +32,16 @@ std::string declaring_file(const std::string& name, hsize_t rows) {
   H5Gclose(g);
   H5Fclose(f);
   return path;
+}
+
+TEST(CampaignReader, BuildingNamesKeepTheirPositions) {
+  using V = std::vector<std::string>;
+  EXPECT_EQ(split_building_names("left, right", 2), (V{"left", "right"}));
+  // An empty item keeps its place (building 2 of 3 unnamed); missing ones are numbered.
+  EXPECT_EQ(split_building_names("a, , c", 3), (V{"a", "building2", "c"}));
+  EXPECT_EQ(split_building_names("a,", 3), (V{"a", "building2", "building3"}));
+  EXPECT_EQ(split_building_names("", 2), (V{"building1", "building2"}));
+  EXPECT_EQ(split_building_names(" x\t", 1), (V{"x"}));
 }
 
 TEST(CampaignReader, ADatasetDeclaringMoreValuesThanTheFileStoresIsRefused) {

@@ -99,6 +99,11 @@ TEST(RowOptions, ErrorsNameTheKeyAndWhatIsValid) {
   EXPECT_NE(error_of({"--contact.model", "lve", "--contact.k", "1e8", "--contact.e", "0"})
                 .find("valid: e in (0, 1]"),
             std::string::npos);
+  // Result files join the names by commas: a name with one, or an empty one, is refused.
+  for (const char* name : {"Tower, east", " "})
+    EXPECT_NE(error_of({"--building1.name", name}).find("building1.name"), std::string::npos)
+        << error_of({"--building1.name", name});
+  EXPECT_NE(error_of({"--building1.name", "a,b"}).find("without commas"), std::string::npos);
   // A building left out of the numbering: building4 without the keys it needs.
   EXPECT_NE(error_of({"--building5.masses", "1e3", "--building5.stiffnesses", "1e6"})
                 .find("building4.masses"),
