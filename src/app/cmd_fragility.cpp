@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "app/commands.hpp"
+#include "app/table_number.hpp"
 #include "core/error.hpp"
 #include "fragility/campaign_reader.hpp"
 #include "fragility/fragility_analysis.hpp"
@@ -54,13 +55,6 @@ std::vector<double> limits(const Options& o, const std::string& key) {
   for (double x : v)
     if (!(x > 0)) throw o.invalid(key, "valid: a list of limits > 0 in SI units");
   return v;
-}
-
-std::string fmt(const char* f, double x) {
-  if (!std::isfinite(x)) return "-";
-  char b[64];
-  std::snprintf(b, sizeof b, f, x);
-  return b;
 }
 
 // A limit for people: drift ratios in %, ductility as a number, the others in their SI unit.

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "app/commands.hpp"
+#include "app/table_number.hpp"
 #include "core/error.hpp"
 #include "fragility/campaign_reader.hpp"
 #include "io/json.hpp"
@@ -47,18 +48,8 @@ std::vector<OptionSpec> specs() {
   };
 }
 
-std::string fmt(const char* f, double x) {
-  if (!std::isfinite(x)) return "-";
-  char b[64];
-  std::snprintf(b, sizeof b, f, x);
-  return b;
-}
-
 std::string pair_name(const CampaignData& c, std::size_t p) {
-  auto name = [&](std::size_t b) {
-    return b < c.building_names.size() ? c.building_names[b] : "building" + std::to_string(b + 1);
-  };
-  return name(p) + " | " + name(p + 1);
+  return c.building_name(p) + " | " + c.building_name(p + 1);
 }
 
 std::string limit_text(Edp e, double x) {

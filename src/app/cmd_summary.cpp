@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "app/commands.hpp"
+#include "app/table_number.hpp"
 #include "campaign/amplification_file.hpp"
 #include "core/error.hpp"
 #include "fragility/campaign_reader.hpp"
@@ -20,13 +21,6 @@
 
 namespace pound::app {
 namespace {
-
-std::string fmt(const char* f, double x) {
-  if (!std::isfinite(x)) return "-";
-  char b[64];
-  std::snprintf(b, sizeof b, f, x);
-  return b;
-}
 
 // "median [p16, p84] share" of one floor.
 std::string cell(const AmplificationMeasure& m, std::size_t at) {
