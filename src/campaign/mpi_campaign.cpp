@@ -28,13 +28,16 @@ extern "C" void on_stop_signal(int) {
   g_stop = 1;
 }
 
-// The first failed write of the journal (master): the campaign stops as on SIGTERM.
-std::string g_write_error;
-void request_stop_on_write_error(const WriteError& e) {
-  if (g_write_error.empty()) g_write_error = e.what();
-  std::fprintf(stderr, "campaign: %s; stopping (samples in flight are not kept)\n", e.what());
-  g_stop = 1;
-}
+// The first failed write of the journal in one run (master): the campaign stops as on
+// SIGTERM. Kept per run, apart from the signals' flag: a later run in the same process
+// (tests, bench_master) is not stopped by it, and a signal that came meanwhile is not lost.
+struct WriteFailure {
+  std::string message;  ///< the WriteError's text ("" while none failed)
+  bool happened() const { return !message.empty(); }
+  void note(const WriteError& e) {
+    if (!happened()) message = e.what();
+  }
+};
 
 // The samples a journal holds. After a failed write the master's own count may include
 // records that never reached the disk; the journal is what a resume will find.
@@ -210,33 +213,33 @@ void drain_workers(MPI_Comm comm, int active) {
 }
 
 CampaignSummary master_loop(const CampaignStudy& st, const CampaignRunOptions& opt, MPI_Comm comm,
-                            int size, int batch, int& active);
+                            int size, int batch, int& active, WriteFailure& failure);
 
 CampaignSummary master(const CampaignStudy& st, const CampaignRunOptions& opt, MPI_Comm comm,
                        int size, int batch) {
   int active = size - 1;
   CampaignSummary sum;
-  g_write_error.clear();  // of an earlier run in this process
+  WriteFailure failure;
   try {
-    sum = master_loop(st, opt, comm, size, batch, active);
+    sum = master_loop(st, opt, comm, size, batch, active, failure);
   } catch (const WriteError& e) {  // the journal could not be created or opened
     drain_workers(comm, active);
-    g_write_error = e.what();
+    failure.note(e);
   } catch (...) {
     drain_workers(comm, active);
     throw;
   }
-  if (!g_write_error.empty()) {
+  if (failure.happened()) {
     sum.total = st.range_size();
     count_journal(st, opt.out + ".journal", sum);
     sum.interrupted = true;
-    sum.stop_reason = g_write_error;
+    sum.stop_reason = failure.message;
   }
   return sum;
 }
 
 CampaignSummary master_loop(const CampaignStudy& st, const CampaignRunOptions& opt, MPI_Comm comm,
-                            int size, int batch, int& active) {
+                            int size, int batch, int& active, WriteFailure& failure) {
   const RecordLayout layout(st);
   const std::string journal_path = opt.out + ".journal";
   CampaignSummary sum;
@@ -251,7 +254,10 @@ CampaignSummary master_loop(const CampaignStudy& st, const CampaignRunOptions& o
       }
     });
   }
-  JournalWriter journal(journal_path, st, opt.resume, request_stop_on_write_error);
+  JournalWriter journal(journal_path, st, opt.resume, [&failure](const WriteError& e) {
+    failure.note(e);
+    std::fprintf(stderr, "campaign: %s; stopping (samples in flight are not kept)\n", e.what());
+  });
   Progress prog;
   prog.at_start = sum.done;
   std::unique_ptr<SampleRunner> runner;  // built when the master simulates
@@ -309,7 +315,7 @@ CampaignSummary master_loop(const CampaignStudy& st, const CampaignRunOptions& o
   std::unique_ptr<char[]> buf;
   std::size_t capacity = 0;
   while (true) {
-    if (g_stop && !stopping) {
+    if ((g_stop || failure.happened()) && !stopping) {
       stopping = true;
       sum.interrupted = !schedule.exhausted();
       std::fprintf(stderr, "campaign: stop requested; finishing samples in flight\n");

@@ -59,7 +59,8 @@ CampaignSummary run_campaign(const CampaignStudy& st, const CampaignRunOptions& 
 /// SIGXFSZ (a file size limit is then a failed write). Call it before MPI_Init: a request that
 /// comes while the ranks start is then kept and honoured once the campaign runs.
 void install_stop_handlers();
-/// True once a stop was requested.
+/// True once a stop signal came (SIGTERM, SIGUSR1, SIGINT). A failed write of the journal
+/// stops only the run it happened in, not a later run_campaign of the same process.
 bool stop_requested();
 
 }  // namespace pound
