@@ -32,10 +32,13 @@ extern "C" void on_stop_signal(int) {
 // SIGTERM. Kept per run, apart from the signals' flag: a later run in the same process
 // (tests, bench_master) is not stopped by it, and a signal that came meanwhile is not lost.
 struct WriteFailure {
-  std::string message;  ///< the WriteError's text ("" while none failed)
+  std::string message;   ///< the WriteError's text ("" while none failed)
+  int error_number = 0;  ///< its errno
   bool happened() const { return !message.empty(); }
   void note(const WriteError& e) {
-    if (!happened()) message = e.what();
+    if (happened()) return;
+    message = e.what();
+    error_number = e.error_number();
   }
 };
 
@@ -215,6 +218,10 @@ void drain_workers(MPI_Comm comm, int active) {
 CampaignSummary master_loop(const CampaignStudy& st, const CampaignRunOptions& opt, MPI_Comm comm,
                             int size, int batch, int& active, WriteFailure& failure);
 
+// A journal that cannot be written for want of space (disk full, quota, file size limit) is a
+// stop, resumed once there is space; any other failure (a read-only file system, no
+// permission, an I/O error) would fail again on resume: an error naming the journal, the
+// system's reason and the samples the journal keeps for a resume once it can be written.
 CampaignSummary master(const CampaignStudy& st, const CampaignRunOptions& opt, MPI_Comm comm,
                        int size, int batch) {
   int active = size - 1;
@@ -232,6 +239,14 @@ CampaignSummary master(const CampaignStudy& st, const CampaignRunOptions& opt, M
   if (failure.happened()) {
     sum.total = st.range_size();
     count_journal(st, opt.out + ".journal", sum);
+    if (!out_of_space(failure.error_number)) {
+      std::string text = failure.message;
+      if (sum.done > 0)
+        text += "; the journal keeps " + std::to_string(sum.done) + " of " +
+                std::to_string(sum.total) + " samples: run again with --resume once " + opt.out +
+                ".journal can be written";
+      throw WriteError(text, failure.error_number);
+    }
     sum.interrupted = true;
     sum.stop_reason = failure.message;
   }
@@ -386,8 +401,9 @@ CampaignSummary master_loop(const CampaignStudy& st, const CampaignRunOptions& o
 }
 
 // Writes the result file from the complete journal and removes the journal (rank 0). A write
-// that fails in the system (disk full) stops the campaign as SIGTERM does: the journal stays
-// and `--resume` writes the file. Returns another failure's message, or "".
+// that fails for want of space (disk full, quota, file size limit) stops the campaign as
+// SIGTERM does: the journal stays and `--resume` writes the file. Returns another failure's
+// message (the journal stays too), or "".
 std::string write_result(const CampaignStudy& st, const CampaignRunOptions& opt, RunInfo info,
                          CampaignSummary& sum) {
   try {
@@ -400,12 +416,19 @@ std::string write_result(const CampaignStudy& st, const CampaignRunOptions& opt,
     std::remove((opt.out + ".journal").c_str());
     return "";
   } catch (const std::exception& e) {
-    const bool system = dynamic_cast<const WriteError*>(&e) || !h5::system_error().empty();
+    const auto* write = dynamic_cast<const WriteError*>(&e);
+    const bool system = write || !h5::system_error().empty();
     if (!system) return e.what();
+    const std::string reason = !h5::system_error().empty() && !write
+                                   ? std::string(e.what()) + " (" + h5::system_error() + ")"
+                                   : e.what();
+    const int error_number =
+        write && write->error_number() != 0 ? write->error_number() : h5::system_errno();
+    if (!out_of_space(error_number))
+      return reason + "; the journal " + opt.out + ".journal keeps every sample: run again with " +
+             "--resume once " + opt.out + " can be written";
     sum.interrupted = true;
-    sum.stop_reason = !h5::system_error().empty() && !dynamic_cast<const WriteError*>(&e)
-                          ? std::string(e.what()) + " (" + h5::system_error() + ")"
-                          : e.what();
+    sum.stop_reason = reason;
     return "";
   }
 }

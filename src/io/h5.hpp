@@ -36,6 +36,8 @@ class File {
 /// The system's error text ("No space left on device") of the first HDF5 call that failed with
 /// an errno since the last File was opened; "" when none did.
 std::string system_error();
+/// The errno of that call (ENOSPC, ...); 0 when none failed with one.
+int system_errno();
 
 /// Creates every missing group of a path such as "/pounding/response".
 void ensure_group(hid_t file, const std::string& path);

@@ -1,8 +1,9 @@
 // The automatic batch of a campaign (issue 13, docs/scaling.md): one sample per message on few
 // ranks, where the master's cost per message is far below a sample's; on many ranks enough
 // outcomes per message that the master's cost per sample falls below a lumped sample's cost
-// divided by the number of workers. A failed write of the journal in the middle of a run
-// stops that run, not a later one of the same process.
+// divided by the number of workers. Failed writes of the journal in the middle of a run: one
+// for want of space is a stop to resume, any other an error; neither stops a later run of
+// the same process.
 #include "campaign/mpi_campaign.hpp"
 
 #include <fcntl.h>
@@ -102,8 +103,8 @@ SampleOutcome canned(const CampaignStudy& st, long id) {
 }
 
 // Points this process's descriptor of `path` at `replacement` opened with `flags`: the next
-// write through it fails as writes to `replacement` do (/dev/full: ENOSPC), while the file
-// keeps what was written to it. False when no descriptor
+// write through it fails as writes to `replacement` do (/dev/full: ENOSPC; /dev/null opened
+// for reading: EBADF), while the file keeps what was written to it. False when no descriptor
 // of `path` is open.
 bool redirect_descriptor(const std::string& path, const char* replacement, int flags) {
   const fs::path want = fs::canonical(path);
@@ -167,6 +168,53 @@ TEST(CampaignWriteFailure, ASpaceStopDoesNotStopTheNextRunOfTheProcess) {
     CHECK(!c.interrupted && c.done == 12 && fs::exists(out));
   });
   EXPECT_EQ(failed, "");
+}
+
+// Any other failed write of the journal (here EBADF) would fail again on resume: an error
+// naming the journal, the system's reason and the samples the journal keeps, which stays for
+// a resume once it can be written.
+TEST(CampaignWriteFailure, AnotherWriteFailureIsAnErrorAndKeepsTheJournal) {
+  const std::string out = test::process_scratch_dir() / "badf.h5";
+  const std::string failed = in_mpi_child([&](std::vector<std::string>& failures) {
+    const CampaignStudy st = smoke_study(12);
+    std::string message;
+    try {
+      run(st, out, false, 4, "/dev/null", O_RDONLY, failures);
+      failures.push_back("a failed write of the journal (EBADF) did not throw");
+    } catch (const InputError& e) {
+      message = e.what();
+    }
+    CHECK(message == out +
+                         ".journal: cannot write the campaign journal (Bad file descriptor); "
+                         "the journal keeps 4 of 12 samples: run again with --resume once " +
+                         out + ".journal can be written");
+    if (!message.empty()) CHECK(message.find('\n') == std::string::npos);
+    CHECK(read_journal(out + ".journal", st).size() == 4u);
+    CHECK(!fs::exists(out));
+    const CampaignSummary b = run(st, out, true, -1, nullptr, 0, failures);
+    CHECK(!b.interrupted && b.done == 12 && fs::exists(out));
+  });
+  EXPECT_EQ(failed, "");
+}
+
+// A journal that cannot be created: a directory in its place (EISDIR, which a run as root
+// meets too) is an error, not a stop.
+TEST(CampaignWriteFailure, AJournalThatCannotBeCreatedIsAnError) {
+  const std::string out = test::process_scratch_dir() / "dir.h5";
+  fs::create_directories(out + ".journal");
+  const std::string failed = in_mpi_child([&](std::vector<std::string>& failures) {
+    const CampaignStudy st = smoke_study(6);
+    std::string message;
+    try {
+      run(st, out, false, -1, nullptr, 0, failures);
+      failures.push_back("a journal that is a directory did not throw");
+    } catch (const InputError& e) {
+      message = e.what();
+    }
+    CHECK(message == out + ".journal: cannot write the campaign journal (Is a directory)");
+  });
+  EXPECT_EQ(failed, "");
+  fs::remove(out + ".journal");
 }
 
 }  // namespace
