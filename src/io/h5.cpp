@@ -1,5 +1,7 @@
 #include "io/h5.hpp"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cstdlib>
 #include <cstring>
@@ -194,6 +196,51 @@ std::string attribute_text(hid_t file, const std::string& object, const std::str
   return out;
 }
 
+std::string declared_values_problem(hid_t ds, hsize_t count, std::size_t file_bytes,
+                                    std::size_t memory_bytes) {
+  if (count == 0) return "";
+  const hid_t plist = H5Dget_create_plist(ds);
+  if (plist < 0) return "has no readable storage layout";
+  const int filters = H5Pget_nfilters(plist);
+  hsize_t chunk[H5S_MAX_RANK];
+  const int chunk_rank =
+      H5Pget_layout(plist) == H5D_CHUNKED ? H5Pget_chunk(plist, H5S_MAX_RANK, chunk) : -1;
+  H5Pclose(plist);
+  if (filters < 0) return "has no readable storage layout";
+  const std::string not_stored =
+      "declares " + std::to_string(count) + " values but the file does not store them";
+  if (filters == 0) {  // stored as it is: every value takes its bytes in the file
+    if (file_bytes == 0 || count > H5Dget_storage_size(ds) / file_bytes) return not_stored;
+    return "";
+  }
+  // Filtered (HDF5 filters chunks only): the file stores fewer bytes than the values take, but
+  // it must hold every chunk that covers them.
+  const hid_t space = H5Dget_space(ds);
+  const int rank = H5Sget_simple_extent_ndims(space);
+  hsize_t dims[H5S_MAX_RANK];
+  hsize_t chunks = 0;
+  const bool shaped = rank == chunk_rank && rank > 0 &&
+                      H5Sget_simple_extent_dims(space, dims, nullptr) == rank &&
+                      H5Dget_num_chunks(ds, space, &chunks) >= 0;  // the whole extent
+  H5Sclose(space);
+  if (!shaped) return "has no readable storage layout";
+  hsize_t needed = 1;
+  for (int i = 0; i < rank; ++i) {
+    if (chunk[i] == 0) return "has no readable storage layout";
+    const hsize_t n = dims[i] / chunk[i] + (dims[i] % chunk[i] != 0);
+    needed = n != 0 && needed > ~hsize_t{0} / n ? ~hsize_t{0} : needed * n;
+  }
+  if (chunks < needed) return not_stored;
+  // A chunk may decompress to far more than it stores: the values must fit in this machine's
+  // memory.
+  const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGESIZE);
+  const hsize_t memory = pages > 0 && page > 0 ? hsize_t(pages) * hsize_t(page) : ~hsize_t{0};
+  if (memory_bytes == 0 || count > memory / memory_bytes)
+    return "declares " + std::to_string(count) +
+           " values (compressed), more than the memory of this machine holds";
+  return "";
+}
+
 std::vector<double> read_numbers(hid_t file, const std::string& dataset, const std::string& path,
                                  std::vector<hsize_t>* dims, const std::string& missing) {
   if (H5Lexists(file, dataset.c_str(), H5P_DEFAULT) <= 0)
@@ -204,8 +251,7 @@ std::vector<double> read_numbers(hid_t file, const std::string& dataset, const s
   const int rank = H5Sget_simple_extent_ndims(sp);
   std::vector<hsize_t> d(std::size_t(std::max(rank, 0)));
   if (rank > 0) H5Sget_simple_extent_dims(sp, d.data(), nullptr);
-  // A damaged file may declare more values than it stores (10^18 rows), which no vector holds;
-  // a file pound wrote stores every value.
+  // A damaged file may declare more values than it stores (10^18 rows), which no vector holds.
   hsize_t count = 1;
   for (hsize_t x : d) count = x != 0 && count > ~hsize_t{0} / x ? ~hsize_t{0} : count * x;
   const std::size_t bytes = H5Tget_size(type);
@@ -215,9 +261,9 @@ std::vector<double> read_numbers(hid_t file, const std::string& dataset, const s
     error = path + ": " + dataset + " has no readable shape; " + missing;
   } else if (cls != H5T_FLOAT && cls != H5T_INTEGER) {
     error = path + ": " + dataset + " does not hold numbers; " + missing;
-  } else if (count && (bytes == 0 || count > H5Dget_storage_size(ds) / bytes)) {
-    error = path + ": " + dataset + " declares " + std::to_string(count) +
-            " values but the file does not store them; a damaged file or " + missing;
+  } else if (const std::string why = declared_values_problem(ds, count, bytes, sizeof(double));
+             !why.empty()) {
+    error = path + ": " + dataset + " " + why + "; a damaged file or " + missing;
   }
   std::vector<double> v;
   if (error.empty()) {
