@@ -229,7 +229,8 @@ void JournalWriter::guarded(Step step) {
 JournalWriter::~JournalWriter() = default;
 
 void JournalWriter::fail(const char* what) const {
-  throw WriteError(path_ + ": " + what + " (" + std::strerror(errno) + ")");
+  const int e = errno;
+  throw WriteError(path_ + ": " + what + " (" + std::strerror(e) + ")", e);
 }
 
 void JournalWriter::append(const char* bytes, std::size_t n) {

@@ -62,7 +62,8 @@ class JournalWriter {
   JournalWriter& operator=(const JournalWriter&) = delete;
   /// Appends whole records (a multiple of the record size) and flushes. Every call into the
   /// system is checked: a failed write, flush, sync or close throws WriteError naming the
-  /// journal and the system's reason ("No space left on device"); the records appended before
+  /// journal and the system's reason ("No space left on device"), with its errno (whether the
+  /// campaign stops to resume or fails depends on it); the records appended before
   /// stay whole, a torn last one is cut when the campaign resumes.
   void append(const char* bytes, std::size_t n);
   void sync();   ///< flush and fsync (at the end of a run)

@@ -176,13 +176,15 @@ void merge_campaign_parts(const std::vector<std::string>& paths, const std::stri
         if (static_cast<long>(pd[0]) != p.hi - p.lo)
           throw InputError(p.path + ": " + name + " has " + std::to_string(pd[0]) +
                            " rows, its sample_range says " + std::to_string(p.hi - p.lo));
-        // A damaged part may declare more rows than it stores (found by fuzz_campaign_file).
+        // A damaged part may declare more rows than it stores (found by fuzz_campaign_file);
+        // a compressed one stores fewer bytes than it holds (h5::declared_values_problem).
         const hssize_t npts = H5Sget_simple_extent_npoints(sp.id);
         const Id ptype{H5Dget_type(dp.id), H5Tclose};
-        const std::size_t stored = H5Tget_size(ptype.id);
-        if (npts < 0 || (npts > 0 && (stored == 0 || static_cast<hsize_t>(npts) >
-                                                         H5Dget_storage_size(dp.id) / stored)))
-          throw bad(p, "declares more values than the file stores (a damaged file)");
+        if (npts < 0) throw bad(p, "has no readable shape (a damaged file)");
+        if (const std::string why = h5::declared_values_problem(
+                dp.id, static_cast<hsize_t>(npts), H5Tget_size(ptype.id), H5Tget_size(type.id));
+            !why.empty())
+          throw bad(p, why + " (a damaged file)");
         std::vector<char> buf(static_cast<std::size_t>(npts) * H5Tget_size(type.id));
         if (H5Dread(dp.id, type.id, H5S_ALL, H5S_ALL, H5P_DEFAULT, buf.data()) < 0)
           throw bad(p, "cannot be read as in " + parts.front().path);

@@ -28,13 +28,19 @@ extern "C" void on_stop_signal(int) {
   g_stop = 1;
 }
 
-// The first failed write of the journal (master): the campaign stops as on SIGTERM.
-std::string g_write_error;
-void request_stop_on_write_error(const WriteError& e) {
-  if (g_write_error.empty()) g_write_error = e.what();
-  std::fprintf(stderr, "campaign: %s; stopping (samples in flight are not kept)\n", e.what());
-  g_stop = 1;
-}
+// The first failed write of the journal in one run (master): the campaign stops as on
+// SIGTERM. Kept per run, apart from the signals' flag: a later run in the same process
+// (tests, bench_master) is not stopped by it, and a signal that came meanwhile is not lost.
+struct WriteFailure {
+  std::string message;   ///< the WriteError's text ("" while none failed)
+  int error_number = 0;  ///< its errno
+  bool happened() const { return !message.empty(); }
+  void note(const WriteError& e) {
+    if (happened()) return;
+    message = e.what();
+    error_number = e.error_number();
+  }
+};
 
 // The samples a journal holds. After a failed write the master's own count may include
 // records that never reached the disk; the journal is what a resume will find.
@@ -210,33 +216,45 @@ void drain_workers(MPI_Comm comm, int active) {
 }
 
 CampaignSummary master_loop(const CampaignStudy& st, const CampaignRunOptions& opt, MPI_Comm comm,
-                            int size, int batch, int& active);
+                            int size, int batch, int& active, WriteFailure& failure);
 
+// A journal that cannot be written for want of space (disk full, quota, file size limit) is a
+// stop, resumed once there is space; any other failure (a read-only file system, no
+// permission, an I/O error) would fail again on resume: an error naming the journal, the
+// system's reason and the samples the journal keeps for a resume once it can be written.
 CampaignSummary master(const CampaignStudy& st, const CampaignRunOptions& opt, MPI_Comm comm,
                        int size, int batch) {
   int active = size - 1;
   CampaignSummary sum;
-  g_write_error.clear();  // of an earlier run in this process
+  WriteFailure failure;
   try {
-    sum = master_loop(st, opt, comm, size, batch, active);
+    sum = master_loop(st, opt, comm, size, batch, active, failure);
   } catch (const WriteError& e) {  // the journal could not be created or opened
     drain_workers(comm, active);
-    g_write_error = e.what();
+    failure.note(e);
   } catch (...) {
     drain_workers(comm, active);
     throw;
   }
-  if (!g_write_error.empty()) {
+  if (failure.happened()) {
     sum.total = st.range_size();
     count_journal(st, opt.out + ".journal", sum);
+    if (!out_of_space(failure.error_number)) {
+      std::string text = failure.message;
+      if (sum.done > 0)
+        text += "; the journal keeps " + std::to_string(sum.done) + " of " +
+                std::to_string(sum.total) + " samples: run again with --resume once " + opt.out +
+                ".journal can be written";
+      throw WriteError(text, failure.error_number);
+    }
     sum.interrupted = true;
-    sum.stop_reason = g_write_error;
+    sum.stop_reason = failure.message;
   }
   return sum;
 }
 
 CampaignSummary master_loop(const CampaignStudy& st, const CampaignRunOptions& opt, MPI_Comm comm,
-                            int size, int batch, int& active) {
+                            int size, int batch, int& active, WriteFailure& failure) {
   const RecordLayout layout(st);
   const std::string journal_path = opt.out + ".journal";
   CampaignSummary sum;
@@ -251,7 +269,10 @@ CampaignSummary master_loop(const CampaignStudy& st, const CampaignRunOptions& o
       }
     });
   }
-  JournalWriter journal(journal_path, st, opt.resume, request_stop_on_write_error);
+  JournalWriter journal(journal_path, st, opt.resume, [&failure](const WriteError& e) {
+    failure.note(e);
+    std::fprintf(stderr, "campaign: %s; stopping (samples in flight are not kept)\n", e.what());
+  });
   Progress prog;
   prog.at_start = sum.done;
   std::unique_ptr<SampleRunner> runner;  // built when the master simulates
@@ -309,7 +330,7 @@ CampaignSummary master_loop(const CampaignStudy& st, const CampaignRunOptions& o
   std::unique_ptr<char[]> buf;
   std::size_t capacity = 0;
   while (true) {
-    if (g_stop && !stopping) {
+    if ((g_stop || failure.happened()) && !stopping) {
       stopping = true;
       sum.interrupted = !schedule.exhausted();
       std::fprintf(stderr, "campaign: stop requested; finishing samples in flight\n");
@@ -380,8 +401,9 @@ CampaignSummary master_loop(const CampaignStudy& st, const CampaignRunOptions& o
 }
 
 // Writes the result file from the complete journal and removes the journal (rank 0). A write
-// that fails in the system (disk full) stops the campaign as SIGTERM does: the journal stays
-// and `--resume` writes the file. Returns another failure's message, or "".
+// that fails for want of space (disk full, quota, file size limit) stops the campaign as
+// SIGTERM does: the journal stays and `--resume` writes the file. Returns another failure's
+// message (the journal stays too), or "".
 std::string write_result(const CampaignStudy& st, const CampaignRunOptions& opt, RunInfo info,
                          CampaignSummary& sum) {
   try {
@@ -394,12 +416,19 @@ std::string write_result(const CampaignStudy& st, const CampaignRunOptions& opt,
     std::remove((opt.out + ".journal").c_str());
     return "";
   } catch (const std::exception& e) {
-    const bool system = dynamic_cast<const WriteError*>(&e) || !h5::system_error().empty();
+    const auto* write = dynamic_cast<const WriteError*>(&e);
+    const bool system = write || !h5::system_error().empty();
     if (!system) return e.what();
+    const std::string reason = !h5::system_error().empty() && !write
+                                   ? std::string(e.what()) + " (" + h5::system_error() + ")"
+                                   : e.what();
+    const int error_number =
+        write && write->error_number() != 0 ? write->error_number() : h5::system_errno();
+    if (!out_of_space(error_number))
+      return reason + "; the journal " + opt.out + ".journal keeps every sample: run again with " +
+             "--resume once " + opt.out + " can be written";
     sum.interrupted = true;
-    sum.stop_reason = !h5::system_error().empty() && !dynamic_cast<const WriteError*>(&e)
-                          ? std::string(e.what()) + " (" + h5::system_error() + ")"
-                          : e.what();
+    sum.stop_reason = reason;
     return "";
   }
 }

@@ -39,8 +39,10 @@ int campaign_batch(int batch, int ranks);
 struct CampaignSummary {
   long total = 0, done = 0, failed = 0;
   bool interrupted = false;  ///< stopped by SIGTERM/SIGUSR1/SIGINT or a failed write
-  /// Rank 0: why the campaign stopped other than by a signal, a write that failed in the
-  /// system (disk full, file size limit) with its reason; the journal is kept, as on SIGTERM.
+  /// Rank 0: why the campaign stopped other than by a signal, a write that failed for want of
+  /// space (disk full, quota, file size limit: ENOSPC, EDQUOT, EFBIG) with the system's reason;
+  /// the journal is kept, as on SIGTERM. Any other failed write is an error (run_campaign
+  /// throws), the journal kept all the same.
   std::string stop_reason;
   double peak_rss_mb = 0.0;   ///< largest peak resident memory of any rank [MB]
   double loop_seconds = 0.0;  ///< master: time in the scheduling loop, without the file [s]
@@ -51,15 +53,18 @@ struct CampaignSummary {
   int batch = 1;      ///< the batch used
 };
 
-/// Collective over `comm`. Returns the same summary on every rank. Throws InputError on the
-/// master for journal/output problems (after telling the workers to stop).
+/// Collective over `comm`. Returns the same summary on every rank. Throws InputError on every
+/// rank for journal/output problems (after telling the workers to stop), a journal or result
+/// file that cannot be written for another reason than space included (read-only file system,
+/// permission, I/O error: the message names the file and the system's reason).
 CampaignSummary run_campaign(const CampaignStudy& st, const CampaignRunOptions& opt, MPI_Comm comm);
 
 /// Installs handlers so that SIGTERM, SIGUSR1 and SIGINT request a clean stop, and ignores
 /// SIGXFSZ (a file size limit is then a failed write). Call it before MPI_Init: a request that
 /// comes while the ranks start is then kept and honoured once the campaign runs.
 void install_stop_handlers();
-/// True once a stop was requested.
+/// True once a stop signal came (SIGTERM, SIGUSR1, SIGINT). A failed write of the journal
+/// stops only the run it happened in, not a later run_campaign of the same process.
 bool stop_requested();
 
 }  // namespace pound

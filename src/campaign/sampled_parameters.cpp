@@ -145,15 +145,13 @@ std::vector<OptionSpec> sampled_option_specs() {
 std::vector<SampledParameter> read_sampled_parameters(const Options& opt, const BuildingRow& row) {
   const Options smp = opt.section("sample", sampled_option_specs());
   const int buildings = static_cast<int>(row.buildings.size());
-  const int numbered = smp.count_numbered("building");
-  if (numbered > buildings) {
-    std::string key;  // the first given key of the building that does not exist
-    const std::string pre = "building" + std::to_string(numbered) + ".";
-    for (const auto& k : smp.given_keys())
-      if (key.empty() && k.compare(0, pre.size(), pre) == 0) key = k;
-    throw InputError(smp.where(key) + ": the study has only " + std::to_string(buildings) +
-                     " buildings");
-  }
+  // A building the study does not have: the first key given under it is named.
+  for (const auto& [number, key] : smp.numbered_sections("building"))
+    if (number > buildings)
+      throw InputError(smp.where(key) + ": the study has only " + std::to_string(buildings) +
+                       (buildings == 1 ? " building (valid: building1)"
+                                       : " buildings (valid: building1..building" +
+                                             std::to_string(buildings) + ")"));
 
   // The given keys in sorted order (std::map), each with its entry and building.
   std::map<std::string, SampledParameter> given;

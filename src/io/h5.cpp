@@ -1,5 +1,7 @@
 #include "io/h5.hpp"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cstdlib>
 #include <cstring>
@@ -10,8 +12,10 @@
 namespace pound::h5 {
 namespace {
 
-// The first system error reported by a failing HDF5 call since the last File was opened.
+// The first system error reported by a failing HDF5 call since the last File was opened: its
+// text and errno.
 std::string g_system_error;
+int g_system_errno = 0;
 
 // Finds "errno = N" in an entry of HDF5's error stack (the sec2 driver writes it on every
 // failed open, read, write, truncate and close).
@@ -19,16 +23,19 @@ herr_t find_errno(unsigned, const H5E_error2_t* e, void* out) {
   const char* p = e->desc ? std::strstr(e->desc, "errno = ") : nullptr;
   if (!p) return 0;
   const int code = std::atoi(p + 8);
-  if (code != 0 && static_cast<std::string*>(out)->empty())
-    *static_cast<std::string*>(out) = std::strerror(code);
+  int& found = *static_cast<int*>(out);
+  if (code != 0 && found == 0) found = code;
   return 0;
 }
 
 // Called by HDF5 (instead of printing the stack) whenever an API call fails.
 herr_t remember_system_error(hid_t stack, void*) {
-  std::string text;
-  H5Ewalk2(stack, H5E_WALK_DOWNWARD, find_errno, &text);
-  if (!text.empty() && g_system_error.empty()) g_system_error = text;
+  int code = 0;
+  H5Ewalk2(stack, H5E_WALK_DOWNWARD, find_errno, &code);
+  if (code != 0 && g_system_error.empty()) {
+    g_system_error = std::strerror(code);
+    g_system_errno = code;
+  }
   return 0;
 }
 
@@ -36,8 +43,13 @@ std::string with_reason(const std::string& what) {
   return g_system_error.empty() ? what : what + " (" + g_system_error + ")";
 }
 
+// A WriteError with the remembered system error (its text in the message, its errno).
+WriteError write_error(const std::string& what) {
+  return WriteError(with_reason(what), g_system_errno);
+}
+
 void check(herr_t status, const std::string& what) {
-  if (status < 0) throw WriteError(with_reason("HDF5: " + what + " failed"));
+  if (status < 0) throw write_error("HDF5: " + what + " failed");
 }
 
 std::string parent_of(const std::string& path) {
@@ -51,8 +63,9 @@ File::File(const std::string& path) : path_(path) {
   // Errors become exceptions, not prints; the system's reason of each is remembered.
   H5Eset_auto2(H5E_DEFAULT, remember_system_error, nullptr);
   g_system_error.clear();
+  g_system_errno = 0;
   id_ = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-  if (id_ < 0) throw WriteError(with_reason(path + ": cannot create the HDF5 file"));
+  if (id_ < 0) throw write_error(path + ": cannot create the HDF5 file");
 }
 
 File::~File() {
@@ -62,12 +75,15 @@ File::~File() {
 void File::close() {
   const herr_t s = H5Fclose(id_);
   id_ = -1;
-  if (s < 0 || !g_system_error.empty())
-    throw WriteError(with_reason(path_ + ": cannot write the HDF5 file"));
+  if (s < 0 || !g_system_error.empty()) throw write_error(path_ + ": cannot write the HDF5 file");
 }
 
 std::string system_error() {
   return g_system_error;
+}
+
+int system_errno() {
+  return g_system_errno;
 }
 
 void File::flush() {
@@ -79,7 +95,7 @@ void ensure_group(hid_t file, const std::string& path) {
   ensure_group(file, parent_of(path));
   if (H5Lexists(file, path.c_str(), H5P_DEFAULT) > 0) return;
   const hid_t g = H5Gcreate2(file, path.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-  if (g < 0) throw WriteError(with_reason("HDF5: cannot create group " + path));
+  if (g < 0) throw write_error("HDF5: cannot create group " + path);
   H5Gclose(g);
 }
 
@@ -90,7 +106,7 @@ void write(hid_t file, const std::string& path, const std::vector<double>& data,
   const hid_t space = H5Screate_simple(cols ? 2 : 1, dims, nullptr);
   const hid_t ds = H5Dcreate2(file, path.c_str(), H5T_NATIVE_DOUBLE, space, H5P_DEFAULT,
                               H5P_DEFAULT, H5P_DEFAULT);
-  if (ds < 0) throw WriteError(with_reason("HDF5: cannot create dataset " + path));
+  if (ds < 0) throw write_error("HDF5: cannot create dataset " + path);
   if (!data.empty())
     check(H5Dwrite(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()),
           "write of " + path);
@@ -105,7 +121,7 @@ void write(hid_t file, const std::string& path, const std::vector<int>& data) {
   const hid_t space = H5Screate_simple(1, dims, nullptr);
   const hid_t ds =
       H5Dcreate2(file, path.c_str(), H5T_NATIVE_INT, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-  if (ds < 0) throw WriteError(with_reason("HDF5: cannot create dataset " + path));
+  if (ds < 0) throw write_error("HDF5: cannot create dataset " + path);
   if (!data.empty())
     check(H5Dwrite(ds, H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()),
           "write of " + path);
@@ -121,8 +137,7 @@ void attribute(hid_t file, const std::string& object, const std::string& name,
   const hid_t space = H5Screate(H5S_SCALAR);
   const hid_t attr = H5Acreate_by_name(file, object.c_str(), name.c_str(), type, space, H5P_DEFAULT,
                                        H5P_DEFAULT, H5P_DEFAULT);
-  if (attr < 0)
-    throw WriteError(with_reason("HDF5: cannot create attribute " + object + ":" + name));
+  if (attr < 0) throw write_error("HDF5: cannot create attribute " + object + ":" + name);
   const char* p = value.c_str();
   check(H5Awrite(attr, type, &p), "attribute " + name);
   H5Aclose(attr);
@@ -134,8 +149,7 @@ void attribute(hid_t file, const std::string& object, const std::string& name, d
   const hid_t space = H5Screate(H5S_SCALAR);
   const hid_t attr = H5Acreate_by_name(file, object.c_str(), name.c_str(), H5T_NATIVE_DOUBLE, space,
                                        H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-  if (attr < 0)
-    throw WriteError(with_reason("HDF5: cannot create attribute " + object + ":" + name));
+  if (attr < 0) throw write_error("HDF5: cannot create attribute " + object + ":" + name);
   check(H5Awrite(attr, H5T_NATIVE_DOUBLE, &value), "attribute " + name);
   H5Aclose(attr);
   H5Sclose(space);
@@ -182,6 +196,51 @@ std::string attribute_text(hid_t file, const std::string& object, const std::str
   return out;
 }
 
+std::string declared_values_problem(hid_t ds, hsize_t count, std::size_t file_bytes,
+                                    std::size_t memory_bytes) {
+  if (count == 0) return "";
+  const hid_t plist = H5Dget_create_plist(ds);
+  if (plist < 0) return "has no readable storage layout";
+  const int filters = H5Pget_nfilters(plist);
+  hsize_t chunk[H5S_MAX_RANK];
+  const int chunk_rank =
+      H5Pget_layout(plist) == H5D_CHUNKED ? H5Pget_chunk(plist, H5S_MAX_RANK, chunk) : -1;
+  H5Pclose(plist);
+  if (filters < 0) return "has no readable storage layout";
+  const std::string not_stored =
+      "declares " + std::to_string(count) + " values but the file does not store them";
+  if (filters == 0) {  // stored as it is: every value takes its bytes in the file
+    if (file_bytes == 0 || count > H5Dget_storage_size(ds) / file_bytes) return not_stored;
+    return "";
+  }
+  // Filtered (HDF5 filters chunks only): the file stores fewer bytes than the values take, but
+  // it must hold every chunk that covers them.
+  const hid_t space = H5Dget_space(ds);
+  const int rank = H5Sget_simple_extent_ndims(space);
+  hsize_t dims[H5S_MAX_RANK];
+  hsize_t chunks = 0;
+  const bool shaped = rank == chunk_rank && rank > 0 &&
+                      H5Sget_simple_extent_dims(space, dims, nullptr) == rank &&
+                      H5Dget_num_chunks(ds, space, &chunks) >= 0;  // the whole extent
+  H5Sclose(space);
+  if (!shaped) return "has no readable storage layout";
+  hsize_t needed = 1;
+  for (int i = 0; i < rank; ++i) {
+    if (chunk[i] == 0) return "has no readable storage layout";
+    const hsize_t n = dims[i] / chunk[i] + (dims[i] % chunk[i] != 0);
+    needed = n != 0 && needed > ~hsize_t{0} / n ? ~hsize_t{0} : needed * n;
+  }
+  if (chunks < needed) return not_stored;
+  // A chunk may decompress to far more than it stores: the values must fit in this machine's
+  // memory.
+  const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGESIZE);
+  const hsize_t memory = pages > 0 && page > 0 ? hsize_t(pages) * hsize_t(page) : ~hsize_t{0};
+  if (memory_bytes == 0 || count > memory / memory_bytes)
+    return "declares " + std::to_string(count) +
+           " values (compressed), more than the memory of this machine holds";
+  return "";
+}
+
 std::vector<double> read_numbers(hid_t file, const std::string& dataset, const std::string& path,
                                  std::vector<hsize_t>* dims, const std::string& missing) {
   if (H5Lexists(file, dataset.c_str(), H5P_DEFAULT) <= 0)
@@ -192,8 +251,7 @@ std::vector<double> read_numbers(hid_t file, const std::string& dataset, const s
   const int rank = H5Sget_simple_extent_ndims(sp);
   std::vector<hsize_t> d(std::size_t(std::max(rank, 0)));
   if (rank > 0) H5Sget_simple_extent_dims(sp, d.data(), nullptr);
-  // A damaged file may declare more values than it stores (10^18 rows), which no vector holds;
-  // a file pound wrote stores every value.
+  // A damaged file may declare more values than it stores (10^18 rows), which no vector holds.
   hsize_t count = 1;
   for (hsize_t x : d) count = x != 0 && count > ~hsize_t{0} / x ? ~hsize_t{0} : count * x;
   const std::size_t bytes = H5Tget_size(type);
@@ -203,9 +261,9 @@ std::vector<double> read_numbers(hid_t file, const std::string& dataset, const s
     error = path + ": " + dataset + " has no readable shape; " + missing;
   } else if (cls != H5T_FLOAT && cls != H5T_INTEGER) {
     error = path + ": " + dataset + " does not hold numbers; " + missing;
-  } else if (count && (bytes == 0 || count > H5Dget_storage_size(ds) / bytes)) {
-    error = path + ": " + dataset + " declares " + std::to_string(count) +
-            " values but the file does not store them; a damaged file or " + missing;
+  } else if (const std::string why = declared_values_problem(ds, count, bytes, sizeof(double));
+             !why.empty()) {
+    error = path + ": " + dataset + " " + why + "; a damaged file or " + missing;
   }
   std::vector<double> v;
   if (error.empty()) {

@@ -36,6 +36,8 @@ class File {
 /// The system's error text ("No space left on device") of the first HDF5 call that failed with
 /// an errno since the last File was opened; "" when none did.
 std::string system_error();
+/// The errno of that call (ENOSPC, ...); 0 when none failed with one.
+int system_errno();
 
 /// Creates every missing group of a path such as "/pounding/response".
 void ensure_group(hid_t file, const std::string& path);
@@ -56,10 +58,21 @@ std::string attribute_text(hid_t file, const std::string& object, const std::str
 /// attribute_text of the root group.
 std::string root_attribute_text(hid_t file, const std::string& name);
 
+/// Why the `count` values of `file_bytes` bytes each that dataset `ds` declares cannot be read
+/// into `memory_bytes` each, as words that follow its name ("declares 10 values but the file
+/// does not store them"); "" when they can. A damaged file may declare 10^18 rows it does not
+/// store (found by fuzz_campaign_file): a dataset stored as it is must hold the bytes of every
+/// value. A filtered one (gzip, as `h5repack -f GZIP=6` leaves it) stores fewer bytes than its
+/// values take, so its size says nothing: it must hold every chunk that covers its values, and
+/// these must fit in this machine's memory; H5Dread then decompresses them (and fails on a
+/// damaged chunk).
+std::string declared_values_problem(hid_t ds, hsize_t count, std::size_t file_bytes,
+                                    std::size_t memory_bytes);
+
 /// A whole numeric dataset as doubles (integers convert), row-major, with its dimensions.
 /// Throws InputError naming `path` (the file, for messages) and the dataset when it is absent
 /// (`missing` says what the file should have been), not numeric, unreadable, or declares more
-/// values than the file stores (a damaged file, found by fuzz_campaign_file).
+/// values than it can hold (declared_values_problem).
 std::vector<double> read_numbers(hid_t file, const std::string& dataset, const std::string& path,
                                  std::vector<hsize_t>* dims, const std::string& missing);
 /// The names of the links directly under a group, in name order; empty when it is absent.

@@ -5,6 +5,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <sstream>
 
 #include "io/ini.hpp"
@@ -302,22 +303,23 @@ bool Options::matches(const std::string& pattern, const std::string& key) {
   return key_matches(pattern, key);
 }
 
-int Options::count_numbered(const std::string& prefix) const {
-  int n = 0;
+std::map<long, std::string> Options::numbered_sections(const std::string& prefix) const {
+  std::map<long, std::string> out;
+  constexpr long kMax = std::numeric_limits<long>::max();
   for (const auto& kv : values_) {
-    if (kv.first.compare(0, prefix.size(), prefix) != 0) continue;
+    const std::string& key = kv.first;
+    if (key.compare(0, prefix.size(), prefix) != 0) continue;
     std::size_t k = prefix.size();
-    // Found by fuzz_study: building2000000000000.masses overflowed the int (undefined
-    // behaviour). A number held at 10^9 still names a building past the last one given, which
-    // the study then reports as missing.
-    int num = 0;
-    while (k < kv.first.size() && std::isdigit(static_cast<unsigned char>(kv.first[k]))) {
-      const int digit = kv.first[k++] - '0';
-      num = num >= 100000000 ? 1000000000 : num * 10 + digit;
+    // Found by fuzz_study: building2000000000000.masses overflowed an int (undefined
+    // behaviour); a number past the range of a long is held at its largest value.
+    long num = 0;
+    while (k < key.size() && std::isdigit(static_cast<unsigned char>(key[k]))) {
+      const int digit = key[k++] - '0';
+      num = num > (kMax - digit) / 10 ? kMax : num * 10 + digit;
     }
-    if (k > prefix.size() && k < kv.first.size() && kv.first[k] == '.') n = std::max(n, num);
+    if (k > prefix.size() && k < key.size() && key[k] == '.') out.emplace(num, key);
   }
-  return n;
+  return out;
 }
 
 std::string Options::resolved_text(const std::vector<std::string>& exclude) const {

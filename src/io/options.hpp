@@ -64,8 +64,11 @@ class Options {
   /// True when `key` is an instance of the declared pattern ("building2.E" of "building#.E").
   static bool matches(const std::string& pattern, const std::string& key);
 
-  /// Highest N for which any "prefix#." key was given (0 when none).
-  int count_numbered(const std::string& prefix) const;
+  /// The numbers N of the "prefixN." keys given (building1.masses, building12.E: 1 and 12),
+  /// ascending, each with the first key given under it, in one walk over the given keys. A
+  /// number too large for a long (building2000000000000000000000.masses) counts as the
+  /// largest long: past any count of buildings or pairs, and its key names it.
+  std::map<long, std::string> numbered_sections(const std::string& prefix) const;
 
   /// Where a value came from: "study.ini:12: key 'gap'" or "command line: --gap".
   std::string where(const std::string& key) const;

@@ -112,11 +112,38 @@ void read_hysteresis(const Options& opt, const std::string& pre, Building& bd) {
                         [](double x) { return x > 0; });
 }
 
+// "building1..building3", or "building1" for one.
+std::string numbered_range(const std::string& prefix, long hi) {
+  return prefix + "1" + (hi > 1 ? ".." + prefix + std::to_string(hi) : "");
+}
+
+// The count of the numbered sections given without a gap from 1 (buildings 1, 2, 3: 3). A
+// section past a gap (building5 without building4, building2000000000000) is an error naming
+// its key; found from the keys given, in time independent of the number.
+int consecutive_buildings(const Options& opt) {
+  long n = 0;
+  for (const auto& [number, key] : opt.numbered_sections("building")) {
+    if (number != n + 1) {
+      const std::string next = "building" + std::to_string(n + 1);
+      throw InputError(opt.where(key) + ": " +
+                       (n == 0
+                            ? "there is no building1"
+                            : "the row has " + numbered_range("building", n) + " and no " + next) +
+                       " (" + next +
+                       ".masses is missing; buildings are numbered 1, 2, 3, ... without gaps), "
+                       "so valid: " +
+                       numbered_range("building", n + 1));
+    }
+    ++n;
+  }
+  return static_cast<int>(n);
+}
+
 }  // namespace
 
 BuildingRow row_from_options(const Options& opt) {
   BuildingRow row;
-  const int nb = opt.count_numbered("building");
+  const int nb = consecutive_buildings(opt);
   if (nb == 0)
     throw InputError((opt.config_path().empty() ? std::string("command line") : opt.config_path()) +
                      ": no buildings; give [building1] masses = ... and stiffnesses = ...");
@@ -163,11 +190,14 @@ BuildingRow row_from_options(const Options& opt) {
       if (!(x >= 0)) throw opt.invalid(key, "gaps must be >= 0 m");
     row.gaps.push_back(g);
   }
-  for (int p = nb; p <= opt.count_numbered("pair"); ++p)
-    if (opt.given("pair" + std::to_string(p) + ".gap"))
-      throw opt.invalid("pair" + std::to_string(p) + ".gap",
-                        "there are only " + std::to_string(nb) + " buildings, so pairs 1.." +
-                            std::to_string(nb - 1));
+  // A pair past the last (pair5 of three buildings, pair999999999): its key is named, from the
+  // keys given (a loop up to its number took minutes, and a number held at 10^9 went unseen).
+  for (const auto& [p, key] : opt.numbered_sections("pair"))
+    if (p >= nb)
+      throw opt.invalid(key, nb == 1
+                                 ? std::string("there is only 1 building, so no pair")
+                                 : "there are only " + std::to_string(nb) +
+                                       " buildings, so valid: " + numbered_range("pair", nb - 1));
   return row;
 }
 

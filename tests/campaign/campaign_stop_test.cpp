@@ -198,4 +198,54 @@ TEST(CampaignStop, AFullDiskAtTheResultFileKeepsTheJournalAndTheResumeWritesIt) 
   expect_same_numbers(ref, d + "/run.h5");
 }
 
+// A journal that cannot be written for another reason than space would fail again on every
+// resume: the job must end with an error (exit 2, which the Slurm scripts pass on) instead of
+// a stop that says "free some space" and exits 0 (which they turn into 75, "submit again").
+// Here a journal left by a full disk is resumed on the same tmpfs remounted read-only
+// (EROFS, which a run as root meets too); the journal stays whole, and the resume once the
+// file system is writable again gives the uninterrupted file.
+TEST(CampaignStop, AReadOnlyJournalIsAnErrorAndStaysForALaterResume) {
+  const std::string d = dir() + "/read-only", ref = dir() + "/ro-ref.h5";
+  ASSERT_EQ(run(pound("--samples 160 --out " + ref), dir() + "/ref.log"), 0);
+  fs::create_directories(d + "/disk");
+  const std::string cmd = pound("--samples 160 --out " + d + "/disk/run.h5");
+  std::ofstream(d + "/script.sh") << "set -u\n"
+                                  << "mount -t tmpfs -o size=40k tmpfs " << d
+                                  << "/disk || exit 90\n"
+                                  << cmd << " 2>" << d << "/first.log; echo $? >" << d
+                                  << "/first.status\n"
+                                  << "cp " << d << "/disk/run.h5.journal " << d << "/kept\n"
+                                  << "mount -o remount,ro,size=64m " << d << "/disk || exit 91\n"
+                                  << cmd << " --resume 2>" << d << "/ro.log; echo $? >" << d
+                                  << "/ro.status\n"
+                                  << "ls " << d << "/disk >" << d << "/left.txt\n"
+                                  << "cmp -s " << d << "/kept " << d
+                                  << "/disk/run.h5.journal; echo $? >" << d << "/same.status\n"
+                                  << "mount -o remount,rw " << d << "/disk || exit 92\n"
+                                  << cmd << " --resume 2>" << d << "/second.log; echo $? >" << d
+                                  << "/second.status\n"
+                                  << "cp " << d << "/disk/run.h5 " << d << "/run.h5\n";
+  const int status =
+      run("unshare --user --map-root-user --mount sh " + d + "/script.sh", d + "/unshare.log");
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0)
+      << "unshare and mount of a tmpfs: " << slurp(d + "/unshare.log");
+  ASSERT_EQ(slurp(d + "/first.status"), "0\n") << slurp(d + "/first.log");  // the full disk
+  EXPECT_EQ(slurp(d + "/ro.status"), "2\n") << slurp(d + "/ro.log");
+  const std::string msg = slurp(d + "/ro.log");
+  const std::string want = "pound campaign: error: " + d +
+                           "/disk/run.h5.journal: cannot cut the torn tail of the journal "
+                           "(Read-only file system); the journal keeps ";
+  EXPECT_NE(msg.find(want), std::string::npos) << want << " in:\n" << msg;
+  EXPECT_NE(msg.find(" of 160 samples: run again with --resume once " + d +
+                     "/disk/run.h5.journal can be written\n"),
+            std::string::npos)
+      << msg;
+  EXPECT_EQ(msg.find("free some space"), std::string::npos) << msg;
+  EXPECT_EQ(msg.find("campaign: stopped after"), std::string::npos) << msg;
+  EXPECT_EQ(slurp(d + "/left.txt"), "run.h5.journal\n");
+  EXPECT_EQ(slurp(d + "/same.status"), "0\n");  // the journal as the full disk left it
+  EXPECT_EQ(slurp(d + "/second.status"), "0\n") << slurp(d + "/second.log");
+  expect_same_numbers(ref, d + "/run.h5");
+}
+
 }  // namespace

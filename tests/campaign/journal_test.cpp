@@ -207,6 +207,20 @@ TEST(Journal, AWriteThatFailsNamesTheJournalAndTheSystemsReason) {
   } catch (const WriteError& e) {
     EXPECT_STREQ(e.what(),
                  "/dev/full: cannot write the campaign journal (No space left on device)");
+    EXPECT_EQ(e.error_number(), ENOSPC);  // a stop to resume once there is space
+    EXPECT_TRUE(out_of_space(e.error_number()));
+  }
+  // A directory in the journal's place (EISDIR, met as root too): no want of space, which the
+  // campaign reports as an error rather than a stop.
+  const std::string d = test::process_scratch_dir() / "a-directory";
+  std::filesystem::create_directories(d);
+  try {
+    JournalWriter w(d, st, false);
+    FAIL() << "a directory was opened as the journal";
+  } catch (const WriteError& e) {
+    EXPECT_EQ(std::string(e.what()), d + ": cannot write the campaign journal (Is a directory)");
+    EXPECT_EQ(e.error_number(), EISDIR);
+    EXPECT_FALSE(out_of_space(e.error_number()));
   }
 }
 
@@ -244,8 +258,9 @@ TEST(Journal, AfterAFailedAppendTheHandlerIsToldOnceAndTheResumeCutsTheTornRecor
     {
       JournalWriter w(path, st, false, [&](const WriteError& e) {
         ++calls;
-        named =
-            std::string(e.what()) == path + ": cannot write the campaign journal (File too large)";
+        named = std::string(e.what()) ==
+                    path + ": cannot write the campaign journal (File too large)" &&
+                e.error_number() == EFBIG && out_of_space(e.error_number());
       });
       for (long id : {0L, 1L, 2L, 3L}) {
         const auto rec = encode_record(outcome(st, id), layout);

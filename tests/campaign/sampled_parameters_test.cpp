@@ -171,9 +171,19 @@ TEST(SampledParameters, BadValuesNameTheKeyAndWhatIsValid) {
   EXPECT_EQ(error_of({"--sample.hardening", "uniform(0, 0.99)"}), "(no error)");
   // A building the study does not have: the key given is named.
   m = error_of({"--sample.building3.strength_scale", "1.1"});
-  EXPECT_NE(m.find("--sample.building3.strength_scale: the study has only 2 buildings"),
+  EXPECT_NE(m.find("--sample.building3.strength_scale: the study has only 2 buildings (valid: "
+                   "building1..building2)"),
             std::string::npos)
       << m;
+  // Numbers far past the study, or past the range of a long (held at 10^9 and not found, the
+  // message named "key 'sample.'"): the key given is named all the same.
+  for (const std::string key : {"--sample.building2000000000000.strength_scale",
+                                "--sample.building99999999999999999999999.strength_scale"}) {
+    m = error_of({key, "1.1"});
+    EXPECT_NE(m.find(key + ": the study has only 2 buildings (valid: building1..building2)"),
+              std::string::npos)
+        << m;
+  }
   // The existing keys keep their messages.
   EXPECT_NE(error_of({"--sample.e", "uniform(0.5, 1.5)"}).find("e must stay in (0, 1]"),
             std::string::npos);

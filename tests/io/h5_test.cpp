@@ -8,6 +8,8 @@
 #include <hdf5.h>
 
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "../support/scratch_dir.hpp"
 #include "campaign/merge.hpp"
@@ -73,6 +75,70 @@ TEST(H5, AnAttributeOfSeveralValuesReadsAsAbsent) {
   EXPECT_EQ(h5::root_attribute_text(f, "seed"), "");
   EXPECT_EQ(h5::root_attribute_text(f, "study"), "");
   EXPECT_EQ(h5::root_attribute_text(f, "one"), "7");
+  H5Fclose(f);
+}
+
+// A dataset compressed with gzip (as `h5repack -f GZIP=6` leaves a result file) stores fewer
+// bytes than its values take; it was refused as "declares N values but the file does not store
+// them". It is read whole, the same values. One whose chunks are not all in the file (2^60 rows
+// declared, or a chunk never written) is still refused in one line (not a std::length_error).
+TEST(H5, ACompressedDatasetIsReadWholeAndOneWithoutItsChunksRefused) {
+  const std::string path = test::process_scratch_dir() / "compressed.h5";
+  std::vector<double> x(4000);
+  std::vector<int> k(3000);
+  for (std::size_t i = 0; i < x.size(); ++i) x[i] = 0.5 * double(i % 10) - 1.25;
+  for (std::size_t i = 0; i < k.size(); ++i) k[i] = int(i % 3);
+  {
+    h5::File f(path);
+    // A gzip dataset of `rows` in chunks of `chunk`, its first `written` rows written.
+    auto compressed = [&](const char* name, hid_t type, hsize_t rows, hsize_t chunk,
+                          const void* data, hsize_t written) {
+      const hid_t space = H5Screate_simple(1, &rows, nullptr);
+      const hid_t dcpl = H5Pcreate(H5P_DATASET_CREATE);
+      H5Pset_chunk(dcpl, 1, &chunk);
+      H5Pset_deflate(dcpl, 6);
+      const hid_t d = H5Dcreate2(f.id(), name, type, space, H5P_DEFAULT, dcpl, H5P_DEFAULT);
+      if (written) {
+        const hsize_t start = 0;
+        H5Sselect_hyperslab(space, H5S_SELECT_SET, &start, nullptr, &written, nullptr);
+        const hid_t mem = H5Screate_simple(1, &written, nullptr);
+        H5Dwrite(d, type, mem, space, H5P_DEFAULT, data);
+        H5Sclose(mem);
+      }
+      const hsize_t stored = H5Dget_storage_size(d);
+      H5Dclose(d);
+      H5Pclose(dcpl);
+      H5Sclose(space);
+      return stored;
+    };
+    // The check that refused them: fewer bytes stored than the values take.
+    EXPECT_LT(compressed("/x", H5T_NATIVE_DOUBLE, x.size(), 1000, x.data(), x.size()),
+              x.size() * 8 / 4);
+    EXPECT_LT(compressed("/k", H5T_NATIVE_INT, k.size(), 3000, k.data(), k.size()),
+              k.size() * 4 / 4);
+    compressed("/huge", H5T_NATIVE_DOUBLE, hsize_t{1} << 60, 1024, nullptr, 0);
+    compressed("/part", H5T_NATIVE_DOUBLE, x.size(), 1000, x.data(), 1000);  // 1 of 4 chunks
+    f.close();
+  }
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  const hid_t f = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(f, 0);
+  std::vector<hsize_t> dims;
+  EXPECT_EQ(h5::read_numbers(f, "/x", path, &dims, "not a test file"), x);
+  EXPECT_EQ(dims, std::vector<hsize_t>{x.size()});
+  const std::vector<double> got = h5::read_numbers(f, "/k", path, &dims, "not a test file");
+  EXPECT_EQ(got, std::vector<double>(k.begin(), k.end()));
+  for (const auto& [name, count] :
+       {std::pair<std::string, std::string>{"/huge", "1152921504606846976"}, {"/part", "4000"}}) {
+    try {
+      h5::read_numbers(f, name, path, &dims, "not a test file");
+      ADD_FAILURE() << name << " was read";
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::string(e.what()), path + ": " + name + " declares " + count +
+                                           " values but the file does not store them; a damaged "
+                                           "file or not a test file");
+    }
+  }
   H5Fclose(f);
 }
 

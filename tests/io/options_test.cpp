@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <limits>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -136,14 +138,25 @@ TEST(Options, ADirectoryGivenAsTheStudyFileIsNamedSo) {
 }
 
 // Found by fuzz_study (issue 14): a building number past the range of an int overflowed while
-// counting the buildings (undefined behaviour). It counts as a building past the last one.
-TEST(Options, AHugeBuildingNumberIsCountedWithoutOverflow) {
+// counting the buildings (undefined behaviour). The numbered sections come from the keys given,
+// each with its first key; a number past the range of a long is held at the largest long.
+TEST(Options, NumberedSectionsComeFromTheKeysGivenWithoutOverflow) {
   Options o("simulate", "", specs());
-  o.parse({"--building1.masses", "1", "--building2000000000000.masses", "1"});
-  EXPECT_EQ(o.count_numbered("building"), 1000000000);
-  Options p("simulate", "", specs());
-  p.parse({"--building1.masses", "1", "--building12.masses", "1"});
-  EXPECT_EQ(p.count_numbered("building"), 12);
+  o.parse({"--building1.masses", "1", "--building2000000000000.masses", "1",
+           "--building99999999999999999999999.masses", "1", "--pair999999999.gap", "0.1"});
+  const auto b = o.numbered_sections("building");
+  ASSERT_EQ(b.size(), 3u);
+  EXPECT_EQ(b.at(1), "building1.masses");
+  EXPECT_EQ(b.at(2000000000000L), "building2000000000000.masses");
+  EXPECT_EQ(b.at(std::numeric_limits<long>::max()), "building99999999999999999999999.masses");
+  const auto p = o.numbered_sections("pair");
+  ASSERT_EQ(p.size(), 1u);
+  EXPECT_EQ(p.at(999999999), "pair999999999.gap");
+  EXPECT_TRUE(o.numbered_sections("contact").empty());  // "contact.e": no number
+  Options q("simulate", "", specs());
+  q.parse({"--building1.masses", "1", "--building12.masses", "1"});
+  EXPECT_EQ(q.numbered_sections("building"),
+            (std::map<long, std::string>{{1, "building1.masses"}, {12, "building12.masses"}}));
 }
 
 }  // namespace

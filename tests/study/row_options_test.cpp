@@ -105,9 +105,54 @@ TEST(RowOptions, ErrorsNameTheKeyAndWhatIsValid) {
         << error_of({"--building1.name", name});
   EXPECT_NE(error_of({"--building1.name", "a,b"}).find("without commas"), std::string::npos);
   // A building left out of the numbering: building4 without the keys it needs.
-  EXPECT_NE(error_of({"--building5.masses", "1e3", "--building5.stiffnesses", "1e6"})
-                .find("building4.masses"),
-            std::string::npos);
+  EXPECT_EQ(error_of({"--building5.masses", "1e3", "--building5.stiffnesses", "1e6"}),
+            "command line: --building5.masses: the row has building1..building3 and no building4 "
+            "(building4.masses is missing; buildings are numbered 1, 2, 3, ... without gaps), so "
+            "valid: building1..building4");
+}
+
+// Numbers past the row, in sections of their own (the review of issue 14's fuzz findings):
+// `pair999999999` took a loop of 10^9 look-ups (minutes) before it was reported,
+// `pair5000000000` (held at 10^9) went unseen, and `building2000000000000.masses` was reported
+// as a missing building2.masses. Each is named at once, with what is valid.
+TEST(RowOptions, NumbersPastTheRowNameTheirKeyAndTheValidRange) {
+  EXPECT_EQ(error_of({"--pair999999999.gap", "0.1"}),
+            "command line: --pair999999999.gap = '0.1': there are only 3 buildings, so valid: "
+            "pair1..pair2");
+  EXPECT_EQ(error_of({"--pair5000000000.gap", "0.1"}),
+            "command line: --pair5000000000.gap = '0.1': there are only 3 buildings, so valid: "
+            "pair1..pair2");
+  EXPECT_EQ(error_of({"--pair99999999999999999999999.gap", "0.1"}),
+            "command line: --pair99999999999999999999999.gap = '0.1': there are only 3 "
+            "buildings, so valid: pair1..pair2");
+  EXPECT_EQ(error_of({"--building2000000000000.masses", "1e3"}),
+            "command line: --building2000000000000.masses: the row has building1..building3 and "
+            "no building4 (building4.masses is missing; buildings are numbered 1, 2, 3, ... "
+            "without gaps), so valid: building1..building4");
+  EXPECT_EQ(error_of({"--building99999999999999999999999.stiffnesses", "1e6"}),
+            "command line: --building99999999999999999999999.stiffnesses: the row has "
+            "building1..building3 and no building4 (building4.masses is missing; buildings are "
+            "numbered 1, 2, 3, ... without gaps), so valid: building1..building4");
+  // One building: no pair at all; no building1: the first building given is named.
+  const std::vector<std::string> one = {
+      "--building1.masses", "1e3", "--building1.stiffnesses", "1e6", "--pair1.gap", "0.01"};
+  try {
+    const Options o = parsed(one);
+    row_from_options(o);
+    ADD_FAILURE() << "a pair of one building was read";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "command line: --pair1.gap = '0.01': there is only 1 building, so no pair");
+  }
+  try {
+    const Options o = parsed({"--building3.masses", "1e3", "--building3.stiffnesses", "1e6"});
+    row_from_options(o);
+    ADD_FAILURE() << "a row without building1 was read";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "command line: --building3.masses: there is no building1 (building1.masses is "
+              "missing; buildings are numbered 1, 2, 3, ... without gaps), so valid: building1");
+  }
 }
 
 }  // namespace
