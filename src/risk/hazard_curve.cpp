@@ -77,8 +77,12 @@ HazardCurve make_hazard_curve(std::vector<double> im, std::vector<double> rate,
       throw InputError(at +
                        ": the annual rate of exceedance must be a finite number > 0 "
                        "(drop points of rate 0; negative rates are not rates)");
-    if (i > 0 && !(im[i] > im[i - 1]))
-      throw InputError(at + ": the intensities must increase strictly from point to point");
+    // A slope between two intensities a rounding apart would be ln(rate) / 1e-16: the curve
+    // and its integrals would be round-off (found by fuzz_hazard).
+    if (i > 0 && !(im[i] > im[i - 1] * (1.0 + 1e-6)))
+      throw InputError(at +
+                       ": the intensities must increase strictly from point to point, each by "
+                       "more than 1e-6 of the previous one");
     if (i > 0 && !(rate[i] < rate[i - 1]))
       throw InputError(at +
                        ": the rate of exceedance must fall strictly as the intensity "
@@ -147,7 +151,7 @@ std::vector<HazardCurve::Segment> HazardCurve::segments() const {
   auto line = [&](std::size_t i, double lo, double hi) {  // through points i and i + 1
     const double x0 = std::log(im[i]), x1 = std::log(im[i + 1]);
     const double b = (std::log(rate[i + 1]) - std::log(rate[i])) / (x1 - x0);
-    return Segment{std::log(rate[i]) - b * x0, b, lo, hi};
+    return Segment{std::log(rate[i]) - b * x0, b, lo, hi, x0, std::log(rate[i])};
   };
   s.push_back(line(0, -kInf, std::log(im[0])));
   for (std::size_t i = 0; i + 1 < n; ++i)
@@ -159,7 +163,7 @@ std::vector<HazardCurve::Segment> HazardCurve::segments() const {
 double HazardCurve::rate_at(double x) const {
   const double u = std::log(x);
   for (const auto& s : segments())
-    if (u <= s.hi) return std::exp(s.a + s.b * u);
+    if (u <= s.hi) return std::exp(s.y0 + s.b * (u - s.x0));  // from its point: no cancellation
   return 0.0;
 }
 

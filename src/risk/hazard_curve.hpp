@@ -34,6 +34,7 @@ struct HazardCurve {
   /// segment covers ln x in [lo, hi] (-inf / +inf at the ends).
   struct Segment {
     double a, b, lo, hi;
+    double x0, y0;  ///< a point of the line, ln x and ln lambda there (a = y0 - b x0)
   };
   std::vector<Segment> segments() const;
   /// How the curve is used beyond its points, for the reports.

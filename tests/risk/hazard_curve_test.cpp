@@ -129,5 +129,21 @@ TEST(HazardCurve, AMessageShowsASmallRateReadably) {
   }
 }
 
+TEST(HazardCurve, PointsARoundingApartAreRefusedAndRateAtHitsEveryPoint) {
+  // fuzz_hazard (the hour run): intensities 2222222222222220.0025 and ...0.2025 g, one double
+  // apart, made a slope of ln(rate) / 1e-16 and rate_at missed the second point by 1e-4.
+  const std::string m = error_of(
+      "close.csv",
+      "pga [g], annual_rate [1/yr]\n2222222222222220.0025, 657\n2222222222222220.2025, 5.6\n");
+  EXPECT_NE(m.find("close.csv: point 2"), std::string::npos) << m;
+  EXPECT_NE(m.find("more than 1e-6 of the previous one"), std::string::npos) << m;
+  // Points 2e-6 apart with rates a factor 1e6 apart (a slope of -7e6): rate_at, from each
+  // segment's own point, returns every point's rate to 1e-12.
+  const HazardCurve h = make_hazard_curve({1e-3, 1e-3 * (1 + 2e-6), 2.0, 40.0},
+                                          {1e2, 1e-4, 1e-6, 1e-12}, "pga", 0.0, "g", "api");
+  for (std::size_t i = 0; i < h.im.size(); ++i)
+    EXPECT_NEAR(h.rate_at(h.im[i]), h.rate[i], 1e-12 * h.rate[i]) << "point " << i + 1;
+}
+
 }  // namespace
 }  // namespace pound
