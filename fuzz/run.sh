@@ -76,27 +76,31 @@ for h in "${harnesses[@]}"; do
     left=$(( seconds - ($(date +%s) - start) ))
     (( left >= 1 )) || break
     rc=0
-    before=$(ls "$w/artifacts" | wc -l)
+    # Inputs libFuzzer keeps for a fault; not the slow units it writes after a slow input
+    # (-report_slow_units, 10 s: a loaded machine, not a fault of pound's).
+    before=$(find "$w/artifacts" -type f ! -name 'slow-unit-*' | wc -l)
     "$bin/$h" -max_total_time="$left" -timeout="$timeout" -rss_limit_mb=2048 \
       -print_final_stats=1 -artifact_prefix="$w/artifacts/" "${dict[@]}" \
       "$w/corpus" "$w/prepared/seeds" $(seed_dirs "$h") >"$w/last.log" 2>&1 || rc=$?
     cat "$w/last.log" >>"$w/fuzz.log"
     r=$(sed -n 's/^stat::number_of_executed_units: *//p' "$w/last.log" | tail -n 1)
     runs=$(( runs + ${r:-0} ))
-    [[ $rc -eq 0 && $(ls "$w/artifacts" | wc -l) -eq $before ]] && break
+    [[ $rc -eq 0 && $(find "$w/artifacts" -type f ! -name 'slow-unit-*' | wc -l) -eq $before ]] &&
+      break
     # The first stack frame that is neither the sanitizers', libFuzzer's, the C library's nor
     # an allocator's (the caller of malloc or new decides).
     frame=$(sed -n '/ERROR: \(libFuzzer\|AddressSanitizer\|LeakSanitizer\)\|runtime error/,$p' "$w/last.log" |
       grep -E '^ +#[0-9]+ ' | grep -vE '__sanitizer|__interceptor_|fuzzer::|libc\.so|sysdeps/|raise|abort|pthread_kill|__asan|__ubsan| in (malloc|calloc|realloc|free|operator new|operator delete)' |
-      head -n 1)
+      head -n 1 || true)  # no frame (an exit without a fault report) must not end the script
     # Out of memory: libFuzzer lists the live allocations; HDF5's when libhdf5 holds them and
     # no frame of pound's code does (HDF5 itself grows to 10 GB reading some damaged files).
     if grep -q 'ERROR: libFuzzer: out-of-memory' "$w/last.log"; then
-      frame=$(sed -n '/ERROR: libFuzzer: out-of-memory/,$p' "$w/last.log" | grep -E '^ +#[0-9]+ ')
+      frame=$(sed -n '/ERROR: libFuzzer: out-of-memory/,$p' "$w/last.log" | grep -E '^ +#[0-9]+ ' ||
+        true)
       if grep -q libhdf5 <<<"$frame" && ! grep -q 'in pound::' <<<"$frame"; then
         frame="out of memory, live allocations in libhdf5"
       else
-        frame="out of memory: $(grep 'in pound::' <<<"$frame" | head -n 1)"
+        frame="out of memory: $(grep 'in pound::' <<<"$frame" | head -n 1 || true)"
       fi
     fi
     if [[ $frame == *libhdf5* ]]; then
@@ -116,7 +120,7 @@ for h in "${harnesses[@]}"; do
   done
   rate=$(( runs / (seconds > 0 ? seconds : 1) ))
   corp="$(ls "$w/corpus" | wc -l)/$(du -sk "$w/corpus" | cut -f1)kB"
-  cov=$(grep -o 'cov: [0-9]*' "$w/fuzz.log" | tail -n 1 | cut -d' ' -f2)
+  cov=$(grep -o 'cov: [0-9]*' "$w/fuzz.log" | tail -n 1 | cut -d' ' -f2 || true)
   [[ $result == ok && $hdf5_faults -gt 0 ]] && result="ok,hdf5:$hdf5_faults"
   rows+=("$(printf '%-26s %-12s %8s %10s %16s %7s' "$h" "${result%% *}" "$rate" "$runs" "$corp" "${cov:-?}")")
 done
