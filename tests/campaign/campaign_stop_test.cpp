@@ -143,24 +143,26 @@ TEST(CampaignStop, SigtermWhileTheRankStartsStopsCleanlyAndResumes) {
 // resumes. Leaves DIR/first.log and DIR/first.status (the stopped run), DIR/left.txt (the
 // files on the full disk), DIR/second.log and DIR/second.status (the resume) and DIR/run.h5
 // (the file the resume wrote).
-void run_on_a_full_disk(const std::string& d, int kib, int samples) {
-  fs::create_directories(d + "/disk");
-  const std::string cmd =
-      pound("--samples " + std::to_string(samples) + " --out " + d + "/disk/run.h5");
-  std::ofstream(d + "/script.sh") << "set -u\n"
-                                  << "mount -t tmpfs -o size=" << kib << "k tmpfs " << d
-                                  << "/disk || exit 90\n"
-                                  << cmd << " 2>" << d << "/first.log; echo $? >" << d
-                                  << "/first.status\n"
-                                  << "ls " << d << "/disk >" << d << "/left.txt\n"
-                                  << "mount -o remount,size=64m " << d << "/disk || exit 91\n"
-                                  << cmd << " --resume 2>" << d << "/second.log; echo $? >" << d
-                                  << "/second.status\n"
-                                  << "cp " << d << "/disk/run.h5 " << d << "/run.h5\n";
+// Runs the shell script `body` after "set -u" in a mount namespace of its own (DIR/script.sh;
+// unshare: no root needed, and the host sees no mount).
+void run_in_a_mount_namespace(const std::string& d, const std::string& body) {
+  std::ofstream(d + "/script.sh") << "set -u\n" << body;
   const int status =
       run("unshare --user --map-root-user --mount sh " + d + "/script.sh", d + "/unshare.log");
   ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0)
       << "unshare and mount of a tmpfs: " << slurp(d + "/unshare.log");
+}
+
+void run_on_a_full_disk(const std::string& d, int kib, int samples) {
+  fs::create_directories(d + "/disk");
+  const std::string cmd =
+      pound("--samples " + std::to_string(samples) + " --out " + d + "/disk/run.h5");
+  run_in_a_mount_namespace(
+      d, "mount -t tmpfs -o size=" + std::to_string(kib) + "k tmpfs " + d + "/disk || exit 90\n" +
+             cmd + " 2>" + d + "/first.log; echo $? >" + d + "/first.status\n" + "ls " + d +
+             "/disk >" + d + "/left.txt\n" + "mount -o remount,size=64m " + d +
+             "/disk || exit 91\n" + cmd + " --resume 2>" + d + "/second.log; echo $? >" + d +
+             "/second.status\n" + "cp " + d + "/disk/run.h5 " + d + "/run.h5\n");
 }
 
 TEST(CampaignStop, AFullDiskStopsTheJournalWithTheReasonAndTheResumeGivesTheWholeFile) {
@@ -209,26 +211,16 @@ TEST(CampaignStop, AReadOnlyJournalIsAnErrorAndStaysForALaterResume) {
   ASSERT_EQ(run(pound("--samples 160 --out " + ref), dir() + "/ref.log"), 0);
   fs::create_directories(d + "/disk");
   const std::string cmd = pound("--samples 160 --out " + d + "/disk/run.h5");
-  std::ofstream(d + "/script.sh") << "set -u\n"
-                                  << "mount -t tmpfs -o size=40k tmpfs " << d
-                                  << "/disk || exit 90\n"
-                                  << cmd << " 2>" << d << "/first.log; echo $? >" << d
-                                  << "/first.status\n"
-                                  << "cp " << d << "/disk/run.h5.journal " << d << "/kept\n"
-                                  << "mount -o remount,ro,size=64m " << d << "/disk || exit 91\n"
-                                  << cmd << " --resume 2>" << d << "/ro.log; echo $? >" << d
-                                  << "/ro.status\n"
-                                  << "ls " << d << "/disk >" << d << "/left.txt\n"
-                                  << "cmp -s " << d << "/kept " << d
-                                  << "/disk/run.h5.journal; echo $? >" << d << "/same.status\n"
-                                  << "mount -o remount,rw " << d << "/disk || exit 92\n"
-                                  << cmd << " --resume 2>" << d << "/second.log; echo $? >" << d
-                                  << "/second.status\n"
-                                  << "cp " << d << "/disk/run.h5 " << d << "/run.h5\n";
-  const int status =
-      run("unshare --user --map-root-user --mount sh " + d + "/script.sh", d + "/unshare.log");
-  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0)
-      << "unshare and mount of a tmpfs: " << slurp(d + "/unshare.log");
+  run_in_a_mount_namespace(
+      d, "mount -t tmpfs -o size=40k tmpfs " + d + "/disk || exit 90\n" + cmd + " 2>" + d +
+             "/first.log; echo $? >" + d + "/first.status\n" + "cp " + d + "/disk/run.h5.journal " +
+             d + "/kept\n" + "mount -o remount,ro,size=64m " + d + "/disk || exit 91\n" + cmd +
+             " --resume 2>" + d + "/ro.log; echo $? >" + d + "/ro.status\n" + "ls " + d +
+             "/disk >" + d + "/left.txt\n" + "cmp -s " + d + "/kept " + d +
+             "/disk/run.h5.journal; echo $? >" + d + "/same.status\n" + "mount -o remount,rw " + d +
+             "/disk || exit 92\n" + cmd + " --resume 2>" + d + "/second.log; echo $? >" + d +
+             "/second.status\n" + "cp " + d + "/disk/run.h5 " + d + "/run.h5\n");
+  if (HasFatalFailure()) return;
   ASSERT_EQ(slurp(d + "/first.status"), "0\n") << slurp(d + "/first.log");  // the full disk
   EXPECT_EQ(slurp(d + "/ro.status"), "2\n") << slurp(d + "/ro.log");
   const std::string msg = slurp(d + "/ro.log");
