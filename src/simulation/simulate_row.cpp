@@ -71,12 +71,9 @@ RowSimulation simulate_row(const BuildingRow& row, const GroundMotion& motion,
   p.t_end = motion.duration() + opt.extra_time;
   p.record_history = opt.record_history;
   p.track_energy = opt.track_energy;
-  ExactStepCache cache;  // the free run's propagators serve the pounding run too
-  p.exact_cache = &cache;
-  RowResult free = solve(p, integ);  // no laws: contacts off
   for (const auto& l : laws) p.laws.push_back(l.get());
-  RowResult pounding = solve(p, integ);
-  return summarize_runs(row, std::move(free), std::move(pounding));
+  RunPair runs = solve_free_and_pounding(p, integ);  // without and with the contacts
+  return summarize_runs(row, std::move(runs.free), std::move(runs.pounding));
 }
 
 }  // namespace pound

@@ -51,7 +51,8 @@ class RowForces {
 };
 
 // The two hot paths are defined here so that the solver's right-hand side inlines them.
-inline void RowForces::linear(const double* u, const double* v, double ag, double* dv) const {
+inline void RowForces::linear(const double* __restrict u, const double* __restrict v, double ag,
+                              double* __restrict dv) const {
   const double* im = row_.inv_mass.data();
   if (tridiagonal_ && n_ > 1) {
     const double *kl = kl_.data(), *kd = kd_.data(), *ku = ku_.data();
@@ -75,7 +76,8 @@ inline void RowForces::linear(const double* u, const double* v, double ag, doubl
   }
 }
 
-inline void RowForces::affine(const double* u, const double* v, double ag, double* dv) const {
+inline void RowForces::affine(const double* __restrict u, const double* __restrict v, double ag,
+                              double* __restrict dv) const {
   const double* im = row_.inv_mass.data();
   const double *tl = tl_.data(), *td = td_.data(), *tu = tu_.data(), *off = off_.data();
   if (tridiagonal_ && n_ > 1) {

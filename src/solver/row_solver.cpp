@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <string>
 
 #include "core/error.hpp"
@@ -16,6 +17,33 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
+// QuinticHermite::absmax_bound() of every floor's displacement (out[i]) and of every storey's
+// drift (out[n + i]; below[i] = 1 where the storey joins floor i - 1, 0 where it stands on the
+// ground, so that the drift of a first storey is its floor's displacement) over a step of
+// length h from the values u, velocities v and accelerations a at both ends. The same
+// operations in the same order as absmax_bound() (no fused multiply-add), so the same bits; one
+// pass over the floors, compiled for AVX2 and the baseline, instead of a bound and a branch per
+// quintic (update_peaks refines only where a bound could raise a peak).
+__attribute__((target_clones("avx2", "default"))) void peak_bounds(
+    int n, const double* __restrict u0, const double* __restrict u1, const double* __restrict v0,
+    const double* __restrict v1, const double* __restrict a0, const double* __restrict a1,
+    const double* __restrict below, double h, double h2, double* __restrict out) {
+  auto bound = [](double g0, double g1, double m0, double m1, double c0, double c1) {
+    return (std::max(std::fabs(g0), std::fabs(g1)) + 16.0 / 81.0 * (std::fabs(m0) + std::fabs(m1)) +
+            54.0 / 3125.0 * (std::fabs(c0) + std::fabs(c1))) *
+           (1.0 + 1e-12);
+  };
+  for (int i = 0; i < n; ++i)
+    out[i] = bound(u0[i], u1[i], h * v0[i], h * v1[i], h2 * a0[i], h2 * a1[i]);
+  if (n > 0) out[n] = out[0];  // floor 0 stands on the ground
+  for (int i = 1; i < n; ++i) {
+    const double w = below[i];
+    out[n + i] = bound(u0[i] - w * u0[i - 1], u1[i] - w * u1[i - 1],
+                       h * v0[i] - w * (h * v0[i - 1]), h * v1[i] - w * (h * v1[i - 1]),
+                       h2 * a0[i] - w * (h2 * a0[i - 1]), h2 * a1[i] - w * (h2 * a1[i - 1]));
+  }
+}
+
 // Switching events. A switch is a function of the state that changes the equations where it
 // rises through zero: a contact starting (delta) or ending (-delta), and the kinks of a
 // piecewise storey law (hysteresis/storey_law.hpp: yielding, unloading). Switches 0..ns-1 are
@@ -27,7 +55,18 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 class Solver {
  public:
   Solver(const RowProblem& p, const IntegratorSettings& s);
-  RowResult run();
+  // The pounding run forked from a free run (solve_free_and_pounding): the free solver's state
+  // at the top of the loop iteration whose step it was accepting, with the contacts of
+  // `pounding` (the same problem with its laws) switched on.
+  Solver(const Solver& free, const RowProblem& pounding);
+  RowResult run();      // from the initial state
+  RowResult advance();  // from the current state to the end
+  // A free run to fork into `pounding` at the start of the first step in which a site comes
+  // within kForkMargin of touching (before run()).
+  void fork_into(const RowProblem* pounding) { fork_to_ = pounding; }
+  const std::shared_ptr<Solver>& fork() const { return fork_; }
+  // Whether the fork was armed (every site open by more than kForkMargin at the start).
+  bool fork_armed() const { return fork_armed_; }
 
  private:
   enum class Located { none, retry, applied };
@@ -48,7 +87,7 @@ class Solver {
       double f = 0.0;
       if (active_[i]) {
         const double d = gap_function(y, i);
-        f = p_.laws[i]->force(d, gap_rate(y, i), v0_[i]);
+        f = p_->laws[i]->force(d, gap_rate(y, i), v0_[i]);
       }
       force_(i) = f;
     }
@@ -125,6 +164,7 @@ class Solver {
   void finish();
   void update_peaks(const Eigen::VectorXd& y0, const Eigen::VectorXd& y1,
                     const Eigen::VectorXd& dy0, const Eigen::VectorXd& dy1, double h);
+  void fork_if_near_contact(const Eigen::VectorXd& y0, const Eigen::VectorXd& y1, double h);
   void record(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& dy);
   void check_finite(double t, const Eigen::VectorXd& y) const {
     if (!y.allFinite())
@@ -132,11 +172,14 @@ class Solver {
                            " s (the response diverged; check stiffness, masses and step)");
   }
 
-  const RowProblem& p_;
+  const RowProblem* p_;
   const IntegratorSettings& s_;
   const AssembledRow& row_;
   const int n_, ns_;
-  std::vector<RowStorey> storeys_;  // the row's, or elastic ones for a hand-built row
+  // The row's storeys, or elastic ones for a hand-built row: shared by a solver and its fork
+  // (never changed), so that forces_ of either refers to a live vector.
+  std::shared_ptr<const std::vector<RowStorey>> storeys_owner_;
+  const std::vector<RowStorey>& storeys_;
   const bool linear_, track_, fixed_;
   bool affine_ = false;  // every storey law piecewise linear: f = K_t u + offsets (bands below)
   bool pounding_ = false;
@@ -155,6 +198,8 @@ class Solver {
   // Per storey the drift interval in which its switches cannot fire [m].
   std::vector<char> has_safe_;
   std::vector<double> safe_lo_, safe_hi_;
+  std::vector<double> below_;   // per DOF: 1 where its storey joins floor DOF - 1, 0 on the ground
+  std::vector<double> bounds_;  // scratch of update_peaks: the peak bounds (peak_bounds)
   Dopri5Work work_;
   RowResult r_;
 
@@ -173,6 +218,20 @@ class Solver {
   Eigen::MatrixXd k_scratch_;  // the current stiffness, to look up its entry [N/m]
   std::vector<int> visits_;    // per entry: grid points of this run met with its stiffness
 
+  // The fork of a free run (solve_free_and_pounding). Until a site comes within kForkMargin of
+  // touching, the pounding run's steps are the free run's (no contact is active, no contact
+  // switch can fire, and every site is open by more than contacts_open()'s 1 nm), so the
+  // pounding run starts from the free run's state there. The margin is ten times the cubic
+  // interpolant's error over a step of T_min / 20 (about 1e-7 m, docs/integration.md), so that
+  // the pounding run's own interpolants do not see a crossing before it either. declined_at_top_
+  // and visited_ undo what the current loop iteration changed before its step was accepted.
+  static constexpr double kForkMargin = 1e-6;  // [m]
+  const RowProblem* fork_to_ = nullptr;
+  bool fork_armed_ = false;
+  std::shared_ptr<Solver> fork_;
+  long declined_at_top_ = -1;
+  int visited_ = -1;  // the cache entry whose visits this iteration counted (-1: none)
+
   // Integration state.
   double t_ = 0.0, h_ = 0.0, h_max_ = 0.0, rec_dt_ = 0.0;
   long grid_ = 0, next_sample_ = 1;
@@ -181,17 +240,18 @@ class Solver {
 };
 
 Solver::Solver(const RowProblem& p, const IntegratorSettings& s)
-    : p_(p),
+    : p_(&p),
       s_(s),
       row_(*p.row),
       n_(row_.dofs()),
       ns_(static_cast<int>(row_.sites.size())),
+      storeys_owner_(std::make_shared<const std::vector<RowStorey>>(
+          static_cast<int>(row_.storeys.size()) == n_ ? row_.storeys : elastic_storeys(row_))),
+      storeys_(*storeys_owner_),
       linear_(row_.linear),
       track_(p.track_energy),
       fixed_(s.control == StepControl::fixed),
       forces_(row_, storeys_) {
-  storeys_ = row_.storeys;
-  if (static_cast<int>(storeys_.size()) != n_) storeys_ = elastic_storeys(row_);
   pounding_ = !p.laws.empty();
   if (pounding_ && static_cast<int>(p.laws.size()) != ns_)
     throw std::logic_error("one contact law per site expected");
@@ -215,6 +275,14 @@ Solver::Solver(const RowProblem& p, const IntegratorSettings& s)
   has_safe_.assign(n_, 0);
   safe_lo_.assign(n_, 0.0);
   safe_hi_.assign(n_, 0.0);
+  below_.assign(n_, 0.0);
+  for (int i = 0; i < n_; ++i) {  // a row's floors stand on the floor before them or the ground
+    const int b = storeys_[i].below;
+    if (b != -1 && b != i - 1)
+      throw std::logic_error("storey below floor DOF " + std::to_string(i));
+    below_[i] = b < 0 ? 0.0 : 1.0;
+  }
+  bounds_.assign(2 * n_, 0.0);
   iJ_ = 2 * n_ + nx_;
   iE_ = iJ_ + ns_;
   N_ = iE_ + (track_ ? 3 : 0);
@@ -225,14 +293,14 @@ Solver::Solver(const RowProblem& p, const IntegratorSettings& s)
 
 void Solver::rhs(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy) {
   contact_forces(y);
-  const double ag = p_.motion ? p_.motion->at(t) : 0.0;
+  const double ag = p_->motion ? p_->motion->at(t) : 0.0;
   dy.resize(N_);
   const double* u = y.data();
   const double* v = u + n_;
   const double* im = row_.inv_mass.data();
   double* du = dy.data();
   double* dv = du + n_;
-  for (int i = 0; i < n_; ++i) du[i] = v[i];
+  std::copy(v, v + n_, du);
   if (linear_)
     forces_.linear(u, v, ag, dv);
   else if (affine_)
@@ -517,7 +585,7 @@ void Solver::apply_contact_event(int i, double t, Eigen::VectorXd& y) {
     return;
   }
   const double rate = gap_rate(y, i);
-  const ContactLaw& law = *p_.laws[i];
+  const ContactLaw& law = *p_->laws[i];
   guard_chatter(i, t, [&] {
     return "contact site " + std::to_string(i) + " (pair " +
            std::to_string(row_.sites[i].pair + 1) + ", floor " +
@@ -552,7 +620,7 @@ void Solver::apply_contact_event(int i, double t, Eigen::VectorXd& y) {
 
 void Solver::record(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& dy) {
   // Absolute acceleration u'' + ag = M^-1 (P - C v - f): dy already holds u'' = that - ag.
-  const double ag = p_.motion ? p_.motion->at(t) : 0.0;
+  const double ag = p_->motion ? p_->motion->at(t) : 0.0;
   for (int i = 0; i < n_; ++i) {
     const double a = dy(n_ + i) + ag;
     r_.peak_abs_accel(i) = std::max(r_.peak_abs_accel(i), std::fabs(a));
@@ -562,7 +630,7 @@ void Solver::record(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& d
     auto& sr = r_.sites[i];
     if (active_[i]) sr.peak_force = std::max(sr.peak_force, force_(i));
   }
-  if (p_.record_history) {
+  if (p_->record_history) {
     r_.history.t.push_back(t);
     r_.history.u.push_back(y.head(n_));
     r_.history.a_abs.push_back(dy.segment(n_, n_).array() + ag);
@@ -578,16 +646,23 @@ void Solver::update_peaks(const Eigen::VectorXd& y0, const Eigen::VectorXd& y1,
   // Displacement and drift extrema inside the step from the quintic Hermite interpolant of the
   // displacements, velocities and accelerations at both ends (sixth-order accurate: exact steps
   // of h_max = T_min / 20 leave the peaks within 1e-8 of the motion between them).
+  if (fork_armed_ && !fork_) fork_if_near_contact(y0, y1, h);
   const double h2 = h * h;
-  for (int i = 0; i < n_; ++i) {
+  const double* bound = bounds_.data();
+  peak_bounds(n_, y0.data(), y1.data(), y0.data() + n_, y1.data() + n_, dy0.data() + n_,
+              dy1.data() + n_, below_.data(), h, h2, bounds_.data());
+  for (int i = 0; i < n_; ++i) {  // QuinticHermite::raise_peak, its bound from peak_bounds
+    const bool disp = !(bound[i] <= r_.peak_disp(i)), drift = !(bound[n_ + i] <= r_.peak_drift(i));
+    if (!disp && !drift) continue;
     const QuinticHermite c{y0(i),           y1(i), h * y0(n_ + i), h * y1(n_ + i), h2 * dy0(n_ + i),
                            h2 * dy1(n_ + i)};
-    r_.peak_disp(i) = c.raise_peak(r_.peak_disp(i));
+    if (disp) r_.peak_disp(i) = c.refine_peak(r_.peak_disp(i));
     const int b = storeys_[i].below;
     if (b < 0) {  // a first storey: its drift is the floor's displacement
       r_.peak_drift(i) = r_.peak_disp(i);
       continue;
     }
+    if (!drift) continue;
     QuinticHermite d = c;
     d.g0 -= y0(b);
     d.g1 -= y1(b);
@@ -595,7 +670,7 @@ void Solver::update_peaks(const Eigen::VectorXd& y0, const Eigen::VectorXd& y1,
     d.m1 -= h * y1(n_ + b);
     d.c0 -= h2 * dy0(n_ + b);
     d.c1 -= h2 * dy1(n_ + b);
-    r_.peak_drift(i) = d.raise_peak(r_.peak_drift(i));
+    r_.peak_drift(i) = d.refine_peak(r_.peak_drift(i));
   }
   for (int i = 0; i < ns_; ++i) {
     if (!active_[i]) continue;
@@ -614,6 +689,36 @@ void Solver::update_peaks(const Eigen::VectorXd& y0, const Eigen::VectorXd& y1,
     if (std::max(c.g0, c.g1) + 4.0 / 27.0 * (std::fabs(c.m0) + std::fabs(c.m1)) > peak)
       peak = std::max(peak, c.max_over_step());
   }
+}
+
+// Called with the step (t_, y_) -> (t_ + h, y1) about to be accepted, before it changes anything
+// but scratch: forks the pounding run when a site's gap function, on the interpolant the contact
+// events are located on (find_event), rises above -kForkMargin in the step.
+void Solver::fork_if_near_contact(const Eigen::VectorXd& y0, const Eigen::VectorXd& y1, double h) {
+  for (int i = 0; i < ns_; ++i) {
+    const Hermite c{gap_function(y0, i) + kForkMargin, gap_function(y1, i) + kForkMargin,
+                    h * gap_rate(y0, i), h * gap_rate(y1, i)};
+    if (std::max(c.g0, c.g1) + 4.0 / 27.0 * (std::fabs(c.m0) + std::fabs(c.m1)) > 0.0 &&
+        c.max_over_step() > 0.0) {
+      fork_ = std::make_shared<Solver>(*this, *fork_to_);
+      return;
+    }
+  }
+}
+
+Solver::Solver(const Solver& free, const RowProblem& pounding) : Solver(free) {
+  if (static_cast<int>(pounding.laws.size()) != ns_)
+    throw std::logic_error("one contact law per site expected");
+  p_ = &pounding;
+  pounding_ = true;
+  fork_to_ = nullptr;
+  fork_armed_ = false;
+  fork_.reset();
+  if (free.cache_ == &free.own_cache_) cache_ = &own_cache_;
+  if (visited_ >= 0) --visits_[visited_];
+  exact_declined_ = declined_at_top_;
+  r_.sites.assign(ns_, SiteResult{});
+  r_.steps_from_free = r_.steps;
 }
 
 // A rejected step: the next try from t has length hn [s].
@@ -641,10 +746,13 @@ void Solver::start() {
   chatter_.assign(ns_ + sw_.size(), 0);
   for (auto* v : {&y1_, &err_, &k1_, &k7_, &ytry_, &etry_, &ktry_}) v->resize(N_);
   y_ = Eigen::VectorXd::Zero(N_);
-  if (p_.u0.size()) y_.head(n_) = p_.u0;
-  if (p_.v0.size()) y_.segment(n_, n_) = p_.v0;
+  if (p_->u0.size()) y_.head(n_) = p_->u0;
+  if (p_->v0.size()) y_.segment(n_, n_) = p_->v0;
   for (int i = 0; i < ns_ && !pounding_; ++i)
     r_.sites[i].peak_approach = y_(row_.sites[i].dof_left) - y_(row_.sites[i].dof_right);
+  fork_armed_ = fork_to_ != nullptr && !pounding_;
+  for (int i = 0; i < ns_ && fork_armed_; ++i)
+    fork_armed_ = gap_function(y_, i) + kForkMargin < 0.0;
   // Storeys loaded monotonically from rest to the initial drifts.
   for (int i = 0; i < n_ && !linear_; ++i) {
     const RowStorey& st = storeys_[i];
@@ -657,10 +765,10 @@ void Solver::start() {
     for (int i = 0; i < per.size(); ++i)
       if (per(i) > 0) tmin_period = std::min(tmin_period, per(i));
   h_max_ = s_.h_max > 0 ? s_.h_max : tmin_period / 20.0;
-  rec_dt_ = p_.motion ? p_.motion->dt : 0.0;
+  rec_dt_ = p_->motion ? p_->motion->dt : 0.0;
   if (s_.h_max <= 0 && rec_dt_ > 0) h_max_ = std::min(h_max_, rec_dt_);
   const bool h_max_known = std::isfinite(h_max_);
-  if (!h_max_known) h_max_ = std::max(p_.t_end, 1e-6);
+  if (!h_max_known) h_max_ = std::max(p_->t_end, 1e-6);
   // Exact steps for rows that are linear between events (no storey state integrated, no
   // energy balance), on a grid of h_max that holds every record sample.
   exact_ = s_.exact_free && !fixed_ && !track_ && h_max_known && (linear_ || affine_) && nx_ == 0;
@@ -668,7 +776,7 @@ void Solver::start() {
     h_sub_ = h_max_;
     if (rec_dt_ > 0) h_sub_ = rec_dt_ / std::ceil(rec_dt_ / h_max_ * (1 - 1e-12));
     sub_ = 0;
-    if (p_.exact_cache) cache_ = p_.exact_cache;
+    if (p_->exact_cache) cache_ = p_->exact_cache;
     if (cache_->row != &row_ || cache_->h != h_sub_) {
       cache_->entries.clear();
       cache_->row = &row_;
@@ -706,9 +814,10 @@ bool Solver::exact_setup() {
     }
     if (visits_.size() < entries.size()) visits_.resize(entries.size(), 0);
   }
-  if (visits_[config_] < ExactStepCache::kExactWarmup &&
-      ++visits_[config_] < ExactStepCache::kExactWarmup)
-    return false;
+  if (visits_[config_] < ExactStepCache::kExactWarmup) {
+    visited_ = config_;
+    if (++visits_[config_] < ExactStepCache::kExactWarmup) return false;
+  }
   ExactStepCache::Entry& e = entries[config_];
   if (!e.ready) {
     // z = [u; v], z' = A z + B w, w = [off; ag]: u' = v, v' = -M^-1 (K u + C v + off) - ag
@@ -764,9 +873,9 @@ bool Solver::exact_step() {
   // ag over the step: linear between its ends (the grid holds every record sample); zero on a
   // step after the record's last sample (GroundMotion::at).
   double a0 = 0.0, a1 = 0.0;
-  if (p_.motion && t_ + 0.5 * h < p_.motion->duration()) {
-    a0 = p_.motion->at(std::max(t_, 0.0));
-    a1 = p_.motion->at(std::min(t1, p_.motion->duration()));
+  if (p_->motion && t_ + 0.5 * h < p_->motion->duration()) {
+    a0 = p_->motion->at(std::max(t_, 0.0));
+    a1 = p_->motion->at(std::min(t1, p_->motion->duration()));
   }
   y1_ = y_;
   linear_step_apply(L, a0, a1, c_off_.data(), y_.data(), y1_.data());
@@ -789,7 +898,7 @@ bool Solver::exact_step() {
 
 // The next step ends at the next record sample, grid point or the end [s].
 double Solver::next_stop() {
-  double t_stop = p_.t_end;
+  double t_stop = p_->t_end;
   if (rec_dt_ > 0) {
     while (next_sample_ * rec_dt_ <= t_ * (1 + 1e-14) + 1e-15) ++next_sample_;
     t_stop = std::min(t_stop, next_sample_ * rec_dt_);
@@ -847,9 +956,15 @@ void Solver::finish() {
 
 RowResult Solver::run() {
   start();
-  const double t_end = p_.t_end;
+  return advance();
+}
+
+RowResult Solver::advance() {
+  const double t_end = p_->t_end;
   const bool events = pounding_ || !sw_.empty();
   while (t_ < t_end * (1 - 1e-14)) {
+    declined_at_top_ = exact_declined_;
+    visited_ = -1;
     if (r_.steps + r_.rejected > s_.max_steps)
       throw NumericalError("more than " + std::to_string(s_.max_steps) +
                            " steps by t = " + std::to_string(t_) + " s");
@@ -889,7 +1004,7 @@ RowResult Solver::run() {
       const Located l = locate(ev, theta, hs, en, trial_failed);
       if (l == Located::retry) continue;
       if (l == Located::applied) {
-        if (p_.stop_after_separation && any_contact_) {
+        if (p_->stop_after_separation && any_contact_) {
           bool all_open = true;
           for (int i = 0; i < ns_; ++i) all_open = all_open && !active_[i] && gap_rate(y_, i) < 0.0;
           if (all_open) break;
@@ -912,6 +1027,29 @@ RowResult Solver::run() {
 RowResult solve(const RowProblem& p, const IntegratorSettings& s) {
   Solver solver(p, s);
   return solver.run();
+}
+
+RunPair solve_free_and_pounding(const RowProblem& p, const IntegratorSettings& s) {
+  RowProblem free = p, pounding = p;
+  free.laws.clear();
+  ExactStepCache cache;  // the free run's propagators serve the pounding run too
+  if (!p.exact_cache) free.exact_cache = pounding.exact_cache = &cache;
+  Solver fs(free, s);
+  if (!pounding.laws.empty()) fs.fork_into(&pounding);
+  RunPair out;
+  out.free = fs.run();
+  if (pounding.laws.empty()) {
+    out.pounding = out.free;  // the same problem
+  } else if (fs.fork()) {
+    out.pounding = fs.fork()->advance();
+  } else if (fs.fork_armed()) {  // no site came near touching: the runs are one
+    out.pounding = out.free;
+    out.pounding.sites.assign(p.row->sites.size(), SiteResult{});
+    out.pounding.steps_from_free = out.pounding.steps;
+  } else {  // a site touching at the start
+    out.pounding = Solver(pounding, s).run();
+  }
+  return out;
 }
 
 }  // namespace pound

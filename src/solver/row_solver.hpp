@@ -65,6 +65,9 @@ struct RowResult {
   double t_end = 0.0;                 ///< time reached [s]
   long steps = 0, rejected = 0, events = 0;
   long exact_steps = 0;  ///< of `steps`, exact steps of the linear system (linear_step.hpp)
+  /// Of `steps`, those the pounding run shares with the free run (solve_free_and_pounding:
+  /// taken once, before the pounding run's first approach within 1 um of a contact).
+  long steps_from_free = 0;
   History history;
 };
 
@@ -104,5 +107,23 @@ struct RowProblem {
 /// Integrates the problem. Throws NumericalError on a non-finite state, step-size underflow or
 /// an accumulation of instantaneous impacts (chatter).
 RowResult solve(const RowProblem& p, const IntegratorSettings& s);
+
+struct RunPair {
+  RowResult free;      ///< without contacts (as solve() of p without its laws)
+  RowResult pounding;  ///< with p's contact laws (as solve(p))
+};
+
+/// The runs of a sample without and with its contacts (p.laws: one per site), their common part
+/// integrated once: until a site first comes within 1 um of touching (on the interpolant of the
+/// free run's step, on which contact events are located), no contact is active and no contact
+/// switch can fire, so the pounding run's steps are the free run's; it continues from the free
+/// run's state at the start of that step. When no site comes that near, the two runs are one.
+/// The free run is solve()'s without the laws, bit for bit. The pounding run is solve(p)'s bit
+/// for bit as long as solve(p) took the free run's steps up to there; a rejected trial step
+/// whose (inaccurate) interpolant crossed a gap can make solve(p) choose other step sizes before
+/// its first contact, and then the two agree to the integration tolerance (docs/speed.md).
+/// The propagators of exact steps are shared (p.exact_cache, or one of the call's own). Throws
+/// as solve().
+RunPair solve_free_and_pounding(const RowProblem& p, const IntegratorSettings& s);
 
 }  // namespace pound

@@ -6,7 +6,9 @@
 #include <cstdio>
 
 #include "../support/allocation_counter.hpp"
+#include "../support/buildings.hpp"
 #include "contact/registry.hpp"
+#include "motion/motion_reader.hpp"
 
 namespace pound {
 namespace {
@@ -254,6 +256,114 @@ TEST(RowSolver, TimeLoopDoesNotAllocate) {
   ASSERT_GT(events20 - events2, 50);
   EXPECT_GT(a2, 0);  // the counter works: set-up allocates
   EXPECT_EQ(a20, a2) << steps2 << " and " << steps20 << " steps";
+}
+
+// solve_free_and_pounding against the two runs solved apart: the chapter 8 pair (elastic, or
+// with bilinear storeys yielding at a base-shear coefficient of about 0.2) under the first 6 s
+// of El Centro with `gap` at its three sites, hc-linear contacts, histories recorded.
+struct ForkedRuns {
+  RunPair pair;
+  RowResult free, pounding;  // solve() of each
+};
+ForkedRuns forked_and_apart(double gap, bool yielding) {
+  BuildingRow row = test::chapter8_pair(gap);
+  if (yielding) {
+    row.buildings[0].hysteresis = row.buildings[1].hysteresis = "bilinear";
+    row.buildings[0].yield_shears.assign(5, 4.5e5);
+    row.buildings[1].yield_shears.assign(3, 1.7e5);
+  }
+  const AssembledRow a = assemble(row);
+  MotionFileSpec spec;
+  spec.path = std::string(POUND_SOURCE_DIR) + "/motions/elcentro-1940-ns.dat";
+  GroundMotion g = read_motion(spec);
+  g.accel.resize(static_cast<std::size_t>(6.0 / g.dt) + 1);
+  ContactParameters cp;
+  cp.k = 50 * 8.4e7;
+  cp.e = 0.6;
+  cp.m1 = 48e3;
+  cp.m2 = 29e3;
+  const auto law = find_contact_model("hc-linear", "t").make(cp);
+  RowProblem p;
+  p.row = &a;
+  p.motion = &g;
+  p.t_end = g.duration() + 1.0;
+  p.record_history = true;
+  p.laws.assign(a.sites.size(), law.get());
+  ForkedRuns out;
+  out.pair = solve_free_and_pounding(p, {});
+  out.pounding = solve(p, {});
+  p.laws.clear();
+  out.free = solve(p, {});
+  return out;
+}
+
+void expect_same_run(const RowResult& x, const RowResult& y, const char* what) {
+  SCOPED_TRACE(what);
+  EXPECT_EQ(x.steps, y.steps);
+  EXPECT_EQ(x.rejected, y.rejected);
+  EXPECT_EQ(x.events, y.events);
+  EXPECT_EQ(x.exact_steps, y.exact_steps);
+  for (int i = 0; i < x.peak_disp.size(); ++i) {  // bit for bit
+    EXPECT_EQ(x.peak_disp(i), y.peak_disp(i)) << i;
+    EXPECT_EQ(x.peak_drift(i), y.peak_drift(i)) << i;
+    EXPECT_EQ(x.peak_abs_accel(i), y.peak_abs_accel(i)) << i;
+    EXPECT_EQ(x.u_end(i), y.u_end(i)) << i;
+  }
+  ASSERT_EQ(x.sites.size(), y.sites.size());
+  for (std::size_t k = 0; k < x.sites.size(); ++k) {
+    const SiteResult &a = x.sites[k], &b = y.sites[k];
+    EXPECT_EQ(a.impacts, b.impacts) << k;
+    EXPECT_EQ(a.peak_force, b.peak_force) << k;
+    EXPECT_EQ(a.peak_penetration, b.peak_penetration) << k;
+    EXPECT_EQ(a.impulse, b.impulse) << k;
+    EXPECT_EQ(a.first_contact, b.first_contact) << k;
+    EXPECT_EQ(a.last_separation, b.last_separation) << k;
+    EXPECT_EQ(std::isnan(a.peak_approach), std::isnan(b.peak_approach)) << k;
+    if (!std::isnan(a.peak_approach)) EXPECT_EQ(a.peak_approach, b.peak_approach) << k;
+  }
+  ASSERT_EQ(x.history.t.size(), y.history.t.size());
+  for (std::size_t j = 0; j < x.history.t.size(); ++j) {
+    ASSERT_EQ(x.history.t[j], y.history.t[j]) << j;
+    ASSERT_EQ(x.history.u[j], y.history.u[j]) << j;
+    ASSERT_EQ(x.history.force[j], y.history.force[j]) << j;
+  }
+}
+
+TEST(RowSolver, PoundingRunForkedFromTheFreeRunIsItsOwnSolveBitForBit) {
+  // Contacts from about 2 s on (elastic and yielding storeys): the pounding run continues from
+  // the free run's state shortly before the first contact, and both runs are those solved apart.
+  for (const bool yielding : {false, true}) {
+    SCOPED_TRACE(yielding ? "bilinear storeys" : "elastic storeys");
+    const ForkedRuns r = forked_and_apart(0.01, yielding);
+    double first = 1e9;
+    for (const auto& s : r.pounding.sites)
+      if (s.first_contact >= 0) first = std::min(first, s.first_contact);
+    ASSERT_GT(first, 1.0);
+    ASSERT_LT(first, 5.0);
+    expect_same_run(r.pair.free, r.free, "free");
+    expect_same_run(r.pair.pounding, r.pounding, "pounding");
+    // The shared part: the free run's steps up to shortly before the first contact.
+    EXPECT_EQ(r.pounding.steps_from_free, 0);
+    EXPECT_GT(r.pair.pounding.steps_from_free, 0.9 * first / 3.34e-3);
+    long before = 0;
+    for (double t : r.pounding.history.t) before += t < first;
+    EXPECT_LT(r.pair.pounding.steps_from_free, before);
+  }
+}
+
+TEST(RowSolver, ForkedPoundingRunWithoutContactIsTheFreeRun) {
+  // A gap no motion closes: one run serves both; a zero gap touches at t = 0: no fork, the
+  // pounding run is solved from the start.
+  const ForkedRuns wide = forked_and_apart(0.5, true);
+  expect_same_run(wide.pair.free, wide.free, "wide, free");
+  expect_same_run(wide.pair.pounding, wide.pounding, "wide, pounding");
+  EXPECT_EQ(wide.pair.pounding.steps_from_free, wide.pair.pounding.steps);
+  for (const auto& s : wide.pair.pounding.sites) EXPECT_EQ(s.impacts, 0);
+  const ForkedRuns zero = forked_and_apart(0.0, false);
+  expect_same_run(zero.pair.free, zero.free, "zero, free");
+  expect_same_run(zero.pair.pounding, zero.pounding, "zero, pounding");
+  EXPECT_EQ(zero.pair.pounding.steps_from_free, 0);
+  EXPECT_GT(zero.pair.pounding.sites[0].impacts, 10);
 }
 
 }  // namespace
