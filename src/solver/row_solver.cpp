@@ -917,8 +917,8 @@ double Solver::next_stop() {
 // Accepts the trial step (y_ -> y1_) and chooses the next step length.
 void Solver::accept(double hs, double en, double t_stop) {
   update_peaks(y_, y1_, k1_, k7_, hs);
-  y_ = y1_;
-  k1_ = k7_;
+  y_.swap(y1_);  // y1_ and k7_ are the next trial's scratch
+  k1_.swap(k7_);
   t_ += hs;
   if (t_stop - t_ < 1e-14 * std::max(1.0, t_)) t_ = t_stop;
   ++r_.steps;

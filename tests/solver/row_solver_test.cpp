@@ -319,7 +319,9 @@ void expect_same_run(const RowResult& x, const RowResult& y, const char* what) {
     EXPECT_EQ(a.first_contact, b.first_contact) << k;
     EXPECT_EQ(a.last_separation, b.last_separation) << k;
     EXPECT_EQ(std::isnan(a.peak_approach), std::isnan(b.peak_approach)) << k;
-    if (!std::isnan(a.peak_approach)) EXPECT_EQ(a.peak_approach, b.peak_approach) << k;
+    if (!std::isnan(a.peak_approach)) {
+      EXPECT_EQ(a.peak_approach, b.peak_approach) << k;
+    }
   }
   ASSERT_EQ(x.history.t.size(), y.history.t.size());
   for (std::size_t j = 0; j < x.history.t.size(); ++j) {
