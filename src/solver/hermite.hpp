@@ -57,9 +57,14 @@ struct Hermite {
     for (int i = 0; i < n; ++i) m = std::max(m, std::fabs(at(s[i])));
     return m;
   }
-  // Upper bound of |value| over the step: the basis functions of g0 and g1 are >= 0 and sum to
-  // 1, those of m0 and m1, theta (1 - theta)^2 and theta^2 (theta - 1), are at most 4/27 in
-  // magnitude. The factor 1 + 1e-12 covers the round-off of at().
+  // Upper bound of the value over the step, for a quick test before max_over_step(): the basis
+  // functions of g0 and g1 are >= 0 and sum to 1, those of m0 and m1, theta (1 - theta)^2 and
+  // theta^2 (theta - 1), are at most 4/27 in magnitude.
+  double upper_bound() const {
+    return std::max(g0, g1) + 4.0 / 27.0 * (std::fabs(m0) + std::fabs(m1));
+  }
+  // Upper bound of |value| over the step (the same basis bounds). The factor 1 + 1e-12 covers
+  // the round-off of at().
   double absmax_bound() const {
     return (std::max(std::fabs(g0), std::fabs(g1)) + 4.0 / 27.0 * (std::fabs(m0) + std::fabs(m1))) *
            (1.0 + 1e-12);
@@ -98,7 +103,9 @@ struct QuinticHermite {
   Hermite cubic() const { return {g0, g1, m0, m1}; }
   // Upper bound of |value| over the step: the basis functions of g0 and g1 are >= 0 and sum to
   // 1; those of m0 and m1 are at most 16/81 in magnitude, those of c0 and c1 at most 54/3125.
-  double absmax_bound() const {
+  double absmax_bound() const { return absmax_bound(g0, g1, m0, m1, c0, c1); }
+  // The same from the six coefficients (row_solver's peak_bounds: every floor in one pass).
+  static double absmax_bound(double g0, double g1, double m0, double m1, double c0, double c1) {
     return (std::max(std::fabs(g0), std::fabs(g1)) + 16.0 / 81.0 * (std::fabs(m0) + std::fabs(m1)) +
             54.0 / 3125.0 * (std::fabs(c0) + std::fabs(c1))) *
            (1.0 + 1e-12);

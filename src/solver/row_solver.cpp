@@ -20,18 +20,16 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // QuinticHermite::absmax_bound() of every floor's displacement (out[i]) and of every storey's
 // drift (out[n + i]; below[i] = 1 where the storey joins floor i - 1, 0 where it stands on the
 // ground, so that the drift of a first storey is its floor's displacement) over a step of
-// length h from the values u, velocities v and accelerations a at both ends. The same
-// operations in the same order as absmax_bound() (no fused multiply-add), so the same bits; one
-// pass over the floors, compiled for AVX2 and the baseline, instead of a bound and a branch per
-// quintic (update_peaks refines only where a bound could raise a peak).
+// length h from the values u, velocities v and accelerations a at both ends. One pass over the
+// floors, compiled for AVX2 and the baseline (no fused multiply-add, so the same bits), instead
+// of a bound and a branch per quintic (update_peaks refines only where a bound could raise a
+// peak).
 __attribute__((target_clones("avx2", "default"))) void peak_bounds(
     int n, const double* __restrict u0, const double* __restrict u1, const double* __restrict v0,
     const double* __restrict v1, const double* __restrict a0, const double* __restrict a1,
     const double* __restrict below, double h, double h2, double* __restrict out) {
-  auto bound = [](double g0, double g1, double m0, double m1, double c0, double c1) {
-    return (std::max(std::fabs(g0), std::fabs(g1)) + 16.0 / 81.0 * (std::fabs(m0) + std::fabs(m1)) +
-            54.0 / 3125.0 * (std::fabs(c0) + std::fabs(c1))) *
-           (1.0 + 1e-12);
+  const auto bound = [](double g0, double g1, double m0, double m1, double c0, double c1) {
+    return QuinticHermite::absmax_bound(g0, g1, m0, m1, c0, c1);
   };
   for (int i = 0; i < n; ++i)
     out[i] = bound(u0[i], u1[i], h * v0[i], h * v1[i], h2 * a0[i], h2 * a1[i]);
@@ -391,9 +389,7 @@ int Solver::find_event(const Eigen::VectorXd& y0, const Eigen::VectorXd& y1,
       }
     }
     const Hermite c = switch_hermite(k, y0, y1, dy0, dy1, h);
-    // The cubic stays below max(g0, g1) + 4/27 (|m0| + |m1|) (Hermite::absmax_bound): no
-    // crossing when that is negative.
-    if (std::max(c.g0, c.g1) + 4.0 / 27.0 * (std::fabs(c.m0) + std::fabs(c.m1)) < 0.0) continue;
+    if (c.upper_bound() < 0.0) continue;  // no crossing
     bool ev;
     if (k < ns_ && !active_[k] && c.g0 > 0.0)  // across within the location tolerance: only
       ev = c.m0 > 0.0 || c.g1 > c.g0;          // a renewed approach counts
@@ -686,8 +682,7 @@ void Solver::update_peaks(const Eigen::VectorXd& y0, const Eigen::VectorXd& y1,
     const Hermite c{y0(s.dof_left) - y0(s.dof_right), y1(s.dof_left) - y1(s.dof_right),
                     h * gap_rate(y0, i), h * gap_rate(y1, i)};
     double& peak = r_.sites[i].peak_approach;
-    if (std::max(c.g0, c.g1) + 4.0 / 27.0 * (std::fabs(c.m0) + std::fabs(c.m1)) > peak)
-      peak = std::max(peak, c.max_over_step());
+    if (c.upper_bound() > peak) peak = std::max(peak, c.max_over_step());
   }
 }
 
@@ -698,8 +693,7 @@ void Solver::fork_if_near_contact(const Eigen::VectorXd& y0, const Eigen::Vector
   for (int i = 0; i < ns_; ++i) {
     const Hermite c{gap_function(y0, i) + kForkMargin, gap_function(y1, i) + kForkMargin,
                     h * gap_rate(y0, i), h * gap_rate(y1, i)};
-    if (std::max(c.g0, c.g1) + 4.0 / 27.0 * (std::fabs(c.m0) + std::fabs(c.m1)) > 0.0 &&
-        c.max_over_step() > 0.0) {
+    if (c.upper_bound() > 0.0 && c.max_over_step() > 0.0) {
       fork_ = std::make_shared<Solver>(*this, *fork_to_);
       return;
     }
