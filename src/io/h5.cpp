@@ -202,6 +202,17 @@ std::string declared_values_problem(hid_t ds, hsize_t count, std::size_t file_by
   const hid_t plist = H5Dget_create_plist(ds);
   if (plist < 0) return "has no readable storage layout";
   const int filters = H5Pget_nfilters(plist);
+  // Whether every filter is one whose output is at most 1032 times smaller than its input:
+  // deflate (zlib's limit), shuffle and the Fletcher checksum (neither shrinks).
+  bool deflate_only = true;
+  for (int i = 0; i < filters; ++i) {
+    unsigned flags = 0;
+    std::size_t nvalues = 0;
+    const H5Z_filter_t id =
+        H5Pget_filter2(plist, unsigned(i), &flags, &nvalues, nullptr, 0, nullptr, nullptr);
+    deflate_only = deflate_only && (id == H5Z_FILTER_DEFLATE || id == H5Z_FILTER_SHUFFLE ||
+                                    id == H5Z_FILTER_FLETCHER32);
+  }
   hsize_t chunk[H5S_MAX_RANK];
   const int chunk_rank =
       H5Pget_layout(plist) == H5D_CHUNKED ? H5Pget_chunk(plist, H5S_MAX_RANK, chunk) : -1;
@@ -231,6 +242,14 @@ std::string declared_values_problem(hid_t ds, hsize_t count, std::size_t file_by
     needed = n != 0 && needed > ~hsize_t{0} / n ? ~hsize_t{0} : needed * n;
   }
   if (chunks < needed) return not_stored;
+  // A damaged chunk may declare 4 GB it does not hold: gzip unpacks to at most 1032 times what
+  // it stores (1100 with the chunks' headers), so more values than that are not in the file
+  // (read, they would take that memory before H5Dread found the chunk damaged).
+  const hsize_t stored = H5Dget_storage_size(ds);
+  const hsize_t most = stored > ~hsize_t{0} / 1100 ? ~hsize_t{0} : stored * 1100;
+  if (deflate_only && (file_bytes == 0 || count > most / file_bytes))
+    return "declares " + std::to_string(count) + " values in " + std::to_string(stored) +
+           " compressed bytes, more than gzip unpacks them to";
   // A chunk may decompress to far more than it stores: the values must fit in this machine's
   // memory.
   const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGESIZE);

@@ -64,7 +64,8 @@ std::string root_attribute_text(hid_t file, const std::string& name);
 /// store (found by fuzz_campaign_file): a dataset stored as it is must hold the bytes of every
 /// value. A filtered one (gzip, as `h5repack -f GZIP=6` leaves it) stores fewer bytes than its
 /// values take, so its size says nothing: it must hold every chunk that covers its values, and
-/// these must fit in this machine's memory; H5Dread then decompresses them (and fails on a
+/// these must fit in this machine's memory and, with gzip alone, in 1100 times the bytes the
+/// file stores (zlib unpacks at most 1032 times); H5Dread then decompresses them (and fails on a
 /// damaged chunk).
 std::string declared_values_problem(hid_t ds, hsize_t count, std::size_t file_bytes,
                                     std::size_t memory_bytes);

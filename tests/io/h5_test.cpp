@@ -81,7 +81,9 @@ TEST(H5, AnAttributeOfSeveralValuesReadsAsAbsent) {
 // A dataset compressed with gzip (as `h5repack -f GZIP=6` leaves a result file) stores fewer
 // bytes than its values take; it was refused as "declares N values but the file does not store
 // them". It is read whole, the same values. One whose chunks are not all in the file (2^60 rows
-// declared, or a chunk never written) is still refused in one line (not a std::length_error).
+// declared, or a chunk never written) is still refused in one line (not a std::length_error),
+// and so is one whose chunk stores far fewer bytes than gzip could unpack its values from (found
+// in review: 128 MB were allocated before H5Dread failed on the chunk).
 TEST(H5, ACompressedDatasetIsReadWholeAndOneWithoutItsChunksRefused) {
   const std::string path = test::process_scratch_dir() / "compressed.h5";
   std::vector<double> x(4000);
@@ -118,6 +120,15 @@ TEST(H5, ACompressedDatasetIsReadWholeAndOneWithoutItsChunksRefused) {
               k.size() * 4 / 4);
     compressed("/huge", H5T_NATIVE_DOUBLE, hsize_t{1} << 60, 1024, nullptr, 0);
     compressed("/part", H5T_NATIVE_DOUBLE, x.size(), 1000, x.data(), 1000);  // 1 of 4 chunks
+    // One gzip chunk of 2^24 values (128 MB) stored as 64 bytes, as a damaged file may hold:
+    // gzip cannot unpack that much from them.
+    const hsize_t rows = hsize_t{1} << 24, offset = 0;
+    compressed("/bomb", H5T_NATIVE_DOUBLE, rows, rows, nullptr, 0);
+    const hid_t bomb = H5Dopen2(f.id(), "/bomb", H5P_DEFAULT);
+    const std::vector<unsigned char> junk(64, 0x5a);
+    EXPECT_GE(H5Dwrite_chunk(bomb, H5P_DEFAULT, 0, &offset, junk.size(), junk.data()), 0);
+    EXPECT_EQ(H5Dget_storage_size(bomb), junk.size());
+    H5Dclose(bomb);
     f.close();
   }
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
@@ -138,6 +149,15 @@ TEST(H5, ACompressedDatasetIsReadWholeAndOneWithoutItsChunksRefused) {
                                            " values but the file does not store them; a damaged "
                                            "file or not a test file");
     }
+  }
+  try {
+    h5::read_numbers(f, "/bomb", path, &dims, "not a test file");
+    ADD_FAILURE() << "/bomb was read";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), path +
+                                         ": /bomb declares 16777216 values in 64 compressed bytes, "
+                                         "more than gzip unpacks them to; a damaged file or not a "
+                                         "test file");
   }
   H5Fclose(f);
 }
