@@ -162,12 +162,16 @@ CampaignStudy campaign_from_options(const Options& opt, long samples_override, l
   const std::string src = opt.get_string("motion.source");
   if (src == "generated") {
     st.source = MotionSource::generated;
-    // A record named for a campaign of generated motions would be ignored without a word.
-    for (const char* key : {"motion.file", "motion.records"})
+    // A record, or how to read one, named for a campaign of generated motions would be ignored
+    // without a word (motion_file_spec reads these keys for records only).
+    for (const char* key :
+         {"motion.file", "motion.records", "motion.format", "motion.units", "motion.dt",
+          "motion.scale", "motion.baseline", "motion.check_pga", "motion.duration"})
       if (opt.given(key))
         throw InputError(opt.where(key) +
                          ": not used: motion.source is 'generated' (every sample generates its "
-                         "own motion); set motion.source = records to simulate record files");
+                         "own motion, set by the generator.* keys); set motion.source = records "
+                         "to simulate record files");
     const Options gen = opt.section("generator", generator_specs());
     if (!gen.given("spectrum"))
       throw InputError(opt.where("generator.spectrum") +
@@ -191,6 +195,9 @@ CampaignStudy campaign_from_options(const Options& opt, long samples_override, l
   } else if (src == "records") {
     st.source = MotionSource::records;
     std::vector<std::string> files;
+    if (opt.given("motion.records") && opt.given("motion.file"))
+      throw InputError(opt.where("motion.file") +
+                       ": not used beside motion.records; give the records in one of them");
     if (opt.given("motion.records")) {
       std::string list = opt.get_string("motion.records");
       std::replace(list.begin(), list.end(), ',', ' ');

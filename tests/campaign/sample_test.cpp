@@ -307,11 +307,16 @@ CampaignStudy generated_study(std::vector<const char*> extra) {
 }
 
 TEST(Sample, ARecordNamedForGeneratedMotionsIsRefused) {
-  // motion.source = generated (the default) ignores record files: naming one is an error that
-  // names the key and the way to use it.
-  for (const char* key : {"--motion.file", "--motion.records"}) {
+  // motion.source = generated (the default) ignores record files and how to read them: naming
+  // one is an error that names the key and the way to use it.
+  for (const auto& [key, value] :
+       {std::pair<const char*, const char*>{"--motion.file",
+                                            POUND_SOURCE_DIR "/motions/elcentro-1940-ns.dat"},
+        {"--motion.records", POUND_SOURCE_DIR "/motions/elcentro-1940-ns.dat"},
+        {"--motion.duration", "8"},
+        {"--motion.units", "g"}}) {
     try {
-      generated_study({key, POUND_SOURCE_DIR "/motions/elcentro-1940-ns.dat"});
+      generated_study({key, value});
       ADD_FAILURE() << key << " accepted";
     } catch (const InputError& e) {
       const std::string m = e.what();
@@ -319,6 +324,15 @@ TEST(Sample, ARecordNamedForGeneratedMotionsIsRefused) {
       EXPECT_NE(m.find("motion.source = records"), std::string::npos) << m;
       EXPECT_EQ(m.find('\n'), std::string::npos) << m;
     }
+  }
+  // With records, motion.file beside motion.records would be dropped without a word.
+  try {
+    study({"--motion.records", POUND_SOURCE_DIR "/motions/elcentro-1940-ns.dat"});
+    ADD_FAILURE() << "motion.file and motion.records accepted together";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "command line: --motion.file: not used beside motion.records; give the records in "
+              "one of them");
   }
 }
 
