@@ -151,7 +151,7 @@ std::vector<HazardCurve::Segment> HazardCurve::segments() const {
   auto line = [&](std::size_t i, double lo, double hi) {  // through points i and i + 1
     const double x0 = std::log(im[i]), x1 = std::log(im[i + 1]);
     const double b = (std::log(rate[i + 1]) - std::log(rate[i])) / (x1 - x0);
-    return Segment{std::log(rate[i]) - b * x0, b, lo, hi, x0, std::log(rate[i])};
+    return Segment{b, lo, hi, x0, std::log(rate[i])};
   };
   s.push_back(line(0, -kInf, std::log(im[0])));
   for (std::size_t i = 0; i + 1 < n; ++i)
@@ -163,14 +163,14 @@ std::vector<HazardCurve::Segment> HazardCurve::segments() const {
 double HazardCurve::rate_at(double x) const {
   const double u = std::log(x);
   for (const auto& s : segments())
-    if (u <= s.hi) return std::exp(s.y0 + s.b * (u - s.x0));  // from its point: no cancellation
+    if (u <= s.hi) return std::exp(s.ln_rate(u));
   return 0.0;
 }
 
 double HazardCurve::im_at_rate(double r) const {
   const double v = std::log(r);
   for (const auto& s : segments()) {
-    const double u = (v - s.a) / s.b;  // b < 0: the rate falls along the curve
+    const double u = s.x0 + (v - s.y0) / s.b;  // b < 0: the rate falls along the curve
     if (u <= s.hi) return std::exp(std::max(u, s.lo));
   }
   return kInf;

@@ -29,12 +29,14 @@ struct HazardCurve {
   double rate_at(double x) const;
   /// The intensity whose rate of exceedance is `annual_rate` [m/s^2] (inverse of rate_at).
   double im_at_rate(double annual_rate) const;
-  /// Segment k of ln lambda = a + b ln x: k = 0 is the extension below the first point,
-  /// k = 1..n-1 the interpolated segments, k = n the extension above the last point; the
-  /// segment covers ln x in [lo, hi] (-inf / +inf at the ends).
+  /// Segment k of ln lambda = y0 + b (ln x - x0), the line through its point (x0, y0) (so that
+  /// it hits its points to round-off whatever its slope): k = 0 is the extension below the
+  /// first point, k = 1..n-1 the interpolated segments, k = n the extension above the last
+  /// point; the segment covers ln x in [lo, hi] (-inf / +inf at the ends).
   struct Segment {
-    double a, b, lo, hi;
-    double x0, y0;  ///< a point of the line, ln x and ln lambda there (a = y0 - b x0)
+    double b, lo, hi;
+    double x0, y0;  ///< a point of the line, ln x and ln lambda there
+    double ln_rate(double u) const { return y0 + b * (u - x0); }  ///< at u = ln x
   };
   std::vector<Segment> segments() const;
   /// How the curve is used beyond its points, for the reports.

@@ -29,7 +29,7 @@ double mean_annual_frequency(const HazardCurve& h, double theta, double beta, do
     const double shift = mu + s.b * beta * beta;
     const double lo = std::max(s.lo, u_lo), hi = std::min(s.hi, u_hi);
     const double mass = normal_mass((lo - shift) / beta, (hi - shift) / beta);
-    if (mass > 0.0) nu += std::exp(s.a + s.b * mu + 0.5 * s.b * s.b * beta * beta) * mass;
+    if (mass > 0.0) nu += std::exp(s.ln_rate(mu) + 0.5 * s.b * s.b * beta * beta) * mass;
   }
   // The boundary terms of the integration by parts (header):
   //   integral_lo^hi P |d lambda| = integral_lo^hi lambda dP + P(lo) lambda(lo) - P(hi) lambda(hi)

@@ -13,6 +13,8 @@
 //     = e^{a + b mu + b^2 beta^2 / 2} [Phi((u2 - mu - b beta^2) / beta) - Phi((u1 - mu - b beta^2)
 //     / beta)]
 //
+// (a + b mu evaluated from the segment's own point, Segment::ln_rate(mu), without cancellation)
+//
 // which for one power law lambda = k0 x^-k over (0, inf) is Cornell et al.'s
 // nu = k0 theta^-k exp(k^2 beta^2 / 2) (their eq. 11 with the median demand at the capacity).
 //

@@ -66,7 +66,7 @@ TEST(RiskIntegral, AgreesWithQuadratureOnACurveThatIsNoPowerLaw) {
         for (const auto& s : segs)
           if (u <= s.hi) {
             const double p = std::exp(log_normal_cdf((u - std::log(theta_g * kGravity)) / beta));
-            q += p * (-s.b) * std::exp(s.a + s.b * u) * (hi - lo) / n;
+            q += p * (-s.b) * std::exp(s.ln_rate(u)) * (hi - lo) / n;
             break;
           }
       }
@@ -77,11 +77,11 @@ TEST(RiskIntegral, AgreesWithQuadratureOnACurveThatIsNoPowerLaw) {
 
 // integral_{x_lo}^{x_hi} Phi(ln(x / theta) / beta) (-d lambda / dx) dx by composite Simpson in
 // u = ln x with 20,000 intervals on each segment's part of [ln x_lo, ln x_hi] (finite bounds):
-// on a segment, -d lambda / dx dx = -b e^{a + b u} du. The integrand is smooth on a segment.
+// on a segment, -d lambda / dx dx = -b lambda(u) du. The integrand is smooth on a segment.
 double simpson_part(const HazardCurve& h, double theta, double beta, double x_lo, double x_hi) {
   const double mu = std::log(theta);
   auto f = [&](const HazardCurve::Segment& s, double u) {
-    return std::exp(log_normal_cdf((u - mu) / beta)) * (-s.b) * std::exp(s.a + s.b * u);
+    return std::exp(log_normal_cdf((u - mu) / beta)) * (-s.b) * std::exp(s.ln_rate(u));
   };
   double q = 0.0;
   for (const auto& s : h.segments()) {
