@@ -65,7 +65,8 @@ class Options {
   static bool matches(const std::string& pattern, const std::string& key);
 
   /// The numbers N of the "prefixN." keys given (building1.masses, building12.E: 1 and 12),
-  /// ascending, each with the first key given under it, in one walk over the given keys. A
+  /// ascending, each with the alphabetically first key given under it (the keys are kept
+  /// sorted, not in the order given), in one walk over the given keys. A
   /// number too large for a long (building2000000000000000000000.masses) counts as the
   /// largest long: past any count of buildings or pairs, and its key names it.
   std::map<long, std::string> numbered_sections(const std::string& prefix) const;
