@@ -11,8 +11,10 @@
 //   4. yielding buildings: samples of the default study against elastic storeys and the reference.
 //   5. the cost of a default-study sample per contact model, its motion apart (issue 13).
 // Usage: bench_speed [source dir [quick | lumped [check] | sample ID | inelastic [N] |
-// samples [N [REPEAT [MODEL [spectral|none]]]] | ch8]] (default:
+// samples [N [REPEAT [MODEL [spectral|none]]]] | ch8 | fine-step | contact-steps]] (default:
 // the source tree it was built from; "quick": only the event-driven chapter 8 run, for profiling;
+// "fine-step": the event path's fine step against the fixed path; "contact-steps": the longer
+// steps through smooth contact forces at several sears.contact_step_tolerance values;
 // "ch8": case 1 alone; "lumped": only the adaptive run of case 2, for profiling, with "check" also
 // its fixed-step reference and the case 2 line; "sample ID": peak forces of one campaign sample on
 // the default path, the fixed path at its automatic step and at 10 us)
@@ -170,6 +172,65 @@ CampaignStudy reference_of(const CampaignStudy& study) {
 // Convergence of the event path in its fine step (docs/speed.md, "Fine step"): chapter 8, full
 // record, fine steps h_c / r for r = 11 (T_min / 20, the former automatic step) down to 3,
 // against the fixed path at 10 us: the largest relative differences per quantity.
+// Largest relative differences of run e from run r: floor displacement, drift, floor
+// acceleration, site force, slab face and centre acceleration (d[0..5]); the same impacts.
+struct SearsDifferences {
+  double d[6] = {0, 0, 0, 0, 0, 0};
+  bool same_impacts = true;
+};
+SearsDifferences sears_differences(const sears::SearsRowSimulation& e,
+                                   const sears::SearsRowSimulation& r) {
+  SearsDifferences x;
+  double* d = x.d;
+  for (std::size_t i = 0; i < r.base.floors.size(); ++i) {
+    d[0] = std::max(d[0], rel(e.base.floors[i].disp_pounding, r.base.floors[i].disp_pounding));
+    d[1] = std::max(
+        d[1], rel(e.base.floors[i].drift_ratio_pounding, r.base.floors[i].drift_ratio_pounding));
+    d[2] = std::max(d[2], rel(e.base.floors[i].accel_pounding, r.base.floors[i].accel_pounding));
+  }
+  for (std::size_t k = 0; k < r.base.sites.size(); ++k) {
+    d[3] = std::max(d[3], rel(e.base.sites[k].peak_force, r.base.sites[k].peak_force));
+    x.same_impacts = x.same_impacts && e.contacts[k].impacts == r.contacts[k].impacts;
+  }
+  for (std::size_t k = 0; k < r.slabs.size(); ++k) {
+    d[4] = std::max(d[4], rel(e.slabs[k].face_accel, r.slabs[k].face_accel));
+    d[5] = std::max(d[5], rel(e.slabs[k].centre_accel, r.slabs[k].centre_accel));
+  }
+  return x;
+}
+
+// The longer steps through smooth contact forces (docs/speed.md): the event path at several
+// values of sears.contact_step_tolerance against the fixed 10 us path.
+void contact_step_study(const BuildingRow& row, const GroundMotion& motion,
+                        sears::SearsRowModel model) {
+  sears::SearsRowModel ref = model;
+  ref.stepping = sears::SearsStepping::fixed;
+  ref.dt_s = kReferenceDt;
+  sears::SearsRowSimulation r;
+  const Timing t_ref = time_it([&] { r = sears::simulate_sears_row(row, motion, ref); }, 1);
+  model.stepping = sears::SearsStepping::event;
+  std::printf(
+      "event path vs the fixed path at %g s (chapter 8, sears N = %d, %.2f s, %.3f s cpu); "
+      "largest relative differences over floors, sites and slabs\n",
+      kReferenceDt, model.modes, motion.duration(), t_ref.cpu_s);
+  std::printf("%9s %9s %8s %8s %8s %8s %9s %9s %9s %9s %9s %9s %8s\n", "tolerance", "cpu[s]",
+              "speed-up", "steps", "longer", "again", "disp", "drift", "floor acc", "force",
+              "face acc", "centre acc", "same imp");
+  for (double tol : {0.0, 3e-4, 1e-3, 3e-3}) {
+    model.contact_step_tolerance = tol;
+    sears::SearsRowSimulation e;
+    const Timing t = time_it([&] { e = sears::simulate_sears_row(row, motion, model); }, 3);
+    const SearsDifferences x = sears_differences(e, r);
+    const double* d = x.d;
+    const sears::SearsStepCounts& c = e.counts_pounding;
+    std::printf(
+        "%9g %9.4f %8.1f %8ld %8ld %8ld %8.3f%% %8.3f%% %8.3f%% %8.3f%% %8.3f%% %8.3f%% %8s\n", tol,
+        t.cpu_s, t_ref.cpu_s / t.cpu_s, c.fine + c.coarse, c.long_steps, c.long_step_rejections,
+        100 * d[0], 100 * d[1], 100 * d[2], 100 * d[3], 100 * d[4], 100 * d[5],
+        x.same_impacts ? "yes" : "NO");
+  }
+}
+
 void fine_step_study(const BuildingRow& row, const GroundMotion& motion,
                      sears::SearsRowModel model) {
   sears::SearsRowModel ref = model;
@@ -197,25 +258,11 @@ void fine_step_study(const BuildingRow& row, const GroundMotion& motion,
     model.dt_s = automatic.coarse_s / static_cast<double>(ratio);
     sears::SearsRowSimulation e;
     const Timing t = time_it([&] { e = sears::simulate_sears_row(row, motion, model); }, 1);
-    double d[6] = {0, 0, 0, 0, 0, 0};
-    for (std::size_t i = 0; i < r.base.floors.size(); ++i) {
-      d[0] = std::max(d[0], rel(e.base.floors[i].disp_pounding, r.base.floors[i].disp_pounding));
-      d[1] = std::max(
-          d[1], rel(e.base.floors[i].drift_ratio_pounding, r.base.floors[i].drift_ratio_pounding));
-      d[2] = std::max(d[2], rel(e.base.floors[i].accel_pounding, r.base.floors[i].accel_pounding));
-    }
-    bool same = true;
-    for (std::size_t k = 0; k < r.base.sites.size(); ++k) {
-      d[3] = std::max(d[3], rel(e.base.sites[k].peak_force, r.base.sites[k].peak_force));
-      same = same && e.contacts[k].impacts == r.contacts[k].impacts;
-    }
-    for (std::size_t k = 0; k < r.slabs.size(); ++k) {
-      d[4] = std::max(d[4], rel(e.slabs[k].face_accel, r.slabs[k].face_accel));
-      d[5] = std::max(d[5], rel(e.slabs[k].centre_accel, r.slabs[k].centre_accel));
-    }
+    const SearsDifferences x = sears_differences(e, r);
+    const double* d = x.d;
     std::printf("%6ld %11.4g %8.1f %9.4f %8.3f%% %8.3f%% %8.3f%% %8.3f%% %8.3f%% %8.3f%% %8s\n",
                 ratio, model.dt_s, t_min / model.dt_s, t.cpu_s, 100 * d[0], 100 * d[1], 100 * d[2],
-                100 * d[3], 100 * d[4], 100 * d[5], same ? "yes" : "NO");
+                100 * d[3], 100 * d[4], 100 * d[5], x.same_impacts ? "yes" : "NO");
   }
 }
 
@@ -418,6 +465,10 @@ int main(int argc, char** argv) {
     fine_step_study(row, motion, sears_row_from_options(o1, row));
     return 0;
   }
+  if (argc > 2 && std::string(argv[2]) == "contact-steps") {
+    contact_step_study(row, motion, sears_row_from_options(o1, row));
+    return 0;
+  }
   sears::SearsRowSimulation se, sf;
   const Timing t_se = time_it([&] { se = sears::simulate_sears_row(row, motion, ev); }, 3);
   if (argc > 2 && std::string(argv[2]) == "quick") {
@@ -437,13 +488,16 @@ int main(int argc, char** argv) {
   for (const auto& c : sf.contacts) ifx.push_back(c.impacts);
   std::printf(
       "\n1. chapter 8 example, sears N = 100, %s, %.2f s; event: fine %.3g s, coarse "
-      "%.3g s; pounding run %ld fine (%ld with a contact force) + %ld coarse steps (bound "
-      "violations %ld; slabs put to sleep %ld times, %ld woken early; %ld of %ld slab coarse "
+      "%.3g s; pounding run %ld fine (%ld with a contact force) + %ld coarse steps (%ld fine steps "
+      "longer, %ld solved again "
+      "shorter; bound violations %ld; slabs put to sleep %ld times, %ld woken early; %ld of %ld "
+      "slab coarse "
       "steps skipped by dormant slabs), free run %ld fine + %ld coarse\n",
       motion.name.c_str(), motion.duration(), se.dt_s, se.coarse_dt_s, se.counts_pounding.fine,
-      se.counts_pounding.fine_in_contact, se.counts_pounding.coarse,
-      se.counts_pounding.bound_violations, se.counts_pounding.slab_sleeps,
-      se.counts_pounding.slab_wakes, se.counts_pounding.dormant_slab_steps,
+      se.counts_pounding.fine_in_contact, se.counts_pounding.coarse, se.counts_pounding.long_steps,
+      se.counts_pounding.long_step_rejections, se.counts_pounding.bound_violations,
+      se.counts_pounding.slab_sleeps, se.counts_pounding.slab_wakes,
+      se.counts_pounding.dormant_slab_steps,
       se.counts_pounding.coarse * static_cast<long>(se.slabs.size()), se.counts_free.fine,
       se.counts_free.coarse);
   header();

@@ -6,6 +6,8 @@
 // same order and no FMA is enabled, so both clones give the same bits on any x86-64 machine.
 // The helpers are always inlined (also at -O0): a call would pass the 32-byte vector with the
 // default ABI into the AVX2 clone and crash, so GCC's note on that ABI (-Wpsabi) does not apply.
+#include <emmintrin.h>
+
 #include <cstring>
 
 #if defined(__GNUC__) && !defined(__clang__)
@@ -34,6 +36,19 @@ __attribute__((always_inline)) inline V4 vabs(const V4& x) {
 /// std::max(m, x) lane by lane: (m < x) ? x : m.
 __attribute__((always_inline)) inline V4 vmax(const V4& m, const V4& x) {
   return m < x ? x : m;
+}
+
+/// std::sqrt lane by lane (two SSE2 sqrtpd, correctly rounded as std::sqrt is).
+__attribute__((always_inline)) inline V4 vsqrt(const V4& x) {
+  __m128d lo, hi;
+  std::memcpy(&lo, &x, sizeof lo);
+  std::memcpy(&hi, reinterpret_cast<const char*>(&x) + sizeof lo, sizeof hi);
+  lo = _mm_sqrt_pd(lo);
+  hi = _mm_sqrt_pd(hi);
+  V4 r;
+  std::memcpy(&r, &lo, sizeof lo);
+  std::memcpy(reinterpret_cast<char*>(&r) + sizeof lo, &hi, sizeof hi);
+  return r;
 }
 
 }  // namespace pound::simd

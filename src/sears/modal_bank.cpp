@@ -22,6 +22,7 @@ inline double shape_at_centre(int n) {
 struct FusedArrays {
   double *q, *v;
   const double *A, *B, *C, *D, *Av, *Bv, *Cv, *Dv, *c1, *k1;
+  const double *pA, *pB, *pC;  // the next step's recurrence, for its prediction
   int padded;
 };
 // One block of four modes is one simd::V4 (core/vec4.hpp).
@@ -30,13 +31,14 @@ using simd::store;
 using simd::V4;
 
 // One step of every mode with loads linear from f0 to f1 (per lane), and the lane sums of the
-// new q (s[0..3]), of -(2 xi w q' + w^2 q) (s[4..7]) and of the next prediction A q + B q' + C f1
-// (s[8..11]). Each lane sums its modes in order, as a scalar loop would; no FMA is enabled, so
-// the AVX2 clone and the default (SSE2) clone give the same bits.
-__attribute__((target_clones("avx2", "default"))) void fused_step_kernel(const FusedArrays& a,
-                                                                         const double* f0,
-                                                                         const double* f1,
-                                                                         double* s) {
+// new q (s[0..3]), of -(2 xi w q' + w^2 q) (s[4..7]) and of the next step's prediction
+// A q + B q' + C f1 (s[8..11]), by the next step's coefficients pA, pB, pC when kOtherNext (a
+// step of another length follows) and by this step's otherwise. Each lane sums its modes in
+// order, as a scalar loop would; no FMA is enabled, so the AVX2 clone and the default (SSE2)
+// clone give the same bits.
+template <bool kOtherNext>
+__attribute__((always_inline)) inline void fused_step_body(const FusedArrays& a, const double* f0,
+                                                           const double* f1, double* s) {
   const V4 F0 = load(f0), F1 = load(f1);
   V4 sq = {0, 0, 0, 0}, sa = {0, 0, 0, 0}, sp = {0, 0, 0, 0};
   for (int i = 0; i < a.padded; i += 4) {
@@ -49,11 +51,24 @@ __attribute__((target_clones("avx2", "default"))) void fused_step_kernel(const F
     store(a.v + i, vn);
     sq += qn;
     sa -= load(a.c1 + i) * vn + load(a.k1 + i) * qn;
-    sp += A * qn + B * vn + C * F1;
+    if constexpr (kOtherNext)
+      sp += load(a.pA + i) * qn + load(a.pB + i) * vn + load(a.pC + i) * F1;
+    else
+      sp += A * qn + B * vn + C * F1;
   }
   store(s, sq);
   store(s + 4, sa);
   store(s + 8, sp);
+}
+__attribute__((target_clones("avx2", "default"))) void fused_step_kernel(const FusedArrays& a,
+                                                                         const double* f0,
+                                                                         const double* f1,
+                                                                         double* s) {
+  fused_step_body<false>(a, f0, f1, s);
+}
+__attribute__((target_clones("avx2", "default"))) void fused_step_kernel_other_next(
+    const FusedArrays& a, const double* f0, const double* f1, double* s) {
+  fused_step_body<true>(a, f0, f1, s);
 }
 
 // One free step (no loads) of every mode by the coefficients Af..Bvf, and the lane sums of the new
@@ -77,6 +92,21 @@ __attribute__((target_clones("avx2", "default"))) void free_step_kernel(const Fr
   }
   store(s, sq);
   store(s + 4, sa);
+}
+
+// sum_n R_n min(2, w_n h), R_n = sqrt(q_n^2 + (q_n'/w_n)^2), over padded modes (the padding has
+// q = q' = 0); summed in four lanes (modes n mod 4), the same bits in both clones.
+__attribute__((target_clones("avx2", "default"))) double face_motion_kernel(const double* q,
+                                                                            const double* v,
+                                                                            const double* omega,
+                                                                            int padded, double h) {
+  const V4 H = {h, h, h, h}, two = {2.0, 2.0, 2.0, 2.0};
+  V4 b = {0, 0, 0, 0};
+  for (int i = 0; i < padded; i += 4) {
+    const V4 w = load(omega + i), x = load(q + i), r = load(v + i) / w, wh = w * H;
+    b += simd::vsqrt(x * x + r * r) * (wh < two ? wh : two);
+  }
+  return (b[0] + b[1]) + (b[2] + b[3]);
 }
 
 // Face and centre sums from the lane sums s[k], n % 4 = k + 1 (mod 4).
@@ -118,20 +148,30 @@ ModalBank::ModalBank(const Slab& slab, int modes, double xi_s, double dt)
     throw InputError("damped Sears model: slab damping xi_s must be in [0, 1)");
   if (!(dt > 0.0 && std::isfinite(dt))) throw InputError("damped Sears model: dt must be > 0");
   const int padded = (modes + 3) / 4 * 4;
-  for (auto* a : {&q_, &v_, &A_, &B_, &C_, &D_, &Av_, &Bv_, &Cv_, &Dv_, &c1_, &k1_})
-    a->assign(padded, 0.0);
+  for (auto* a : {&q_, &v_, &c1_, &k1_}) a->assign(padded, 0.0);
   omega_.assign(padded, 1.0);
   for (int i = 0; i < modes; ++i) {
-    const int n = i + 1;
-    omega_[i] = slab.omega(n);
-    const RecurrenceCoefficients c = recurrence_coefficients(omega_[i], xi_s, dt);
-    A_[i] = c.A, B_[i] = c.B, C_[i] = c.C, D_[i] = c.D;
-    Av_[i] = c.Av, Bv_[i] = c.Bv, Cv_[i] = c.Cv, Dv_[i] = c.Dv;
+    omega_[i] = slab.omega(i + 1);
     c1_[i] = 2.0 * xi_s * omega_[i];
     k1_[i] = omega_[i] * omega_[i];
-    flex_.same += gain_ * c.D;
-    flex_.cross += gain_ * sign_at_right(n) * c.D;
   }
+  add_step(dt);
+}
+
+int ModalBank::add_step(double h) {
+  if (!(h > 0.0 && std::isfinite(h))) throw InputError("damped Sears model: dt must be > 0");
+  Recurrence r;
+  r.h = h;
+  for (auto* a : {&r.A, &r.B, &r.C, &r.D, &r.Av, &r.Bv, &r.Cv, &r.Dv}) a->assign(q_.size(), 0.0);
+  for (int i = 0; i < modes_; ++i) {
+    const RecurrenceCoefficients c = recurrence_coefficients(omega_[i], xi_, h);
+    r.A[i] = c.A, r.B[i] = c.B, r.C[i] = c.C, r.D[i] = c.D;
+    r.Av[i] = c.Av, r.Bv[i] = c.Bv, r.Cv[i] = c.Cv, r.Dv[i] = c.Dv;
+    r.flex.same += gain_ * c.D;
+    r.flex.cross += gain_ * sign_at_right(i + 1) * c.D;
+  }
+  rec_.push_back(std::move(r));
+  return static_cast<int>(rec_.size()) - 1;
 }
 
 SectionValues ModalBank::displacement() const {
@@ -169,12 +209,13 @@ SectionValues ModalBank::acceleration(const EndLoads& now) const {
   return s;
 }
 
-SectionValues ModalBank::predict(const EndLoads& begin) const {
+SectionValues ModalBank::predict(const EndLoads& begin, int level) const {
+  const Recurrence& r = rec_[level];
   SectionValues s;
   for (int i = 0; i < modes(); ++i) {
     const int n = i + 1;
     const double f = gain_ * (begin.left_N + sign_at_right(n) * begin.right_N);
-    const double q = A_[i] * q_[i] + B_[i] * v_[i] + C_[i] * f;
+    const double q = r.A[i] * q_[i] + r.B[i] * v_[i] + r.C[i] * f;
     s.left += q;
     s.right += sign_at_right(n) * q;
   }
@@ -182,38 +223,36 @@ SectionValues ModalBank::predict(const EndLoads& begin) const {
 }
 
 void ModalBank::step(const EndLoads& begin, const EndLoads& end) {
+  const Recurrence& r = rec_[0];
   for (int i = 0; i < modes(); ++i) {
     const double sgn = sign_at_right(i + 1);
     const double f0 = gain_ * (begin.left_N + sgn * begin.right_N);
     const double f1 = gain_ * (end.left_N + sgn * end.right_N);
     const double q = q_[i], v = v_[i];
-    q_[i] = A_[i] * q + B_[i] * v + C_[i] * f0 + D_[i] * f1;
-    v_[i] = Av_[i] * q + Bv_[i] * v + Cv_[i] * f0 + Dv_[i] * f1;
+    q_[i] = r.A[i] * q + r.B[i] * v + r.C[i] * f0 + r.D[i] * f1;
+    v_[i] = r.Av[i] * q + r.Bv[i] * v + r.Cv[i] * f0 + r.Dv[i] * f1;
   }
 }
 
-void ModalBank::step(const EndLoads& begin, const EndLoads& end, StepResult& out) {
+void ModalBank::step(const EndLoads& begin, const EndLoads& end, StepResult& out, int level,
+                     int next_level) {
+  const Recurrence& r = rec_[level];
+  const Recurrence& rn = rec_[next_level < 0 ? level : next_level];
   // Lane k of a block of four modes holds n = 4j + k + 1: n odd for k = 0, 2 ((-1)^n = -1,
   // cos(n pi / 2) = 0), n = 4j + 2 for k = 1 (cos = -1), n = 4j + 4 for k = 3 (cos = +1).
   const double f0o = gain_ * (begin.left_N - begin.right_N),
                f0e = gain_ * (begin.left_N + begin.right_N);
   const double f1o = gain_ * (end.left_N - end.right_N), f1e = gain_ * (end.left_N + end.right_N);
   const double f0[4] = {f0o, f0e, f0o, f0e}, f1[4] = {f1o, f1e, f1o, f1e};
-  FusedArrays arr{q_.data(),
-                  v_.data(),
-                  A_.data(),
-                  B_.data(),
-                  C_.data(),
-                  D_.data(),
-                  Av_.data(),
-                  Bv_.data(),
-                  Cv_.data(),
-                  Dv_.data(),
-                  c1_.data(),
-                  k1_.data(),
-                  static_cast<int>(q_.size())};
+  FusedArrays arr{q_.data(),   v_.data(),   r.A.data(),  r.B.data(),
+                  r.C.data(),  r.D.data(),  r.Av.data(), r.Bv.data(),
+                  r.Cv.data(), r.Dv.data(), c1_.data(),  k1_.data(),
+                  rn.A.data(), rn.B.data(), rn.C.data(), static_cast<int>(q_.size())};
   double s[12];
-  fused_step_kernel(arr, f0, f1, s);
+  if (&rn == &r)
+    fused_step_kernel(arr, f0, f1, s);
+  else
+    fused_step_kernel_other_next(arr, f0, f1, s);
   // Forcing term of the accelerations, f1 once per real mode of each lane.
   for (int k = 0; k < 4; ++k) s[4 + k] += f1[k] * ((modes_ - k + 3) / 4);
   lane_faces(s, out.disp);
@@ -318,12 +357,7 @@ void ModalBank::step_free() {
 }
 
 double ModalBank::face_motion_bound(double h) const {
-  double b = 0.0;
-  for (int i = 0; i < modes(); ++i) {
-    const double r = v_[i] / omega_[i];
-    b += std::sqrt(q_[i] * q_[i] + r * r) * std::min(2.0, omega_[i] * h);
-  }
-  return b;
+  return face_motion_kernel(q_.data(), v_.data(), omega_.data(), static_cast<int>(q_.size()), h);
 }
 
 void ModalBank::reset() {

@@ -62,16 +62,23 @@ class ModalBank {
   /// [m/s^2] (the rigid-body acceleration is the caller's).
   SectionValues acceleration(const EndLoads& now) const;
 
-  /// Face displacements at the end of the next step if the end loads went linearly from
-  /// `begin` to zero [m]; the end-of-step loads add flexibility() times themselves.
-  SectionValues predict(const EndLoads& begin) const;
+  /// Adds the loaded recurrence for a further step size h [s] (event stepping's longer steps
+  /// through smooth contact forces, docs/speed.md) and returns its index; index 0 is dt().
+  int add_step(double h);
+  /// Step size of recurrence `level` [s].
+  double step_size(int level) const { return rec_[level].h; }
+
+  /// Face displacements at the end of the next step (of recurrence `level`) if the end loads
+  /// went linearly from `begin` to zero [m]; the end-of-step loads add flexibility(level) times
+  /// themselves.
+  SectionValues predict(const EndLoads& begin, int level = 0) const;
   /// Step flexibility [m/N]: end-face displacement per unit end-of-step load at the same face
   /// (`same`) and at the opposite face (`cross`).
   struct Flexibility {
     double same = 0.0;
     double cross = 0.0;
   };
-  Flexibility flexibility() const { return flex_; }
+  Flexibility flexibility(int level = 0) const { return rec_[level].flex; }
 
   /// Advances one step with end loads linear from `begin` to `end`. No allocation.
   void step(const EndLoads& begin, const EndLoads& end);
@@ -82,10 +89,12 @@ class ModalBank {
     SectionValues accel;      ///< acceleration(end) at the end of the step
     SectionValues next_pred;  ///< predict(end) for the next step (faces only)
   };
-  /// step(begin, end) fused with displacement(), acceleration(end) and predict(end). Sums are
-  /// taken in four interleaved lanes (modes n mod 4), so they may differ from the separate
-  /// calls in the last bits. No allocation.
-  void step(const EndLoads& begin, const EndLoads& end, StepResult& out);
+  /// step(begin, end) fused with displacement(), acceleration(end) and predict(end), by
+  /// recurrence `level`; next_pred is by recurrence `next_level` (-1: `level`). Sums are taken
+  /// in four interleaved lanes (modes n mod 4), so they may differ from the separate calls in
+  /// the last bits. No allocation.
+  void step(const EndLoads& begin, const EndLoads& end, StepResult& out, int level = 0,
+            int next_level = -1);
 
   /// Energy in the internal vibration, sum (m/4)(q_n'^2 + w_n^2 q_n^2) [J].
   double energy() const;
@@ -131,9 +140,14 @@ class ModalBank {
   // Structure of arrays, padded with inert modes (zero coefficients and state, w = 1) to a
   // multiple of 4 for the fused step; every other loop runs over the modes_ real modes.
   std::vector<double> omega_, q_, v_;
-  std::vector<double> A_, B_, C_, D_, Av_, Bv_, Cv_, Dv_;  // recurrence for dt_
-  std::vector<double> c1_, k1_;                            // 2 xi w_n, w_n^2
-  Flexibility flex_;
+  std::vector<double> c1_, k1_;  // 2 xi w_n, w_n^2
+  // The loaded recurrence for one step size h [s] (padded like q_).
+  struct Recurrence {
+    double h = 0.0;
+    std::vector<double> A, B, C, D, Av, Bv, Cv, Dv;
+    Flexibility flex;
+  };
+  std::vector<Recurrence> rec_;  // rec_[0]: dt_
   double h_free_ = 0.0;
   std::vector<double> Af_, Bf_, Avf_, Bvf_;  // free recurrence for h_free_
   // Its binary powers: entry [j][4 i + (0..3)] = (A, B, Av, Bv) of mode i for 2^j free steps.

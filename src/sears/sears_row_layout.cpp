@@ -84,18 +84,23 @@ void build_banks(RowContactLayout& L, const BuildingRow& row, const SearsRowMode
   for (const auto& f : L.floors)
     L.banks.emplace_back(floor_slab(row, model, f.building, f.floor - 1), model.modes, model.xi_s,
                          dt);
+  L.S_modal = modal_compliance(L, 0);
+}
+
+Eigen::MatrixXd modal_compliance(const RowContactLayout& L, int level) {
   const int ns = static_cast<int>(L.laws.size());
-  L.S_modal = Eigen::MatrixXd::Zero(ns, ns);
+  Eigen::MatrixXd S = Eigen::MatrixXd::Zero(ns, ns);
   for (int s = 0; s < ns; ++s) {
     const int fl = L.site_left_floor[s], fr = L.site_right_floor[s];
-    const auto flex_l = L.banks[fl].flexibility(), flex_r = L.banks[fr].flexibility();
+    const auto flex_l = L.banks[fl].flexibility(level), flex_r = L.banks[fr].flexibility(level);
     // delta_s = w_right(left floor) - w_left(right floor); the left floor's right end carries
     // -F_s and its left end +F_t (t = its other site), the right floor's left end +F_s and its
     // right end -F_t'.
-    L.S_modal(s, s) += flex_l.same + flex_r.same;
-    if (L.floors[fl].site_left >= 0) L.S_modal(s, L.floors[fl].site_left) -= flex_l.cross;
-    if (L.floors[fr].site_right >= 0) L.S_modal(s, L.floors[fr].site_right) -= flex_r.cross;
+    S(s, s) += flex_l.same + flex_r.same;
+    if (L.floors[fl].site_left >= 0) S(s, L.floors[fl].site_left) -= flex_l.cross;
+    if (L.floors[fr].site_right >= 0) S(s, L.floors[fr].site_right) -= flex_r.cross;
   }
+  return S;
 }
 
 }  // namespace pound::sears

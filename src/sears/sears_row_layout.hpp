@@ -40,4 +40,8 @@ RowContactLayout make_layout(const BuildingRow& row, const AssembledRow& a,
 void build_banks(RowContactLayout& layout, const BuildingRow& row, const SearsRowModel& model,
                  double dt);
 
+/// The modal part of the compliance for the banks' recurrence `level` (ModalBank::add_step)
+/// [m/N]; level 0 is S_modal.
+Eigen::MatrixXd modal_compliance(const RowContactLayout& layout, int level);
+
 }  // namespace pound::sears

@@ -3,6 +3,7 @@
 // state of a run; its members are named after the symbols of the equations (u, v, F, S, H, ...).
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,12 @@
 
 namespace pound::sears {
 namespace {
+
+// Longer steps through smooth contact forces (docs/speed.md): the next step's length is
+// kStepSafety times the one the error estimate allows; kNoLongStep marks a step that must be
+// a fine one (a contact starting or ending within it).
+constexpr double kStepSafety = 0.9;
+constexpr double kNoLongStep = std::numeric_limits<double>::infinity();
 
 // Nonlinear Gauss-Seidel on F_s = law_s(delta_pred_s - sum_t S(s,t) F_t). Sites marked in
 // `frozen` keep F_s = 0 (the caller has shown that their faces stay apart).
@@ -58,6 +65,15 @@ Eigen::MatrixXd newmark_matrix(const AssembledRow& a, double h) {
   return a.M + (0.5 * h) * a.C + (0.25 * h * h) * a.K;
 }
 
+// The operators of one loaded step of h = m fine steps (m = 1 .. SearsSteps::longest): with the
+// contact forces P = -sum_s F_s (e_L - e_R), a_{i+1} = a_hat - H F, H = Mt^-1 [e_L - e_R],
+// u_{i+1} = u_hat - h^2/4 H F, the overlaps' compliance S, and for yielding storeys R = Mt^-1 B.
+struct StepOperators {
+  double h;
+  NewmarkOperator nm;
+  Eigen::MatrixXd H, S, R;
+};
+
 class SearsRowSolver {
  public:
   SearsRowSolver(const SearsRowProblem& p, const SearsRowModel& model);
@@ -87,9 +103,22 @@ class SearsRowSolver {
   // Steps.
   void newmark_predict(double h, const NewmarkOperator& op, double t_next);
   void newmark_update(double h);
-  void fine_step(double t_next);
+  // One step through contacts of m fine steps from t = i dt (m from the forces' smoothness,
+  // at most trial_multiple(i)); returns m.
+  long fine_step(long i);
+  // The multiple a step through contacts from t = i dt with forces f tries first: m_next, but
+  // within room(i, f), which it divides into steps of nearly equal length.
+  long trial_multiple(long i, const Eigen::VectorXd& f) const;
+  // How many fine steps a step from t = i dt with forces f may span: to the end of the coarse
+  // interval, or, while every slab carries a force and none sleeps, to the next record sample;
+  // never past the end of the run.
+  long room(long i, const Eigen::VectorXd& f) const;
+  // The largest e / (tol F) over the sites of the step just solved (m fine steps): the error of
+  // its linear force, estimated from the second divided difference (docs/speed.md);
+  // kNoLongStep when the step must be a fine one.
+  double step_error(long m);
   void coarse_step(double t_next);
-  void storey_pass(double h, const Eigen::MatrixXd& R, bool contacts);
+  void storey_pass(double h, const Eigen::MatrixXd& R, const Eigen::MatrixXd& H, bool contacts);
   void add_energy(double h, double t_next);
   bool contact_free();
   // Results after a step.
@@ -103,21 +132,21 @@ class SearsRowSolver {
   RowContactLayout L;
   const SearsSteps st;
   const double dt, hc;  // fine and coarse step [s]
+  const long steps;     // fine steps in the run
+  long per_sample = 0;  // fine steps per record sample (0: the record spacing is not a multiple)
   const bool event;
   const int n, ns, nf;  // floor DOFs, contact sites, colliding floors
 
-  // With the contact forces P = -sum_s F_s (e_L - e_R): a_{i+1} = a_hat - H F,
-  // H = Mt^-1 [e_L - e_R], and u_{i+1} = u_hat - dt^2/4 H F.
-  const Eigen::LLT<Eigen::MatrixXd> mt;
-  const NewmarkOperator nm_fine;
+  // ops[m - 1]: steps of m fine steps through contacts; the modal banks' recurrence m - 1.
+  std::vector<StepOperators> ops;
   const NewmarkOperator nm_coarse;  // coarse steps carry no contact force (event stepping)
-  Eigen::MatrixXd H, S;
+  int level = 0;                    // ops[level]: the step being solved
   TranslationBound bound;
 
   // Yielding storeys (sears/newmark_storeys.hpp): a_i+1 = a_hat + R r_i+1 - H F, R = Mt^-1 B
   // for each step size; r iterated with the storeys' return maps.
   NewmarkStoreys storeys;
-  Eigen::MatrixXd R_fine, R_coarse;
+  Eigen::MatrixXd R_coarse;
   Eigen::VectorXd r_next, a_base, u_end;
   // Energy balance (p.track_energy): the work terms of each step, trapezoidal in the step's
   // end values, which Newmark's average-acceleration scheme balances exactly for linear storeys.
@@ -131,7 +160,12 @@ class SearsRowSolver {
   std::vector<EndLoads> begin, end;
   std::vector<SectionValues> pred, disp, accel;
   std::vector<ModalBank::StepResult> fused;
-  std::vector<char> pred_valid;  // pred[k] holds predict(begin) of slab k for this step
+  std::vector<int> pred_level;  // pred[k] holds predict(begin) of slab k by ops[pred_level - 1]
+  // Longer steps through smooth contact forces (docs/speed.md): the forces at the start of the
+  // previous step [N] and its length [s] (0: none since the start), the next step's multiple.
+  Eigen::VectorXd F_prev;
+  double h_prev = 0.0;
+  long m_next = 1;
   std::vector<double> modal_bound;
   std::vector<double> site_approach;  // TranslationBound::approach per site, contact_free() [m]
   // Runs without contacts: each site's face approach and its rate at the last step's end, for
@@ -180,12 +214,11 @@ SearsRowSolver::SearsRowSolver(const SearsRowProblem& p_in, const SearsRowModel&
       st(sears_row_steps(row, p.motion, model)),
       dt(st.fine_s),
       hc(st.coarse_s),
+      steps(static_cast<long>(std::ceil(p.t_end / dt - 1e-9))),
       event(st.ratio > 1),
       n(a.dofs()),
       ns(static_cast<int>(a.sites.size())),
       nf(static_cast<int>(L.floors.size())),
-      mt(newmark_matrix(a, dt)),
-      nm_fine(a, mt),
       nm_coarse(a, Eigen::LLT<Eigen::MatrixXd>(newmark_matrix(a, hc))),
       bound(a, p.motion ? p.motion->pga() : 0.0),
       storeys(a, p.u0.size() ? p.u0 : Eigen::VectorXd::Zero(a.dofs())) {
@@ -197,8 +230,16 @@ SearsRowSolver::SearsRowSolver(const SearsRowProblem& p_in, const SearsRowModel&
     Dsites(a.sites[s].dof_left, s) = 1.0;
     Dsites(a.sites[s].dof_right, s) = -1.0;
   }
-  H = mt.solve(Dsites);
-  S = (0.25 * dt * dt) * Dsites.transpose() * H + L.S_modal;
+  for (long m = 1; m <= st.longest; ++m) {
+    const double h = m * dt;
+    const Eigen::LLT<Eigen::MatrixXd> mt(newmark_matrix(a, h));
+    if (m > 1)
+      for (auto& b : L.banks) b.add_step(h);
+    StepOperators o{h, NewmarkOperator(a, mt), mt.solve(Dsites), {}, {}};
+    o.S = (0.25 * h * h) * Dsites.transpose() * o.H + modal_compliance(L, static_cast<int>(m - 1));
+    if (!storeys.linear()) o.R = storeys.influence(mt);
+    ops.push_back(std::move(o));
+  }
 
   const Eigen::VectorXd m_ones = a.M * Eigen::VectorXd::Ones(n);
   u = p.u0.size() ? p.u0 : Eigen::VectorXd::Zero(n);
@@ -207,7 +248,6 @@ SearsRowSolver::SearsRowSolver(const SearsRowProblem& p_in, const SearsRowModel&
     acc = a.M.ldlt().solve(-m_ones * ag_at(0.0) - a.C * v - a.K * u);
   } else {
     // f = K u - B r (sears/newmark_storeys.hpp).
-    R_fine = storeys.influence(mt);
     R_coarse = storeys.influence(Eigen::LLT<Eigen::MatrixXd>(newmark_matrix(a, hc)));
     Eigen::VectorXd Br = storeys.correction();
     for (int j = 0; j < n; ++j)
@@ -217,6 +257,7 @@ SearsRowSolver::SearsRowSolver(const SearsRowProblem& p_in, const SearsRowModel&
   }
   F = Eigen::VectorXd::Zero(ns);
   F_next = F;
+  F_prev = F;
   delta_pred.resize(ns);
   delta.resize(ns);
   u_hat.resize(n);
@@ -242,7 +283,7 @@ SearsRowSolver::SearsRowSolver(const SearsRowProblem& p_in, const SearsRowModel&
   disp.resize(nf);
   accel.resize(nf);
   fused.resize(nf);
-  pred_valid.assign(nf, 0);
+  pred_level.assign(nf, 0);
   modal_bound.assign(nf, 0.0);
   site_approach.assign(ns, 0.0);
   asleep.assign(nf, 0);
@@ -257,6 +298,11 @@ SearsRowSolver::SearsRowSolver(const SearsRowProblem& p_in, const SearsRowModel&
   accel_bound.assign(nf, 0.0);
   free_approach.assign(ns, 0.0);
   free_approach_rate.assign(ns, 0.0);
+  if (p.motion && p.motion->dt > 0.0) {
+    const double x = p.motion->dt / dt;
+    const long k = std::lround(x);
+    if (k >= 1 && std::fabs(x - k) <= 1e-9 * x) per_sample = k;
+  }
   for (int s = 0; s < ns && !p.contacts; ++s) {
     free_approach[s] = approach_bound(s);
     free_approach_rate[s] = v(a.sites[s].dof_left) - v(a.sites[s].dof_right);
@@ -287,7 +333,7 @@ void SearsRowSolver::wake(int k) {  // slab k to the start of the current step
     disp[k] = fused[k].disp;
     accel[k] = fused[k].accel;
     pred[k] = fused[k].next_pred;
-    pred_valid[k] = 1;
+    pred_level[k] = 1;
   }
   asleep[k] = 0;
   slept[k] = 0;
@@ -321,7 +367,7 @@ void SearsRowSolver::finish_sleep() {  // at the next point of the coarse grid
     }
     disp[k] = fused[k].disp;
     accel[k] = fused[k].accel;
-    pred_valid[k] = 0;
+    pred_level[k] = 0;
     asleep[k] = 0;
     slept[k] = 0;
   }
@@ -332,9 +378,9 @@ void SearsRowSolver::finish_sleep() {  // at the next point of the coarse grid
 // End-of-step overlaps without contact forces, delta_pred; for a guarded site an upper bound.
 void SearsRowSolver::predict_overlaps() {
   for (int k = 0; k < nf; ++k)
-    if (!asleep[k] && !pred_valid[k]) {
-      pred[k] = L.banks[k].predict(begin[k]);
-      pred_valid[k] = 1;
+    if (!asleep[k] && pred_level[k] != level + 1) {
+      pred[k] = L.banks[k].predict(begin[k], level);
+      pred_level[k] = level + 1;
     }
   for (int s = 0; s < ns; ++s) {
     const int kl = L.site_left_floor[s], kr = L.site_right_floor[s];
@@ -352,7 +398,7 @@ bool SearsRowSolver::guards_hold() {
   for (int s = 0; s < ns; ++s) {
     if (!guarded[s]) continue;
     const int kl = L.site_left_floor[s], kr = L.site_right_floor[s];
-    const double bound_end = delta_pred(s) - S.row(s).dot(F_next);
+    const double bound_end = delta_pred(s) - ops[level].S.row(s).dot(F_next);
     const double scale = std::fabs(u_hat(a.sites[s].dof_left)) +
                          std::fabs(u_hat(a.sites[s].dof_right)) + std::fabs(a.sites[s].gap) +
                          std::fabs(w0[kl].right) + std::fabs(w0[kr].left) + free_bound[kl] +
@@ -374,7 +420,7 @@ void SearsRowSolver::wake_dormant(int k) {
   L.banks[k].advance_free(dormant_steps[k], fused[k]);
   disp[k] = fused[k].disp;
   accel[k] = fused[k].accel;
-  pred_valid[k] = 0;
+  pred_level[k] = 0;
   dormant[k] = 0;
   dormant_steps[k] = 0;
   --n_dormant;
@@ -422,44 +468,106 @@ void SearsRowSolver::newmark_update(double h) {
   acc = a_next;
 }
 
-// One step of Th. 8.8 made implicit in the contact forces (sears_simulation.hpp).
-void SearsRowSolver::fine_step(double t_next) {
-  newmark_predict(dt, nm_fine, t_next);
-  loads(F, begin);
-  if (storeys.linear()) {
-    u_hat = u + dt * v + (0.25 * dt * dt) * (acc + a_next);
-    F_next.setZero();
-    if (p.contacts && ns > 0) {
-      F_next = F;  // warm start (zero at guarded sites)
-      do {
-        predict_overlaps();
-        solve_forces(L.laws, S, delta_pred, guarded, F_next);
-      } while (n_asleep > 0 && !guards_hold());
-    }
-  } else {
-    storey_pass(dt, R_fine, true);
+// One step of Th. 8.8 made implicit in the contact forces (sears_simulation.hpp), of m fine
+// steps: m = 1 unless the contact forces are smooth enough for a longer step (docs/speed.md,
+// "Longer steps through smooth contact forces"). A longer step is solved first (nothing of the
+// state changes but sleeping slabs woken to the step's start) and taken only if the forces'
+// linear interpolation error over it stays within model.contact_step_tolerance; otherwise the
+// step is solved again shorter.
+long SearsRowSolver::room(long i, const Eigen::VectorXd& f) const {
+  bool cross = st.longest > 1 && n_asleep == 0 && per_sample > 0;
+  for (int k = 0; k < nf && cross; ++k) {
+    const int sl = L.floors[k].site_left, sr = L.floors[k].site_right;
+    cross = (sl >= 0 && f(sl) > 0.0) || (sr >= 0 && f(sr) > 0.0);
   }
-  if (ns > 0) a_next.noalias() -= H * F_next;
-  newmark_update(dt);
+  const long r = cross ? per_sample - i % per_sample : st.ratio - i % st.ratio;
+  return std::min(r, steps - i);
+}
+
+long SearsRowSolver::trial_multiple(long i, const Eigen::VectorXd& f) const {
+  const long r = room(i, f);
+  if (r <= m_next) return r;
+  const long k = (r + m_next - 1) / m_next;  // steps to cover the room
+  return (r + k - 1) / k;
+}
+
+long SearsRowSolver::fine_step(long i) {
+  long m = trial_multiple(i, F);
+  double worst = 0.0;
+  for (;;) {
+    level = static_cast<int>(m - 1);
+    const StepOperators& o = ops[level];
+    newmark_predict(o.h, o.nm, (i + m) * dt);
+    loads(F, begin);
+    if (storeys.linear()) {
+      u_hat = u + o.h * v + (0.25 * o.h * o.h) * (acc + a_next);
+      F_next.setZero();
+      if (p.contacts && ns > 0) {
+        F_next = F;  // warm start (zero at guarded sites)
+        do {
+          predict_overlaps();
+          solve_forces(L.laws, o.S, delta_pred, guarded, F_next);
+        } while (n_asleep > 0 && !guards_hold());
+      }
+    } else {
+      storey_pass(o.h, o.R, o.H, true);
+    }
+    worst = step_error(m);
+    if (m == 1 || worst <= 1.0) break;
+    ++out.counts.long_step_rejections;
+    // The error grows as h^2.
+    m = std::max(1L, std::min(m - 1, static_cast<long>(m * kStepSafety / std::sqrt(worst))));
+  }
+  const StepOperators& o = ops[level];
+  if (ns > 0) a_next.noalias() -= o.H * F_next;
+  newmark_update(o.h);
   if (!storeys.linear()) storeys.commit();
   loads(F_next, end);
+  // The next step's multiple (the error grows as h^2); the banks predict for it.
+  m_next = worst > 0.0 ? static_cast<long>(m * kStepSafety / std::sqrt(worst)) : st.longest;
+  m_next = std::clamp(m_next, 1L, st.longest);
+  const long m_after = i + m < steps ? trial_multiple(i + m, F_next) : 1;
   for (int k = 0; k < nf; ++k) {
     if (asleep[k]) {
-      ++slept[k];
+      slept[k] += m;
       continue;
     }
-    L.banks[k].step(begin[k], end[k], fused[k]);
+    L.banks[k].step(begin[k], end[k], fused[k], level, static_cast<int>(m_after - 1));
     disp[k] = fused[k].disp;
     accel[k] = fused[k].accel;
     pred[k] = fused[k].next_pred;
-    pred_valid[k] = 1;
+    pred_level[k] = static_cast<int>(m_after);
   }
+  if (m > 1) ++out.counts.long_steps;
+  F_prev = F;
+  h_prev = o.h;
+  return m;
+}
+
+double SearsRowSolver::step_error(long m) {
+  const double tol = model.contact_step_tolerance;
+  if (st.longest == 1 || !(tol > 0.0)) return 0.0;
+  const double h = m * dt;
+  double worst = 0.0;
+  for (int s = 0; s < ns; ++s) {
+    if (guarded[s]) continue;  // F = 0: a sleeping slab's bound keeps the faces apart
+    // A contact that starts or ends within the step, a site without force (a contact could
+    // start and end within a longer step unseen, as within a coarse step without its bound), or
+    // no previous step: the fine step.
+    const double f0 = F(s), f1 = F_next(s), fm = F_prev(s);
+    if (f0 == 0.0 || f1 == 0.0 || !(h_prev > 0.0)) return kNoLongStep;
+    // F[t_i-1, t_i, t_i+1] = F''/2; a quadratic departs from its chord over h by F'' h^2 / 8.
+    const double d2 = 2.0 * ((f1 - f0) / h - (f0 - fm) / h_prev) / (h + h_prev);
+    worst = std::max(worst, std::fabs(d2) * h * h / (8.0 * tol * std::max(f0, f1)));
+  }
+  return worst;
 }
 
 // The step with yielding storeys: a_next = a_hat + R r_next (and - H F_next), r_next from the
 // storeys' return maps at the end-of-step displacements, iterated to a fixed point; with
 // `contacts` the contact forces are solved again in every pass (warm started).
-void SearsRowSolver::storey_pass(double h, const Eigen::MatrixXd& R, bool contacts) {
+void SearsRowSolver::storey_pass(double h, const Eigen::MatrixXd& R, const Eigen::MatrixXd& H,
+                                 bool contacts) {
   a_base = a_next;
   r_next = storeys.correction();
   F_next.setZero();
@@ -471,7 +579,7 @@ void SearsRowSolver::storey_pass(double h, const Eigen::MatrixXd& R, bool contac
     if (contacts && p.contacts && ns > 0) {
       do {
         predict_overlaps();
-        solve_forces(L.laws, S, delta_pred, guarded, F_next);
+        solve_forces(L.laws, ops[level].S, delta_pred, guarded, F_next);
       } while (n_asleep > 0 && !guards_hold());
       u_end = u_hat;
       u_end.noalias() -= (0.25 * h * h) * (H * F_next);
@@ -488,7 +596,7 @@ void SearsRowSolver::storey_pass(double h, const Eigen::MatrixXd& R, bool contac
 
 void SearsRowSolver::coarse_step(double t_next) {  // F = 0 at both ends
   newmark_predict(hc, nm_coarse, t_next);
-  if (!storeys.linear()) storey_pass(hc, R_coarse, false);
+  if (!storeys.linear()) storey_pass(hc, R_coarse, ops[0].H, false);
   newmark_update(hc);
   if (!storeys.linear()) storeys.commit();
   F_next.setZero();
@@ -505,7 +613,7 @@ void SearsRowSolver::coarse_step(double t_next) {  // F = 0 at both ends
       L.banks[k].step_free(fused[k]);
       disp[k] = fused[k].disp;
       accel[k] = fused[k].accel;
-      pred_valid[k] = 0;
+      pred_level[k] = 0;
     }
 }
 
@@ -644,7 +752,6 @@ void SearsRowSolver::record_peaks(bool coarse, double ag) {
 }
 
 SearsRowResult SearsRowSolver::run() {
-  const long steps = static_cast<long>(std::ceil(p.t_end / dt - 1e-9));
   RowResult& r = out.row;
   long i = 0;
   while (i < steps) {
@@ -653,22 +760,28 @@ SearsRowResult SearsRowSolver::run() {
     if (!coarse && n_dormant > 0) wake_all_dormant();
     if (!coarse) coarse_in_run = 0;
     if (on_grid && !coarse && p.contacts && model.sleeping_slabs) fall_asleep();
-    const double h = coarse ? hc : dt;
-    i += coarse ? st.ratio : 1;
-    const double t_next = i * dt;
     if (p.track_energy) {
       u_prev = u;
       v_prev = v;
     }
+    double h = hc;
     if (coarse) {
-      coarse_step(t_next);
+      i += st.ratio;
+      coarse_step(i * dt);
       ++out.counts.coarse;
+      m_next = 1;
+      F_prev = F;
+      h_prev = hc;
     } else {
-      fine_step(t_next);
+      // A step through contacts stays within the coarse interval and the run.
+      const long m = fine_step(i);
+      i += m;
+      h = m * dt;
       modal_bound_valid = false;
       ++out.counts.fine;
       if (n_asleep > 0 && i % st.ratio == 0) finish_sleep();
     }
+    const double t_next = i * dt;
     if (!u.allFinite())
       throw NumericalError("damped Sears model: non-finite state at t = " + std::to_string(t_next) +
                            " s");

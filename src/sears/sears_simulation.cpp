@@ -31,8 +31,11 @@ void count_impacts(SiteContacts& c, double fraction) {
     }
 }
 
-double sears_row_step(const BuildingRow& row, const GroundMotion* motion,
-                      const SearsRowModel& model) {
+namespace {
+// The step rule's limits for this row and motion (sears/step_rule.hpp), the automatic step
+// dividing the record spacing.
+StepLimits row_step_limits(const BuildingRow& row, const GroundMotion* motion,
+                           const SearsRowModel& model) {
   const AssembledRow a = assemble(row);
   const RowContactLayout L = make_layout(row, a, model);
   double w_max = 0.0, t_c = std::numeric_limits<double>::infinity();
@@ -55,13 +58,20 @@ double sears_row_step(const BuildingRow& row, const GroundMotion* motion,
   // The automatic step divides the record spacing, so that steps end on its samples.
   if (motion && !(model.dt_s > 0.0))
     lim.auto_dt_s = motion->dt / std::ceil(motion->dt / lim.auto_dt_s - 1e-9);
-  return choose_step(lim, model.dt_s);
+  return lim;
+}
+}  // namespace
+
+double sears_row_step(const BuildingRow& row, const GroundMotion* motion,
+                      const SearsRowModel& model) {
+  return choose_step(row_step_limits(row, motion, model), model.dt_s);
 }
 
 SearsSteps sears_row_steps(const BuildingRow& row, const GroundMotion* motion,
                            const SearsRowModel& model) {
   SearsSteps st;
-  st.fine_s = st.coarse_s = sears_row_step(row, motion, model);
+  const StepLimits lim = row_step_limits(row, motion, model);
+  st.fine_s = st.coarse_s = choose_step(lim, model.dt_s);
   if (model.stepping == SearsStepping::fixed) return st;
   // The coarse step: Newmark accuracy for the buildings, and no step over a record sample.
   double hc = shortest_building_period(assemble(row)) * kCoarseStepPerBuildingPeriod;
@@ -79,6 +89,9 @@ SearsSteps sears_row_steps(const BuildingRow& row, const GroundMotion* motion,
     st.fine_s = hc / st.ratio;
   }
   st.coarse_s = st.ratio * st.fine_s;
+  if (model.contact_step_tolerance > 0.0)
+    st.longest =
+        std::clamp(static_cast<long>(std::floor(lim.max_dt_s / st.fine_s + 1e-9)), 1L, st.ratio);
   return st;
 }
 

@@ -84,6 +84,13 @@ struct SearsRowModel {
   /// (docs/speed.md). false: every slab takes every step (for comparison; the results agree to
   /// round-off).
   bool sleeping_slabs = true;
+  /// Event stepping: a step through contacts may span up to SearsSteps::longest fine steps
+  /// while every site's contact force, linear over the step, departs from its quadratic
+  /// interpolant through the last three step ends by at most this fraction of the force: the
+  /// second divided difference F'' / 2 gives the departure F'' h^2 / 8 (docs/speed.md, "Longer
+  /// steps through smooth contact forces"). A step in which a contact starts or ends is a fine
+  /// one. 0: every step through contacts is a fine one [-].
+  double contact_step_tolerance = 1e-3;
   /// Approach velocity used for the Hertz contact time scale of the step rule [m/s].
   double hertz_reference_velocity = 1.0;
   /// A contact phase counts as an impact when its peak force is at least this fraction of the
@@ -137,16 +144,18 @@ struct SearsRowProblem {
 
 /// How a run was stepped.
 struct SearsStepCounts {
-  long fine = 0;                ///< steps of the fine (step rule) size
-  long fine_in_contact = 0;     ///< fine steps with a contact force at either end
-  long coarse = 0;              ///< coarse steps (event stepping)
-  long bound_violations = 0;    ///< coarse steps that ended with an overlap (must stay 0)
-  long slab_sleeps = 0;         ///< slabs put to sleep for a run of fine steps (event stepping)
-  long slab_wakes = 0;          ///< sleeping slabs woken before the end of their interval
-  long dormant_runs = 0;        ///< slabs gone dormant in runs of coarse steps
-  long dormant_slab_steps = 0;  ///< coarse steps skipped by dormant slabs (per slab)
-  long dormant_wakes = 0;       ///< dormant slabs woken (a bound did not settle a question)
-  long storey_iterations = 0;   ///< extra passes for yielding storeys (inelastic buildings)
+  long fine = 0;                  ///< steps of the fine (step rule) size
+  long fine_in_contact = 0;       ///< fine steps with a contact force at either end
+  long coarse = 0;                ///< coarse steps (event stepping)
+  long bound_violations = 0;      ///< coarse steps that ended with an overlap (must stay 0)
+  long slab_sleeps = 0;           ///< slabs put to sleep for a run of fine steps (event stepping)
+  long slab_wakes = 0;            ///< sleeping slabs woken before the end of their interval
+  long dormant_runs = 0;          ///< slabs gone dormant in runs of coarse steps
+  long dormant_slab_steps = 0;    ///< coarse steps skipped by dormant slabs (per slab)
+  long dormant_wakes = 0;         ///< dormant slabs woken (a bound did not settle a question)
+  long storey_iterations = 0;     ///< extra passes for yielding storeys (inelastic buildings)
+  long long_steps = 0;            ///< fine steps (counted in `fine`) longer than the fine step
+  long long_step_rejections = 0;  ///< longer steps solved again shorter (force not smooth)
 };
 
 struct SearsRowResult {
@@ -173,6 +182,9 @@ struct SearsSteps {
   double fine_s = 0.0;
   double coarse_s = 0.0;
   long ratio = 1;
+  /// Event stepping: the longest step through contacts, in fine steps: at most `ratio` and the
+  /// step rule's largest allowed step (sears/step_rule.hpp); 1 without longer steps [-].
+  long longest = 1;
 };
 SearsSteps sears_row_steps(const BuildingRow& row, const GroundMotion* motion,
                            const SearsRowModel& model);

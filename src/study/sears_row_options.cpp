@@ -28,6 +28,10 @@ std::vector<OptionSpec> sears_row_option_specs() {
       {"sears.dt", "s", "", "sears: (fine) time step (default: automatic, docs/sears.md)"},
       {"sears.integrator", "", "event",
        "sears: event (coarse steps while a bound excludes contact, docs/speed.md) or fixed"},
+      {"sears.contact_step_tolerance", "-", "0.001",
+       "sears: event: steps through contacts up to the largest allowed step while the contact "
+       "forces' linear interpolation error stays below this fraction of the force; 0: every "
+       "one a fine step (docs/speed.md)"},
   };
 }
 
@@ -110,6 +114,11 @@ sears::SearsRowModel sears_row_from_options(const Options& opt, const BuildingRo
   } else {
     throw opt.invalid(ikey, "valid: event or fixed");
   }
+  m.contact_step_tolerance = opt.get_double("sears.contact_step_tolerance");
+  if (!(m.contact_step_tolerance >= 0.0 && m.contact_step_tolerance <= 0.1))
+    throw opt.invalid("sears.contact_step_tolerance",
+                      "valid: 0 (every step through contacts a fine one) or a fraction in "
+                      "(0, 0.1]");
   return m;
 }
 

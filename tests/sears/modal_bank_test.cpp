@@ -95,6 +95,43 @@ TEST(SearsModalBank, FlexibilityIsTheFaceResponseToAUnitEndOfStepLoad) {
   EXPECT_NEAR(copy.displacement().left, p2.left, 1e-15);
 }
 
+TEST(SearsModalBank, ALongerStepIsTheFineStepsItSpansWhenTheLoadIsLinearOverIt) {
+  // The recurrence is exact for a load linear over the step (Chopra sec. 5.2), so one step of
+  // 3 dt (add_step) and three steps of dt give the same state when the end loads are linear
+  // over the 3 dt, from any state; and a step may predict for a following step of another
+  // length (next_pred by that length's recurrence).
+  const double dt = 2e-6;
+  ModalBank fine(test_bar(), 50, 0.05, dt);
+  EXPECT_EQ(fine.add_step(3 * dt), 1);
+  EXPECT_DOUBLE_EQ(fine.step_size(1), 3 * dt);
+  EXPECT_GT(fine.flexibility(1).same, fine.flexibility(0).same);  // more time to deform
+  ModalBank::StepResult r;
+  fine.step(EndLoads{0.0, 0.0}, EndLoads{2e3, -1e3}, r);  // some internal vibration
+  fine.step(EndLoads{2e3, -1e3}, EndLoads{-5e2, 0.0}, r);
+  ModalBank coarse = fine;
+  const EndLoads b{-5e2, 0.0}, e{4e3, 3e3};
+  auto at = [&](double f) {
+    return EndLoads{b.left_N + f * (e.left_N - b.left_N), b.right_N + f * (e.right_N - b.right_N)};
+  };
+  for (int j = 0; j < 3; ++j) fine.step(at(j / 3.0), at((j + 1) / 3.0), r, 0, j == 2 ? 1 : 0);
+  ModalBank::StepResult rc;
+  coarse.step(b, e, rc, 1);
+  const SectionValues uf = fine.displacement(), uc = coarse.displacement();
+  const SectionValues vf = fine.velocity(), vc = coarse.velocity();
+  const double su = std::fabs(uc.left) + std::fabs(uc.right), sv = std::fabs(vc.left);
+  ASSERT_GT(su, 0.0);
+  EXPECT_NEAR(uf.left, uc.left, 1e-9 * su);
+  EXPECT_NEAR(uf.right, uc.right, 1e-9 * su);
+  EXPECT_NEAR(uf.centre, uc.centre, 1e-9 * su);
+  EXPECT_NEAR(vf.left, vc.left, 1e-9 * sv);
+  EXPECT_NEAR(vf.right, vc.right, 1e-9 * sv);
+  // The last fine step predicted for a 3 dt step: predict(e, 1) of the state it reached.
+  const SectionValues p = fine.predict(e, 1);
+  EXPECT_NEAR(r.next_pred.left, p.left, 1e-12 * su);
+  EXPECT_NEAR(r.next_pred.right, p.right, 1e-12 * su);
+  EXPECT_GT(std::fabs(p.left - fine.predict(e, 0).left), 1e-3 * su);  // the lengths differ
+}
+
 TEST(SearsModalBank, StaticEndLoadGivesTheQuasiStaticStrainField) {
   // A constant force P pulling at x = l on a free bar with damping settles (relative to the
   // rigid body) to the quasi-static field of a uniformly accelerated bar,
