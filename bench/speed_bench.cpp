@@ -16,8 +16,8 @@
 // "fine-step": the event path's fine step against the fixed path; "contact-steps": the longer
 // steps through smooth contact forces at several sears.contact_step_tolerance values;
 // "ch8": case 1 alone; "lumped": only the adaptive run of case 2, for profiling, with "check" also
-// its fixed-step reference and the case 2 line; "sample ID": peak forces of one campaign sample on
-// the default path, the fixed path at its automatic step and at 10 us)
+// its fixed-step reference and the case 2 line; "sample ID": peak forces of sample ID (0..19) of
+// case 3's campaign on the default path, the fixed path at its automatic step and at 10 us)
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -418,6 +418,11 @@ int main(int argc, char** argv) {
     const CampaignStudy study = load_campaign(src, kSamples);
     const CampaignStudy ref = reference_of(study);
     const long id = std::stol(argv[3]);
+    if (id < 0 || id >= kSamples) {
+      std::fprintf(stderr, "bench_speed: sample %ld: valid: 0..%ld (case 3's campaign)\n", id,
+                   kSamples - 1);
+      return 2;
+    }
     CampaignStudy auto_fixed = study;
     auto_fixed.sears.stepping = sears::SearsStepping::fixed;
     auto_fixed.integrator = ref.integrator;

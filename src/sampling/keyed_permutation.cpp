@@ -1,6 +1,7 @@
 #include "sampling/keyed_permutation.hpp"
 
 #include <stdexcept>
+#include <string>
 
 namespace pound {
 
@@ -30,6 +31,10 @@ std::uint64_t KeyedPermutation::encrypt(std::uint64_t x) const {
 }
 
 std::uint64_t KeyedPermutation::operator()(std::uint64_t i) const {
+  // Outside [0, n) the walk need not come back below n (it would not return).
+  if (i >= n_)
+    throw std::out_of_range("KeyedPermutation: index " + std::to_string(i) + " outside [0, " +
+                            std::to_string(n_) + ")");
   // Cycle walking: the orbit of i under the bijection on [0, 2^(2w)) returns to [0, n), and
   // walking from distinct i < n gives distinct results (Black & Rogaway 2002, sec. 5).
   std::uint64_t x = encrypt(i);

@@ -17,7 +17,7 @@ class KeyedPermutation {
  public:
   /// The permutation of [0, n) keyed by (seed, stream); n >= 1.
   KeyedPermutation(std::uint64_t seed, std::uint64_t stream, std::uint64_t n);
-  /// pi(i) for 0 <= i < n.
+  /// pi(i) for 0 <= i < n; std::out_of_range otherwise.
   std::uint64_t operator()(std::uint64_t i) const;
   std::uint64_t size() const { return n_; }
 

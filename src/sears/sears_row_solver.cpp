@@ -468,12 +468,6 @@ void SearsRowSolver::newmark_update(double h) {
   acc = a_next;
 }
 
-// One step of Th. 8.8 made implicit in the contact forces (sears_simulation.hpp), of m fine
-// steps: m = 1 unless the contact forces are smooth enough for a longer step (docs/speed.md,
-// "Longer steps through smooth contact forces"). A longer step is solved first (nothing of the
-// state changes but sleeping slabs woken to the step's start) and taken only if the forces'
-// linear interpolation error over it stays within model.contact_step_tolerance; otherwise the
-// step is solved again shorter.
 long SearsRowSolver::room(long i, const Eigen::VectorXd& f) const {
   bool cross = st.longest > 1 && n_asleep == 0 && per_sample > 0;
   for (int k = 0; k < nf && cross; ++k) {
@@ -491,6 +485,12 @@ long SearsRowSolver::trial_multiple(long i, const Eigen::VectorXd& f) const {
   return (r + k - 1) / k;
 }
 
+// One step of Th. 8.8 made implicit in the contact forces (sears_simulation.hpp), of m fine
+// steps: m = 1 unless the contact forces are smooth enough for a longer step (docs/speed.md,
+// "Longer steps through smooth contact forces"). A longer step is solved first (nothing of the
+// state changes but sleeping slabs woken to the step's start) and taken only if the forces'
+// linear interpolation error over it stays within model.contact_step_tolerance; otherwise the
+// step is solved again shorter.
 long SearsRowSolver::fine_step(long i) {
   long m = trial_multiple(i, F);
   double worst = 0.0;

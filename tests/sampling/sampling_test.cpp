@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <stdexcept>
 
 #include "core/error.hpp"
 #include "sampling/counter_rng.hpp"
@@ -107,6 +108,15 @@ TEST(KeyedPermutation, IsABijectionForSizesThatAreNotPowersOfTwo) {
       hit[j] = 1;
     }
   }
+}
+
+TEST(KeyedPermutation, AnIndexOutsideTheDomainIsRefusedNotWalkedForever) {
+  // Cycle walking from i >= n need not come back below n: before this check, pi(815) of a
+  // 20-sample permutation never returned (bench_speed's `sample 815` hung).
+  const KeyedPermutation p(2026, stream_id("gap"), 20);
+  EXPECT_LT(p(19), 20u);
+  EXPECT_THROW(p(20), std::out_of_range);
+  EXPECT_THROW(p(815), std::out_of_range);
 }
 
 TEST(KeyedPermutation, LooksRandomAndDependsOnTheKey) {
