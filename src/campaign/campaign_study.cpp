@@ -162,8 +162,9 @@ CampaignStudy campaign_from_options(const Options& opt, long samples_override, l
   const std::string src = opt.get_string("motion.source");
   if (src == "generated") {
     st.source = MotionSource::generated;
-    // A record, or how to read one, named for a campaign of generated motions would be ignored
-    // without a word (motion_file_spec reads these keys for records only).
+    // A record, or how to read or process one, named for a campaign of generated motions would
+    // be ignored without a word (motion_file_spec and process_record use these keys for records
+    // only).
     for (const char* key :
          {"motion.file", "motion.records", "motion.format", "motion.units", "motion.dt",
           "motion.scale", "motion.baseline", "motion.check_pga", "motion.duration"})
@@ -217,9 +218,7 @@ CampaignStudy campaign_from_options(const Options& opt, long samples_override, l
            opt.where("motion.records").rfind("command line", 0) == 0)
               ? f
               : dir.substr(0, slash + 1) + f;
-      GroundMotion g = read_motion(motion_file_spec(opt, path));
-      if (opt.given("motion.duration")) g = truncate(g, opt.get_positive("motion.duration"));
-      st.records.push_back(std::move(g));
+      st.records.push_back(process_record(opt, read_motion(motion_file_spec(opt, path))));
     }
   } else {
     throw opt.invalid("motion.source", "valid: generated or records");

@@ -268,7 +268,10 @@ MotionFileSpec motion_file_spec(const Options& opt, const std::string& path) {
 }
 
 GroundMotion motion_from_options(const Options& opt) {
-  GroundMotion g = read_motion(motion_file_spec(opt, opt.get_path("motion.file")));
+  return process_record(opt, read_motion(motion_file_spec(opt, opt.get_path("motion.file"))));
+}
+
+GroundMotion process_record(const Options& opt, GroundMotion g) {
   if (opt.given("motion.duration")) g = truncate(g, opt.get_positive("motion.duration"));
   const double s = opt.get_double("motion.scale");
   if (!(s > 0)) throw opt.invalid("motion.scale", "valid: a factor > 0");

@@ -25,6 +25,9 @@ ContactSpec contact_from_options(const Options& opt, const BuildingRow& row);
 IntegratorSettings integrator_from_options(const Options& opt);
 /// The record file's format, units, dt and plausibility check from the [motion] keys.
 MotionFileSpec motion_file_spec(const Options& opt, const std::string& path);
+/// A read record truncated (motion.duration), scaled (motion.scale) and, with motion.baseline,
+/// baseline-corrected, as the [motion] keys say.
+GroundMotion process_record(const Options& opt, GroundMotion g);
 /// Reads, truncates, scales and (optionally) baseline-corrects the record.
 GroundMotion motion_from_options(const Options& opt);
 

@@ -64,6 +64,22 @@ TEST(Sample, StripesScaleTheMotionToTheLevel) {
   }
 }
 
+TEST(Sample, RecordsAreScaledAndBaselineCorrectedAsTheMotionKeysSay) {
+  // motion.scale and motion.baseline apply to a campaign's records as to pound simulate's
+  // record (process_record); they were dropped without a word before.
+  const CampaignStudy plain = study({"--intensity.levels", "0.2"});
+  const CampaignStudy scaled = study({"--intensity.levels", "0.2", "--motion.scale", "2"});
+  const CampaignStudy corrected = study({"--intensity.levels", "0.2", "--motion.baseline", "true"});
+  ASSERT_EQ(scaled.records.size(), 1u);
+  EXPECT_NEAR(scaled.records[0].pga(), 2.0 * plain.records[0].pga(),
+              1e-12 * plain.records[0].pga());
+  ASSERT_EQ(corrected.records[0].accel.size(), plain.records[0].accel.size());
+  double change = 0.0;
+  for (std::size_t i = 0; i < plain.records[0].accel.size(); ++i)
+    change = std::max(change, std::fabs(corrected.records[0].accel[i] - plain.records[0].accel[i]));
+  EXPECT_GT(change, 1e-6 * plain.records[0].pga());
+}
+
 TEST(Sample, SameIdGivesTheSameOutcomeOnAnotherRunner) {
   const CampaignStudy st = study({"--intensity.levels", "0.2"});
   SampleRunner a(st), b(st);
