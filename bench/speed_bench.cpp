@@ -169,9 +169,6 @@ CampaignStudy reference_of(const CampaignStudy& study) {
   return ref;
 }
 
-// Convergence of the event path in its fine step (docs/speed.md, "Fine step"): chapter 8, full
-// record, fine steps h_c / r for r = 11 (T_min / 20, the former automatic step) down to 3,
-// against the fixed path at 10 us: the largest relative differences per quantity.
 // Largest relative differences of run e from run r: floor displacement, drift, floor
 // acceleration, site force, slab face and centre acceleration (d[0..5]); the same impacts.
 struct SearsDifferences {
@@ -231,6 +228,9 @@ void contact_step_study(const BuildingRow& row, const GroundMotion& motion,
   }
 }
 
+// Convergence of the event path in its fine step (docs/speed.md, "Fine step"): chapter 8, full
+// record, fine steps h_c / r for r = 11 (T_min / 20, the former automatic step) down to 3,
+// against the fixed path at 10 us: the largest relative differences per quantity.
 void fine_step_study(const BuildingRow& row, const GroundMotion& motion,
                      sears::SearsRowModel model) {
   sears::SearsRowModel ref = model;

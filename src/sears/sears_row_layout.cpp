@@ -34,6 +34,8 @@ RowContactLayout make_layout(const BuildingRow& row, const AssembledRow& a,
     throw InputError("damped Sears model: xi_s must be in [0, 1)");
   if (!(model.impact_force_fraction >= 0.0 && model.impact_force_fraction <= 1.0))
     throw InputError("damped Sears model: impact_force_fraction must be in [0, 1]");
+  if (!(model.contact_step_tolerance >= 0.0 && model.contact_step_tolerance <= 0.1))
+    throw InputError("damped Sears model: contact_step_tolerance must be 0 or in (0, 0.1]");
   RowContactLayout L;
   auto floor_index = [&](int dof) {
     for (std::size_t i = 0; i < L.floors.size(); ++i)
@@ -84,7 +86,6 @@ void build_banks(RowContactLayout& L, const BuildingRow& row, const SearsRowMode
   for (const auto& f : L.floors)
     L.banks.emplace_back(floor_slab(row, model, f.building, f.floor - 1), model.modes, model.xi_s,
                          dt);
-  L.S_modal = modal_compliance(L, 0);
 }
 
 Eigen::MatrixXd modal_compliance(const RowContactLayout& L, int level) {

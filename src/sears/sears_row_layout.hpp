@@ -25,8 +25,6 @@ struct RowContactLayout {
   std::vector<int> site_left_floor;   ///< per site: index into floors of the left building's floor
   std::vector<int> site_right_floor;  ///< per site: the right building's floor
   std::vector<ContactLaw> laws;       ///< per site
-  /// Modal part of the compliance: delta_s changes by -sum_t S_modal(s,t) F_t [m/N].
-  Eigen::MatrixXd S_modal;
 };
 
 /// The slab of floor j (0-based) of building b.
@@ -36,12 +34,12 @@ Slab floor_slab(const BuildingRow& row, const SearsRowModel& model, int b, int j
 RowContactLayout make_layout(const BuildingRow& row, const AssembledRow& a,
                              const SearsRowModel& model);
 
-/// Builds the banks for step dt and S_modal.
+/// Builds the banks for step dt.
 void build_banks(RowContactLayout& layout, const BuildingRow& row, const SearsRowModel& model,
                  double dt);
 
-/// The modal part of the compliance for the banks' recurrence `level` (ModalBank::add_step)
-/// [m/N]; level 0 is S_modal.
+/// The modal part of the compliance for the banks' recurrence `level` (ModalBank::add_step):
+/// delta_s changes by -sum_t S(s,t) F_t [m/N].
 Eigen::MatrixXd modal_compliance(const RowContactLayout& layout, int level);
 
 }  // namespace pound::sears

@@ -19,7 +19,7 @@ namespace {
 
 // Longer steps through smooth contact forces (docs/speed.md): the next step's length is
 // kStepSafety times the one the error estimate allows; kNoLongStep marks a step that must be
-// a fine one (a contact starting or ending within it).
+// a fine one (SearsRowSolver::step_error).
 constexpr double kStepSafety = 0.9;
 constexpr double kNoLongStep = std::numeric_limits<double>::infinity();
 
@@ -118,7 +118,7 @@ class SearsRowSolver {
   // kNoLongStep when the step must be a fine one.
   double step_error(long m);
   void coarse_step(double t_next);
-  void storey_pass(double h, const Eigen::MatrixXd& R, const Eigen::MatrixXd& H, bool contacts);
+  void storey_pass(double h, const Eigen::MatrixXd& R, bool contacts);
   void add_energy(double h, double t_next);
   bool contact_free();
   // Results after a step.
@@ -140,6 +140,7 @@ class SearsRowSolver {
   // ops[m - 1]: steps of m fine steps through contacts; the modal banks' recurrence m - 1.
   std::vector<StepOperators> ops;
   const NewmarkOperator nm_coarse;  // coarse steps carry no contact force (event stepping)
+  long longest = 1;                 // ops.size(): the longest step through contacts [fine steps]
   int level = 0;                    // ops[level]: the step being solved
   TranslationBound bound;
 
@@ -230,7 +231,10 @@ SearsRowSolver::SearsRowSolver(const SearsRowProblem& p_in, const SearsRowModel&
     Dsites(a.sites[s].dof_left, s) = 1.0;
     Dsites(a.sites[s].dof_right, s) = -1.0;
   }
-  for (long m = 1; m <= st.longest; ++m) {
+  // A run without contacts at a row with contact sites never carries a force, so its steps
+  // off the coarse grid (the end of the run) are fine ones: one length.
+  longest = !p.contacts && ns > 0 ? 1 : st.longest;
+  for (long m = 1; m <= longest; ++m) {
     const double h = m * dt;
     const Eigen::LLT<Eigen::MatrixXd> mt(newmark_matrix(a, h));
     if (m > 1)
@@ -469,7 +473,7 @@ void SearsRowSolver::newmark_update(double h) {
 }
 
 long SearsRowSolver::room(long i, const Eigen::VectorXd& f) const {
-  bool cross = st.longest > 1 && n_asleep == 0 && per_sample > 0;
+  bool cross = longest > 1 && n_asleep == 0 && per_sample > 0;
   for (int k = 0; k < nf && cross; ++k) {
     const int sl = L.floors[k].site_left, sr = L.floors[k].site_right;
     cross = (sl >= 0 && f(sl) > 0.0) || (sr >= 0 && f(sr) > 0.0);
@@ -494,11 +498,11 @@ long SearsRowSolver::trial_multiple(long i, const Eigen::VectorXd& f) const {
 long SearsRowSolver::fine_step(long i) {
   long m = trial_multiple(i, F);
   double worst = 0.0;
+  loads(F, begin);
   for (;;) {
     level = static_cast<int>(m - 1);
     const StepOperators& o = ops[level];
     newmark_predict(o.h, o.nm, (i + m) * dt);
-    loads(F, begin);
     if (storeys.linear()) {
       u_hat = u + o.h * v + (0.25 * o.h * o.h) * (acc + a_next);
       F_next.setZero();
@@ -510,7 +514,7 @@ long SearsRowSolver::fine_step(long i) {
         } while (n_asleep > 0 && !guards_hold());
       }
     } else {
-      storey_pass(o.h, o.R, o.H, true);
+      storey_pass(o.h, o.R, true);
     }
     worst = step_error(m);
     if (m == 1 || worst <= 1.0) break;
@@ -524,8 +528,8 @@ long SearsRowSolver::fine_step(long i) {
   if (!storeys.linear()) storeys.commit();
   loads(F_next, end);
   // The next step's multiple (the error grows as h^2); the banks predict for it.
-  m_next = worst > 0.0 ? static_cast<long>(m * kStepSafety / std::sqrt(worst)) : st.longest;
-  m_next = std::clamp(m_next, 1L, st.longest);
+  m_next = worst > 0.0 ? static_cast<long>(m * kStepSafety / std::sqrt(worst)) : longest;
+  m_next = std::clamp(m_next, 1L, longest);
   const long m_after = i + m < steps ? trial_multiple(i + m, F_next) : 1;
   for (int k = 0; k < nf; ++k) {
     if (asleep[k]) {
@@ -546,14 +550,16 @@ long SearsRowSolver::fine_step(long i) {
 
 double SearsRowSolver::step_error(long m) {
   const double tol = model.contact_step_tolerance;
-  if (st.longest == 1 || !(tol > 0.0)) return 0.0;
+  if (longest == 1 || !(tol > 0.0)) return 0.0;
   const double h = m * dt;
   double worst = 0.0;
   for (int s = 0; s < ns; ++s) {
-    if (guarded[s]) continue;  // F = 0: a sleeping slab's bound keeps the faces apart
-    // A contact that starts or ends within the step, a site without force (a contact could
-    // start and end within a longer step unseen, as within a coarse step without its bound), or
-    // no previous step: the fine step.
+    // A site whose two slabs sleep keeps F = 0 by their bound over the whole coarse interval.
+    // A contact that starts or ends within the step, any other site without force (a contact
+    // could start and end within a longer step unseen, as within a coarse step without its
+    // bound; with one slab awake the guard is checked at the step's end only), or no previous
+    // step: the fine step.
+    if (asleep[L.site_left_floor[s]] && asleep[L.site_right_floor[s]]) continue;
     const double f0 = F(s), f1 = F_next(s), fm = F_prev(s);
     if (f0 == 0.0 || f1 == 0.0 || !(h_prev > 0.0)) return kNoLongStep;
     // F[t_i-1, t_i, t_i+1] = F''/2; a quadratic departs from its chord over h by F'' h^2 / 8.
@@ -566,8 +572,7 @@ double SearsRowSolver::step_error(long m) {
 // The step with yielding storeys: a_next = a_hat + R r_next (and - H F_next), r_next from the
 // storeys' return maps at the end-of-step displacements, iterated to a fixed point; with
 // `contacts` the contact forces are solved again in every pass (warm started).
-void SearsRowSolver::storey_pass(double h, const Eigen::MatrixXd& R, const Eigen::MatrixXd& H,
-                                 bool contacts) {
+void SearsRowSolver::storey_pass(double h, const Eigen::MatrixXd& R, bool contacts) {
   a_base = a_next;
   r_next = storeys.correction();
   F_next.setZero();
@@ -582,7 +587,7 @@ void SearsRowSolver::storey_pass(double h, const Eigen::MatrixXd& R, const Eigen
         solve_forces(L.laws, ops[level].S, delta_pred, guarded, F_next);
       } while (n_asleep > 0 && !guards_hold());
       u_end = u_hat;
-      u_end.noalias() -= (0.25 * h * h) * (H * F_next);
+      u_end.noalias() -= (0.25 * h * h) * (ops[level].H * F_next);
     } else {
       u_end = u_hat;
     }
@@ -596,7 +601,7 @@ void SearsRowSolver::storey_pass(double h, const Eigen::MatrixXd& R, const Eigen
 
 void SearsRowSolver::coarse_step(double t_next) {  // F = 0 at both ends
   newmark_predict(hc, nm_coarse, t_next);
-  if (!storeys.linear()) storey_pass(hc, R_coarse, ops[0].H, false);
+  if (!storeys.linear()) storey_pass(hc, R_coarse, false);
   newmark_update(hc);
   if (!storeys.linear()) storeys.commit();
   F_next.setZero();
@@ -773,7 +778,7 @@ SearsRowResult SearsRowSolver::run() {
       F_prev = F;
       h_prev = hc;
     } else {
-      // A step through contacts stays within the coarse interval and the run.
+      // A step through contacts (SearsRowSolver::room says how far it may reach).
       const long m = fine_step(i);
       i += m;
       h = m * dt;

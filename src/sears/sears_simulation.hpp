@@ -82,7 +82,7 @@ struct SearsRowModel {
   /// stepped) while a bound shows their sites stay apart, and in runs of coarse steps slabs go
   /// dormant while bounds show that their free vibration changes no decision and no peak
   /// (docs/speed.md). false: every slab takes every step (for comparison; the results agree to
-  /// round-off).
+  /// round-off with contact_step_tolerance = 0: longer steps depend on which slabs sleep).
   bool sleeping_slabs = true;
   /// Event stepping: a step through contacts may span up to SearsSteps::longest fine steps
   /// while every site's contact force, linear over the step, departs from its quadratic
@@ -144,8 +144,8 @@ struct SearsRowProblem {
 
 /// How a run was stepped.
 struct SearsStepCounts {
-  long fine = 0;                  ///< steps of the fine (step rule) size
-  long fine_in_contact = 0;       ///< fine steps with a contact force at either end
+  long fine = 0;                  ///< steps through contacts: the fine (step rule) size or longer
+  long fine_in_contact = 0;       ///< of those, steps with a contact force at either end
   long coarse = 0;                ///< coarse steps (event stepping)
   long bound_violations = 0;      ///< coarse steps that ended with an overlap (must stay 0)
   long slab_sleeps = 0;           ///< slabs put to sleep for a run of fine steps (event stepping)
