@@ -1,6 +1,8 @@
 #include "structure/building_row.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 #include "hysteresis/registry.hpp"
 
@@ -70,6 +72,14 @@ AssembledRow assemble(const BuildingRow& row) {
     }
   }
   return out;
+}
+
+double shortest_period(const AssembledRow& a) {
+  double t = std::numeric_limits<double>::infinity();
+  for (const auto& p : a.periods)
+    for (int i = 0; i < p.size(); ++i)
+      if (p(i) > 0.0 && std::isfinite(p(i))) t = std::min(t, p(i));
+  return t;
 }
 
 }  // namespace pound

@@ -54,6 +54,10 @@ struct AssembledRow {
 /// stiffness k_i = K(i, i) + K(i, i+1) and the floors below from the building offsets.
 std::vector<RowStorey> elastic_storeys(const AssembledRow& a);
 
+/// The shortest positive finite undamped period of the row's buildings [s]; infinity when none
+/// (free bodies).
+double shortest_period(const AssembledRow& a);
+
 /// Number of colliding levels of pair p (min floor count).
 int colliding_levels(const BuildingRow& row, int pair);
 AssembledRow assemble(const BuildingRow& row);

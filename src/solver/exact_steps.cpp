@@ -1,0 +1,94 @@
+#include "solver/exact_steps.hpp"
+
+#include <cmath>
+
+namespace pound {
+
+ExactSteps::ExactSteps(const ExactSteps& o)
+    : enabled_(o.enabled_),
+      h_(o.h_),
+      point_(o.point_),
+      declined_(o.declined_),
+      own_cache_(o.own_cache_),
+      cache_(o.cache_ == &o.own_cache_ ? &own_cache_ : o.cache_),
+      config_(o.config_),
+      offsets_ready_(o.offsets_ready_),
+      offsets_response_(o.offsets_response_),
+      k_scratch_(o.k_scratch_),
+      visits_(o.visits_),
+      declined_at_top_(o.declined_at_top_),
+      visited_(o.visited_) {}
+
+void ExactSteps::enable(const AssembledRow& row, double h_max, double rec_dt,
+                        ExactStepCache* shared) {
+  enabled_ = true;
+  h_ = h_max;
+  if (rec_dt > 0) h_ = rec_dt / std::ceil(rec_dt / h_max * (1 - 1e-12));
+  point_ = 0;
+  if (shared) cache_ = shared;
+  if (cache_->row != &row || cache_->h != h_) {
+    cache_->entries.clear();
+    cache_->row = &row;
+    cache_->h = h_;
+  }
+  invalidate();
+}
+
+bool ExactSteps::on_grid(double t) {
+  while (double(point_ + 1) * h_ <= t * (1 + 1e-14) + 1e-15) ++point_;
+  return std::fabs(t - double(point_) * h_) <= 1e-14 * std::max(1.0, t) + 1e-15;
+}
+
+void ExactSteps::undo_iteration() {
+  if (visited_ >= 0) --visits_[visited_];
+  declined_ = declined_at_top_;
+}
+
+const LinearStep* ExactSteps::propagator(const RowDynamics& dyn, const AssembledRow& row) {
+  auto& entries = cache_->entries;
+  if (config_ < 0) {
+    dyn.stiffness(k_scratch_);
+    for (std::size_t i = 0; i < entries.size() && config_ < 0; ++i)
+      if (entries[i].K == k_scratch_) config_ = static_cast<int>(i);
+    if (config_ < 0) {
+      entries.push_back({k_scratch_, false, {}});
+      config_ = static_cast<int>(entries.size()) - 1;
+    }
+    if (visits_.size() < entries.size()) visits_.resize(entries.size(), 0);
+  }
+  if (visits_[config_] < ExactStepCache::kExactWarmup) {
+    visited_ = config_;
+    if (++visits_[config_] < ExactStepCache::kExactWarmup) return nullptr;
+  }
+  ExactStepCache::Entry& e = entries[config_];
+  const int n = row.dofs();
+  if (!e.ready) {
+    // z = [u; v], z' = A z + B w, w = [off; ag]: u' = v, v' = -M^-1 (K u + C v + off) - ag
+    // (physics.md section 1, without contact forces; docs/hysteresis.md for K_t and off).
+    const Eigen::VectorXd& im = row.inv_mass;
+    Eigen::MatrixXd A = Eigen::MatrixXd::Zero(2 * n, 2 * n);
+    A.topRightCorner(n, n).setIdentity();
+    A.bottomLeftCorner(n, n) = -(im.asDiagonal() * e.K);
+    A.bottomRightCorner(n, n) = -(im.asDiagonal() * row.C);
+    Eigen::MatrixXd B = Eigen::MatrixXd::Zero(2 * n, n + 1);
+    B.block(n, 0, n, n) = -Eigen::MatrixXd(im.asDiagonal());
+    B.block(n, n, n, 1).setConstant(-1.0);
+    // Balance displacements against velocities by the row's largest frequency scale.
+    const double w = std::sqrt(A.bottomLeftCorner(n, n).cwiseAbs().rowwise().sum().maxCoeff());
+    Eigen::VectorXd scale = Eigen::VectorXd::Ones(2 * n);
+    if (w > 0.0 && std::isfinite(w)) scale.head(n).setConstant(1.0 / w);
+    e.step = linear_step(A, B, h_, scale);
+    e.ready = true;
+  }
+  if (!offsets_ready_) {
+    const std::vector<double>& off = dyn.offsets();
+    offsets_response_.setZero(2 * n);
+    if (dyn.affine())
+      for (int j = 0; j < n; ++j)
+        if (off[j] != 0.0) offsets_response_ += e.step.p1.col(j) * off[j];
+    offsets_ready_ = true;
+  }
+  return &e.step;
+}
+
+}  // namespace pound

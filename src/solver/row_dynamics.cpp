@@ -1,0 +1,107 @@
+#include "solver/row_dynamics.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace pound {
+
+RowDynamics::RowDynamics(const AssembledRow& row, const std::vector<RowStorey>& storeys,
+                         bool track_energy)
+    : row_(row),
+      storeys_(storeys),
+      n_(row.dofs()),
+      ns_(static_cast<int>(row.sites.size())),
+      linear_(row.linear),
+      track_(track_energy),
+      forces_(row, storeys) {
+  active.assign(ns_, false);
+  v0.assign(ns_, 0.0);
+  storey.assign(n_, StoreyState{});
+  layout_.dofs = n_;
+  layout_.storey_offset.assign(n_, -1);
+  for (int i = 0; i < n_; ++i) {
+    const StoreyLaw& law = *storeys_[i].law;
+    if (law.continuous_states() > 0) {
+      layout_.storey_offset[i] = 2 * n_ + layout_.storey_states;
+      layout_.storey_states += law.continuous_states();
+    }
+  }
+  affine_ = !linear_;
+  for (int i = 0; i < n_; ++i) {
+    double slope, offset;
+    affine_ = affine_ && storeys_[i].law->branch_line(storeys_[i].p, storey[i], slope, offset);
+  }
+  layout_.impulses = 2 * n_ + layout_.storey_states;
+  layout_.energies = layout_.impulses + ns_;
+  layout_.size = layout_.energies + (track_ ? 3 : 0);
+  force_.setZero(ns_);
+  scratch_.setZero(n_);
+}
+
+void RowDynamics::contact_forces(const Eigen::VectorXd& y) {
+  for (int i = 0; i < ns_; ++i) {
+    double f = 0.0;
+    if (active[i]) f = (*laws_)[i]->force(penetration(y, i), penetration_rate(y, i), v0[i]);
+    force_(i) = f;
+  }
+}
+
+void RowDynamics::rhs(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy) {
+  contact_forces(y);
+  const double a_g = ag(t);
+  dy.resize(layout_.size);
+  const double* u = y.data();
+  const double* v = u + n_;
+  const double* im = row_.inv_mass.data();
+  double* du = dy.data();
+  double* dv = du + n_;
+  std::copy(v, v + n_, du);
+  if (linear_)
+    forces_.linear(u, v, a_g, dv);
+  else if (affine_)
+    forces_.affine(u, v, a_g, dv);
+  else
+    forces_.general(y, storey, layout_.storey_offset, a_g, dy.data());
+  for (int i = 0; i < ns_; ++i) {
+    const double f = force_(i);
+    du[layout_.impulses + i] = f;
+    if (f == 0.0) continue;
+    const auto& site = row_.sites[i];
+    dv[site.dof_left] -= im[site.dof_left] * f;
+    dv[site.dof_right] += im[site.dof_right] * f;
+  }
+  if (track_) energy_rates(y, a_g, du + layout_.energies);
+}
+
+void RowDynamics::storey_changed(int) {
+  if (affine_) forces_.set_lines(storey);
+}
+
+void RowDynamics::energy_rates(const Eigen::VectorXd& y, double a_g, double* dE) const {
+  const double* v = y.data() + n_;
+  double* cv = scratch_.data();
+  forces_.damping(v, cv);
+  double mv = 0.0, vcv = 0.0, contact = 0.0;
+  for (int i = 0; i < n_; ++i) {
+    mv += v[i] / row_.inv_mass(i);
+    vcv += v[i] * cv[i];
+  }
+  for (int i = 0; i < ns_; ++i) contact += force_(i) * penetration_rate(y, i);
+  dE[0] = -a_g * mv;
+  dE[1] = vcv;
+  dE[2] = contact;
+}
+
+double RowDynamics::storey_energies(const Eigen::VectorXd& y, Eigen::VectorXd& hysteretic) const {
+  hysteretic.setZero(n_);
+  double strain = 0.0;
+  for (int i = 0; i < n_; ++i) {
+    const RowStorey& st = storeys_[i];
+    const double d = drift(y, 0, i);
+    hysteretic(i) = st.law->dissipated(st.p, storey[i], d, continuous_states(y, i));
+    strain += st.law->stored(st.p, storey[i], d, continuous_states(y, i));
+  }
+  return strain;
+}
+
+}  // namespace pound

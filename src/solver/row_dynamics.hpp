@@ -1,0 +1,112 @@
+#pragma once
+// The equations of motion of a row of buildings between switching events (physics.md sections
+// 1-2; docs/integration.md):
+//   u' = v,  v' = -M^-1 (C v + f(u, x)) - 1 ag + M^-1 P(u, v),  x' (storey laws),
+//   J' = contact force per site,  E' (energy rates),
+// with f = K u for linear storeys and f_j = V_j - V_{j+1} from the storey laws' shears V
+// otherwise (solver/row_forces.hpp), and P the contact forces of the active contacts. It holds
+// the discrete states the right-hand side depends on: which contacts are active (with their
+// approach velocity) and each storey law's branch; solver/row_switches.hpp changes them at
+// switching events. Kernel only: no files, no printing.
+#include <Eigen/Dense>
+#include <vector>
+
+#include "contact/contact_law.hpp"
+#include "motion/ground_motion.hpp"
+#include "solver/row_forces.hpp"
+#include "structure/building_row.hpp"
+
+namespace pound {
+
+/// The state vector y = [u (n); v (n); x (storey continuous states); J (impulse per site);
+/// E (energy balance: input, damping, contact, when tracked)]. The error test covers u, v, x.
+struct StateLayout {
+  int dofs = 0;                    ///< floor DOFs n
+  int storey_states = 0;           ///< continuous states of the storey laws
+  int impulses = 0;                ///< offset of the impulses J in y
+  int energies = 0;                ///< offset of the energies E in y
+  int size = 0;                    ///< entries of y
+  std::vector<int> storey_offset;  ///< per DOF: offset of its storey's states in y, -1: none
+  /// Entries under the local error test: u, v, x.
+  int tested() const { return 2 * dofs + storey_states; }
+};
+
+class RowDynamics {
+ public:
+  /// `storeys` one per floor DOF of `row`; energies in the state when `track_energy`.
+  RowDynamics(const AssembledRow& row, const std::vector<RowStorey>& storeys, bool track_energy);
+
+  /// The contact laws, one per site (pounding), or none (the buildings vibrate independently),
+  /// and the ground motion (null: none).
+  void set_contacts(const std::vector<const ContactLaw*>* laws) { laws_ = laws; }
+  void set_motion(const GroundMotion* motion) { motion_ = motion; }
+  bool pounding() const { return laws_ != nullptr && !laws_->empty(); }
+
+  const StateLayout& layout() const { return layout_; }
+  bool linear() const { return linear_; }  ///< every storey linear elastic
+  bool affine() const { return affine_; }  ///< every storey law piecewise linear
+  double ag(double t) const { return motion_ ? motion_->at(t) : 0.0; }
+
+  /// dy at (t, y) [SI per s]; the contact forces of y in contact_force().
+  void rhs(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy);
+  /// The contact force per site at y [N] (zero where no contact is active).
+  void contact_forces(const Eigen::VectorXd& y);
+  const Eigen::VectorXd& contact_force() const { return force_; }
+
+  /// Penetration delta = u_L - u_R - gap at site i (physics.md section 1) [m] and its rate.
+  double penetration(const Eigen::VectorXd& y, int i) const {
+    const auto& s = row_.sites[i];
+    return y(s.dof_left) - y(s.dof_right) - s.gap;
+  }
+  double penetration_rate(const Eigen::VectorXd& y, int i) const {
+    const auto& s = row_.sites[i];
+    return y(n_ + s.dof_left) - y(n_ + s.dof_right);
+  }
+  /// Drift of floor DOF `dof`'s storey in the block of y starting at `off` (0: displacements,
+  /// n: velocities) [m], [m/s].
+  double drift(const Eigen::VectorXd& y, int off, int dof) const {
+    const int b = storeys_[dof].below;
+    return y(off + dof) - (b >= 0 ? y(off + b) : 0.0);
+  }
+  /// The continuous states of floor DOF `dof`'s storey in y (null: none).
+  const double* continuous_states(const Eigen::VectorXd& y, int dof) const {
+    return layout_.storey_offset[dof] >= 0 ? y.data() + layout_.storey_offset[dof] : nullptr;
+  }
+  /// Shear of floor DOF `dof`'s storey at y [N].
+  double storey_shear(const Eigen::VectorXd& y, int dof) const {
+    const RowStorey& st = storeys_[dof];
+    return st.law->shear(st.p, storey[dof], drift(y, 0, dof), continuous_states(y, dof));
+  }
+  /// After storey `dof` changed branch: the piecewise-linear forces' lines.
+  void storey_changed(int dof);
+  /// The stiffness of the linear or piecewise-linear right-hand side [N/m] and the offsets of
+  /// the branches' lines [N] (solver/row_forces.hpp).
+  void stiffness(Eigen::MatrixXd& K) const { forces_.stiffness(affine_, K); }
+  const std::vector<double>& offsets() const { return forces_.offsets(); }
+
+  /// The storeys' strain energy and, per DOF, the hysteretic energy at y [J].
+  double storey_energies(const Eigen::VectorXd& y, Eigen::VectorXd& hysteretic) const;
+
+  // Discrete states (changed at switching events, solver/row_switches.hpp).
+  std::vector<StoreyState> storey;  ///< per DOF: the discrete state of its storey law
+  std::vector<char> active;         ///< per site: contact active
+  std::vector<double> v0;           ///< per site: approach velocity at the contact's start [m/s]
+
+ private:
+  // E' = [input -ag 1^T M v, damping v^T C v, contact sum_s F_s (v_L - v_R)] [W].
+  void energy_rates(const Eigen::VectorXd& y, double ag, double* dE) const;
+
+  const AssembledRow& row_;
+  const std::vector<RowStorey>& storeys_;
+  const int n_, ns_;
+  const bool linear_, track_;
+  bool affine_ = false;
+  StateLayout layout_;
+  const std::vector<const ContactLaw*>* laws_ = nullptr;
+  const GroundMotion* motion_ = nullptr;
+  Eigen::VectorXd force_;            // contact force per site [N]
+  mutable Eigen::VectorXd scratch_;  // damping forces C v [N] (energy rates)
+  RowForces forces_;                 // internal forces of the floors
+};
+
+}  // namespace pound

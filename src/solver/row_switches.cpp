@@ -1,0 +1,122 @@
+#include "solver/row_switches.hpp"
+
+#include <cmath>
+
+#include "core/error.hpp"
+
+namespace pound {
+
+RowSwitches::RowSwitches(const AssembledRow& row, const std::vector<RowStorey>& storeys)
+    : row_(row), storeys_(storeys), ns_(static_cast<int>(row.sites.size())) {
+  for (int i = 0; i < row.dofs(); ++i)
+    for (int k = 0; k < storeys_[i].law->switches(); ++k) sw_.push_back({i, k});
+  has_safe_.assign(row.dofs(), 0);
+  safe_lo_.assign(row.dofs(), 0.0);
+  safe_hi_.assign(row.dofs(), 0.0);
+}
+
+void RowSwitches::reset() {
+  last_event_t_.assign(ns_ + sw_.size(), -1.0);
+  chatter_.assign(ns_ + sw_.size(), 0);
+}
+
+SwitchValue RowSwitches::storey_value(const RowDynamics& dyn, int k, const Eigen::VectorXd& y,
+                                      const Eigen::VectorXd& dy) const {
+  const StoreySwitch& w = sw_[k - ns_];
+  const RowStorey& st = storeys_[w.dof];
+  const int n = row_.dofs();
+  return st.law->switch_value(w.local, st.p, dyn.storey[w.dof], dyn.drift(y, 0, w.dof),
+                              dyn.drift(y, n, w.dof), dyn.drift(dy, n, w.dof));
+}
+
+void RowSwitches::storey_changed(int dof, const StoreyState& s) {
+  const RowStorey& st = storeys_[dof];
+  has_safe_[dof] = st.law->safe_drift(st.p, s, safe_lo_[dof], safe_hi_[dof]);
+  if (has_safe_[dof]) {  // find_event's margin for round-off
+    const double margin = 1e-12 * (std::fabs(safe_lo_[dof]) + std::fabs(safe_hi_[dof]));
+    safe_lo_[dof] += margin;
+    safe_hi_[dof] -= margin;
+  }
+}
+
+double RowSwitches::first_crossing(const Hermite& c) {
+  double lo = 0.0, th = 1.0;
+  const int nscan = 32;
+  for (int i = 1; i <= nscan; ++i) {
+    const double x = double(i) / nscan;
+    if (c.at(x) > 0.0) {
+      th = x;
+      break;
+    }
+    lo = x;
+  }
+  for (int it = 0; it < 60; ++it) {
+    const double mid = 0.5 * (lo + th);
+    if (c.at(mid) > 0.0)
+      th = mid;
+    else
+      lo = mid;
+  }
+  return th;
+}
+
+int RowSwitches::find_event(const RowDynamics& dyn, const Eigen::VectorXd& y0,
+                            const Eigen::VectorXd& y1, const Eigen::VectorXd& dy0,
+                            const Eigen::VectorXd& dy1, double h, double& theta) const {
+  const int n = row_.dofs();
+  const bool pounding = dyn.pounding();
+  int best = -1;
+  theta = 2.0;
+  const int m = (pounding ? ns_ : 0) + static_cast<int>(sw_.size());
+  for (int j = 0; j < m; ++j) {
+    const int k = pounding ? j : ns_ + j;
+    if (k >= ns_) {
+      const int dof = sw_[k - ns_].dof;
+      if (has_safe_[dof]) {
+        // Skip a storey whose drift stays inside its safe interval (shrunk by 1e-12 of its
+        // ends, storey_changed): a bound of the drift's cubic over the step (its basis
+        // functions of the end slopes are at most 4/27).
+        const double d0 = dyn.drift(y0, 0, dof), d1 = dyn.drift(y1, 0, dof);
+        const double m4 =
+            4.0 / 27.0 * h * (std::fabs(dyn.drift(y0, n, dof)) + std::fabs(dyn.drift(y1, n, dof)));
+        if (std::max(d0, d1) + m4 < safe_hi_[dof] && std::min(d0, d1) - m4 > safe_lo_[dof])
+          continue;
+      }
+    }
+    const Hermite c = hermite(dyn, k, y0, y1, dy0, dy1, h);
+    if (c.upper_bound() < 0.0) continue;  // no crossing
+    bool ev;
+    if (k < ns_ && !dyn.active[k] && c.g0 > 0.0)  // across within the location tolerance:
+      ev = c.m0 > 0.0 || c.g1 > c.g0;             // only a renewed approach counts
+    else
+      ev = c.g1 > 0.0 || (c.m0 > 0.0 && c.max_over_step() > 0.0);
+    if (!ev) continue;
+    const double th = first_crossing(c);  // first sign change of the cubic
+    if (th < theta) {
+      theta = th;
+      best = k;
+    }
+  }
+  return best;
+}
+
+void RowSwitches::throw_chatter(int k, double t, const std::string& what) const {
+  throw NumericalError(what + ": " + (k < ns_ ? "impacts" : "yield events") +
+                       " accumulate at t = " + std::to_string(t) + " s (chatter)" +
+                       (k < ns_ ? "; use a force-based contact model" : std::string()));
+}
+
+void RowSwitches::apply_storey(RowDynamics& dyn, int k, double t, const Eigen::VectorXd& y) {
+  const StoreySwitch& w = sw_[k - ns_];
+  const RowStorey& st = storeys_[w.dof];
+  guard_chatter(k, t, [&] {
+    return "building " + std::to_string(st.building + 1) + ", storey " +
+           std::to_string(w.dof - row_.offset[st.building] + 1);
+  });
+  st.law->on_switch(w.local, st.p, dyn.storey[w.dof], dyn.drift(y, 0, w.dof),
+                    dyn.continuous_states(y, w.dof));
+  dyn.storey_changed(w.dof);
+  storey_changed(w.dof, dyn.storey[w.dof]);
+}
+
+}  // namespace pound

@@ -1,0 +1,99 @@
+#pragma once
+// What a run of a building row reports, recorded the same way by both solvers (the adaptive
+// lumped-mass solver, solver/row_solver.cpp, and the damped Sears solver,
+// sears/sears_row_solver.cpp): the peak floor values (physics.md section 4), the free run's
+// approach at every contact site, the contact phases (impacts, first contact, last separation,
+// peak force and penetration, impulse), the time histories and the end state. A solver calls it
+// after its steps with the values it has; a new reported quantity is written here once.
+// Kernel only: no files, no printing.
+#include <Eigen/Dense>
+#include <string>
+#include <vector>
+
+#include "solver/hermite.hpp"
+#include "solver/row_result.hpp"
+#include "structure/building_row.hpp"
+
+namespace pound {
+
+class RunRecorder {
+ public:
+  /// For the floors and sites of `row`, whose storeys stand on the floors `storeys[i].below`;
+  /// `contacts`: a run with contact laws (otherwise the free run, whose approach at each site is
+  /// recorded); `history`: keep time histories.
+  RunRecorder(const AssembledRow& row, const std::vector<RowStorey>& storeys, bool contacts,
+              bool history);
+
+  /// Zero peaks and sites; the free run's approach starts at the initial u_L - u_R [m].
+  void start(const Eigen::VectorXd& u0);
+  /// A free run forked into a run with contacts (solve_free_and_pounding): its sites start
+  /// afresh, and the steps so far are the free run's.
+  void contacts_on() {
+    contacts_ = true;
+    r_.sites.assign(ns_, SiteResult{});
+    r_.steps_from_free = r_.steps;
+  }
+  RowResult& result() { return r_; }
+  const RowResult& result() const { return r_; }
+
+  // --- Floors ------------------------------------------------------------------------------
+  /// Peak absolute accelerations from the relative ones a_rel [m/s^2] and the ground's ag.
+  void accel_peaks(const double* a_rel, double ag) {
+    for (int i = 0; i < n_; ++i) {
+      const double a = a_rel[i] + ag;
+      r_.peak_abs_accel(i) = std::max(r_.peak_abs_accel(i), std::fabs(a));
+    }
+  }
+  /// Peak displacements and storey drifts sampled at the end of a step [m].
+  void sampled_peaks(const Eigen::VectorXd& u);
+  /// Peak displacements and storey drifts over a step of length h [s] from the quintic Hermite
+  /// interpolant of y = [u; v] and dy = [v; u''] at both ends (sixth-order accurate).
+  void peaks_over_step(const Eigen::VectorXd& y0, const Eigen::VectorXd& y1,
+                       const Eigen::VectorXd& dy0, const Eigen::VectorXd& dy1, double h);
+
+  // --- Contact sites -------------------------------------------------------------------------
+  /// A contact phase starts at site s at time t [s].
+  void contact_started(int s, double t) {
+    SiteResult& sr = r_.sites[s];
+    if (sr.first_contact < 0.0) sr.first_contact = t;
+    ++sr.impacts;
+  }
+  /// The faces part at site s at time t [s].
+  void contact_ended(int s, double t) { r_.sites[s].last_separation = t; }
+  /// The contact force f [N] and penetration d [m] of site s, for their peaks.
+  void force(int s, double f) { r_.sites[s].peak_force = std::max(r_.sites[s].peak_force, f); }
+  void penetration(int s, double d) {
+    r_.sites[s].peak_penetration = std::max(r_.sites[s].peak_penetration, d);
+  }
+  /// Free run: the approach u_L - u_R of site s over a step, as the cubic the contact events are
+  /// located on [m].
+  void approach_over_step(int s, const Hermite& c) {
+    double& peak = r_.sites[s].peak_approach;
+    if (c.upper_bound() > peak) peak = std::max(peak, c.max_over_step());
+  }
+
+  // --- Histories -----------------------------------------------------------------------------
+  bool keeps_history() const { return history_; }
+  /// One entry: time t [s], displacements u [m], relative accelerations a_rel and ground ag
+  /// [m/s^2], contact forces [N], storey shears [N].
+  void history(double t, const Eigen::VectorXd& u, const Eigen::VectorXd& a_rel, double ag,
+               const Eigen::VectorXd& force, const Eigen::VectorXd& shear);
+
+  // --- The end -------------------------------------------------------------------------------
+  /// The time reached [s] and the state there [m], [m/s].
+  void finish(double t, const Eigen::VectorXd& u, const Eigen::VectorXd& v);
+
+  /// Throws NumericalError naming `what` and the time t [s] when a value of x is not finite.
+  static void check_finite(const Eigen::VectorXd& x, double t, const std::string& what);
+
+ private:
+  int n_ = 0, ns_ = 0;
+  bool contacts_ = false, history_ = false;
+  std::vector<int> below_;      // per DOF: the floor DOF under its storey, -1 on the ground
+  std::vector<double> weight_;  // per DOF: 1 where its storey stands on a floor, 0 on the ground
+  std::vector<double> bounds_;  // scratch of peaks_over_step (peak_bounds)
+  std::vector<std::pair<int, int>> site_dofs_;  // per site: left and right floor DOF
+  RowResult r_;
+};
+
+}  // namespace pound
