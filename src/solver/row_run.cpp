@@ -1,0 +1,335 @@
+// One run of a building row (solver/row_run.hpp): start, steps, exact steps, recording, the end.
+#include "solver/row_run.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "core/error.hpp"
+
+namespace pound::detail {
+
+RowRun::RowRun(const RowProblem& p, const IntegratorSettings& s)
+    : p_(&p),
+      s_(s),
+      row_(*p.row),
+      n_(row_.dofs()),
+      ns_(static_cast<int>(row_.sites.size())),
+      storeys_owner_(std::make_shared<const std::vector<RowStorey>>(
+          static_cast<int>(row_.storeys.size()) == n_ ? row_.storeys : elastic_storeys(row_))),
+      storeys_(*storeys_owner_),
+      track_(p.track_energy),
+      fixed_(s.control == StepControl::fixed),
+      dyn_(row_, storeys_, track_),
+      switches_(row_, storeys_),
+      rec_(row_, storeys_, !p.laws.empty(), p.record_history) {
+  if (!p.laws.empty() && static_cast<int>(p.laws.size()) != ns_)
+    throw std::logic_error("one contact law per site expected");
+  dyn_.set_contacts(&p.laws);
+  dyn_.set_motion(p.motion);
+  work_.resize(dyn_.layout().size);
+}
+
+RowRun::RowRun(const RowRun& free, const RowProblem& pounding) : RowRun(free) {
+  if (static_cast<int>(pounding.laws.size()) != ns_)
+    throw std::logic_error("one contact law per site expected");
+  p_ = &pounding;
+  dyn_.set_contacts(&pounding.laws);
+  fork_to_ = nullptr;
+  fork_armed_ = false;
+  fork_.reset();
+  exact_.undo_iteration();
+  rec_.contacts_on();
+}
+
+// Called with the step (t_, y_) -> (t_ + h, y1) about to be accepted, before it changes anything
+// but scratch: forks the pounding run when a site's gap function, on the interpolant the contact
+// events are located on (find_event), rises above -kForkMargin in the step.
+void RowRun::fork_if_near_contact(const Eigen::VectorXd& y0, const Eigen::VectorXd& y1, double h) {
+  for (int i = 0; i < ns_; ++i) {
+    const Hermite c{dyn_.penetration(y0, i) + kForkMargin, dyn_.penetration(y1, i) + kForkMargin,
+                    h * dyn_.penetration_rate(y0, i), h * dyn_.penetration_rate(y1, i)};
+    if (c.upper_bound() > 0.0 && c.max_over_step() > 0.0) {
+      fork_ = std::make_shared<RowRun>(*this, *fork_to_);
+      return;
+    }
+  }
+}
+
+// After storey `dof` changed branch: its line (piecewise-linear rows), safe interval and the
+// exact steps' stiffness.
+void RowRun::storey_changed(int dof) {
+  dyn_.storey_changed(dof);
+  exact_.invalidate();
+  switches_.storey_changed(dof, dyn_.storey[dof]);
+}
+
+double RowRun::error_norm(const Eigen::VectorXd& y0, const Eigen::VectorXd& y1,
+                          const Eigen::VectorXd& err) const {
+  double sum = 0.0;
+  const int m = dyn_.layout().tested();
+  for (int i = 0; i < m; ++i) {
+    const double sc = s_.atol + s_.rtol * std::max(std::fabs(y0(i)), std::fabs(y1(i)));
+    const double r = err(i) / sc;
+    sum += r * r;
+  }
+  return std::sqrt(sum / m);
+}
+
+// The largest step, the record spacing, and exact steps for rows that are linear between events
+// (no storey state integrated, no energy balance), on a grid of h_max that holds every record
+// sample.
+void RowRun::set_step_limits() {
+  const double tmin_period = shortest_period(row_);
+  h_max_ = s_.h_max > 0 ? s_.h_max : tmin_period / 20.0;
+  rec_dt_ = p_->motion ? p_->motion->dt : 0.0;
+  if (s_.h_max <= 0 && rec_dt_ > 0) h_max_ = std::min(h_max_, rec_dt_);
+  const bool h_max_known = std::isfinite(h_max_);
+  if (!h_max_known) h_max_ = std::max(p_->t_end, 1e-6);
+  if (s_.exact_free && !fixed_ && !track_ && h_max_known && (dyn_.linear() || dyn_.affine()) &&
+      dyn_.layout().storey_states == 0)
+    exact_.enable(row_, h_max_, rec_dt_, p_->exact_cache);
+  if (fixed_ && !(s_.dt > 0)) throw InputError("fixed-step integration needs dt > 0");
+  h_ = fixed_ ? s_.dt : std::min(h_max_, 1e-4);
+}
+
+// Initial state, step limits and the switches already on at t = 0.
+void RowRun::start() {
+  const StateLayout& at = dyn_.layout();
+  switches_.reset();
+  for (auto* v : {&y1_, &err_, &k1_, &k7_, &ytry_, &etry_, &ktry_}) v->resize(at.size);
+  y_ = Eigen::VectorXd::Zero(at.size);
+  if (p_->u0.size()) y_.head(n_) = p_->u0;
+  if (p_->v0.size()) y_.segment(n_, n_) = p_->v0;
+  rec_.start(y_.head(n_));
+  const bool pounding = dyn_.pounding();
+  fork_armed_ = fork_to_ != nullptr && !pounding;
+  for (int i = 0; i < ns_ && fork_armed_; ++i)
+    fork_armed_ = dyn_.penetration(y_, i) + kForkMargin < 0.0;
+  // Storeys loaded monotonically from rest to the initial drifts.
+  for (int i = 0; i < n_ && !dyn_.linear(); ++i) {
+    const RowStorey& st = storeys_[i];
+    st.law->advance(st.p, StoreyState{}, 0.0, dyn_.drift(y_, 0, i), dyn_.storey[i]);
+    for (int k = 0; k < st.law->continuous_states(); ++k)
+      y_(at.storey_offset[i] + k) = dyn_.storey[i].x[k];
+    storey_changed(i);
+  }
+  set_step_limits();
+  // Contacts already closed at t = 0 (a negative gap or initial overlap) start at once, and
+  // storeys already beyond a kink switch.
+  for (int i = 0; i < ns_ && pounding; ++i)
+    if (dyn_.penetration(y_, i) > 0.0) apply_event(i, t_, y_);
+  rhs(t_, y_, k1_);
+  for (int j = 0; j < switches_.storey_switches(); ++j)
+    if (switch_at(ns_ + j, y_, k1_).value > 0.0) {
+      apply_event(ns_ + j, t_, y_);
+      rhs(t_, y_, k1_);
+    }
+  record(t_, y_, k1_);
+}
+
+// No contact active, and every site open by more than kTouching: floors touching at rest (a zero
+// gap at t = 0) or just apart may close within a step by an amount the step's interpolant does
+// not resolve; Dormand-Prince's steps, from its small initial step on, do.
+bool RowRun::contacts_open() const {
+  constexpr double kTouching = 1e-9;  // [m]
+  for (int i = 0; i < ns_ && dyn_.pounding(); ++i)
+    if (dyn_.active[i] || dyn_.penetration(y_, i) > -kTouching) return false;
+  return true;
+}
+
+// An exact step from the grid point t_ to the next (docs/integration.md, "Exact steps"); false
+// (nothing changed) when the propagator is not ready or a switch fires inside the step: the
+// Dormand-Prince path then takes the step and locates the event.
+bool RowRun::exact_step() {
+  const LinearStep* L = exact_.propagator(dyn_, row_);
+  if (!L) return false;
+  const double t1 = exact_.next_point();
+  const double h = t1 - t_;
+  // ag over the step: linear between its ends (the grid holds every record sample); zero on a
+  // step after the record's last sample (GroundMotion::at).
+  double a0 = 0.0, a1 = 0.0;
+  if (p_->motion && t_ + 0.5 * h < p_->motion->duration()) {
+    a0 = p_->motion->at(std::max(t_, 0.0));
+    a1 = p_->motion->at(std::min(t1, p_->motion->duration()));
+  }
+  y1_ = y_;
+  linear_step_apply(*L, a0, a1, exact_.offsets_response(), y_.data(), y1_.data());
+  rhs(t1, y1_, k7_);
+  check_finite(t1, y1_);
+  if (switches_.any(dyn_)) {
+    double theta;
+    if (find_event(y_, y1_, k1_, k7_, h, theta) >= 0) return false;
+  }
+  update_peaks(y_, y1_, k1_, k7_, h);
+  y_.swap(y1_);
+  k1_.swap(k7_);
+  t_ = t1;
+  exact_.advanced();
+  ++rec_.result().steps;
+  ++rec_.result().exact_steps;
+  record(t_, y_, k1_);
+  return true;
+}
+
+// The next step ends at the next record sample, grid point or the end [s].
+double RowRun::next_stop() {
+  double t_stop = p_->t_end;
+  if (rec_dt_ > 0) {
+    while (next_sample_ * rec_dt_ <= t_ * (1 + 1e-14) + 1e-15) ++next_sample_;
+    t_stop = std::min(t_stop, next_sample_ * rec_dt_);
+  }
+  if (fixed_) {
+    while ((grid_ + 1) * s_.dt <= t_ * (1 + 1e-14) + 1e-15) ++grid_;
+    t_stop = std::min(t_stop, (grid_ + 1) * s_.dt);
+  }
+  if (exact_.enabled()) {  // Dormand-Prince steps (through events) end on the exact steps' grid
+    exact_.on_grid(t_);
+    t_stop = std::min(t_stop, exact_.next_point());
+  }
+  return t_stop;
+}
+
+// Accepts the trial step (y_ -> y1_) and chooses the next step length.
+void RowRun::accept(double hs, double en, double t_stop) {
+  update_peaks(y_, y1_, k1_, k7_, hs);
+  y_.swap(y1_);  // y1_ and k7_ are the next trial's scratch
+  k1_.swap(k7_);
+  t_ += hs;
+  if (t_stop - t_ < 1e-14 * std::max(1.0, t_)) t_ = t_stop;
+  ++rec_.result().steps;
+  record(t_, y_, k1_);
+  if (!fixed_) {
+    const double fac = en > 0 ? std::min(5.0, std::max(0.2, 0.9 * std::pow(en, -0.2))) : 5.0;
+    double hn = hs * fac;
+    if (hs < h_) hn = std::max(hn, h_);  // the step was cut short by a sample or the end
+    h_ = std::min(h_max_, hn);
+  }
+}
+
+// Free impacts (RowProblem::stop_after_separation): every contact has ended and all sites part.
+bool RowRun::separated() const {
+  if (!p_->stop_after_separation || !any_contact_) return false;
+  for (int i = 0; i < ns_; ++i)
+    if (dyn_.active[i] || !(dyn_.penetration_rate(y_, i) < 0.0)) return false;
+  return true;
+}
+
+void RowRun::finish() {
+  const StateLayout& at = dyn_.layout();
+  rec_.finish(t_, y_.head(n_), y_.segment(n_, n_));
+  RowResult& r = rec_.result();
+  for (int i = 0; i < ns_; ++i) r.sites[i].impulse = y_(at.impulses + i);
+  const double strain = dyn_.storey_energies(y_, r.hysteretic_energy);
+  if (!track_) return;
+  EnergyBalance& e = r.energy;
+  for (int i = 0; i < n_; ++i) e.kinetic += 0.5 * std::pow(y_(n_ + i), 2) / row_.inv_mass(i);
+  e.strain = strain;
+  e.hysteretic = r.hysteretic_energy.sum();
+  e.input = y_(at.energies);
+  e.damping = y_(at.energies + 1);
+  e.contact = y_(at.energies + 2);
+}
+
+RowResult RowRun::run() {
+  start();
+  return advance();
+}
+
+RowResult RowRun::advance() {
+  const double t_end = p_->t_end;
+  const bool events = switches_.any(dyn_);
+  while (t_ < t_end * (1 - 1e-14)) {
+    exact_.begin_iteration();
+    if (rec_.result().steps + rec_.result().rejected > s_.max_steps)
+      throw NumericalError("more than " + std::to_string(s_.max_steps) +
+                           " steps by t = " + std::to_string(t_) + " s");
+    if (exact_.enabled() && exact_.on_grid(t_) && !exact_.declined_here() &&
+        exact_.next_point() <= t_end * (1 + 1e-14) && contacts_open()) {
+      if (exact_step()) continue;
+      exact_.decline();  // Dormand-Prince to the next grid point (rejections included)
+    }
+    const double t_stop = next_stop();
+    double hs = fixed_ ? t_stop - t_ : std::min(h_, t_stop - t_);
+    if (t_ + hs > t_stop * (1 - 1e-14)) hs = t_stop - t_;
+    step(t_, hs, y_, k1_, y1_, err_, k7_);
+    double en = 0.0;
+    bool trial_failed = false;
+    if (!fixed_) {
+      en = error_norm(y_, y1_, err_);
+      trial_failed = !(en <= 1.0);
+    }
+    double theta;
+    int ev = -1;
+    if (trial_failed) {
+      // A switch inside the step puts a kink of the force (a jump of its derivative) into it:
+      // there the error estimate falls only like h^2, not h^5, and the controller would creep
+      // up on the event through many rejected steps. When the trial's interpolant shows an
+      // event, it is located at once on re-taken steps, which must then pass the error test;
+      // otherwise the step is rejected as usual.
+      if (events && y1_.allFinite()) ev = find_event(y_, y1_, k1_, k7_, hs, theta);
+      if (ev < 0) {
+        reject(hs, en);
+        continue;
+      }
+    } else {
+      check_finite(t_ + hs, y1_);
+      if (events) ev = find_event(y_, y1_, k1_, k7_, hs, theta);
+    }
+    if (ev >= 0) {
+      const Located l = locate(ev, theta, hs, en, trial_failed);
+      if (l == Located::retry) continue;
+      if (l == Located::applied) {
+        if (separated()) break;
+        continue;
+      }
+      if (trial_failed) {  // false alarm on a rejected trial
+        reject(hs, en);
+        continue;
+      }
+    }
+    accept(hs, en, t_stop);
+  }
+  finish();
+  return rec_.result();
+}
+
+void RowRun::record(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& dy) {
+  // Absolute acceleration u'' + ag = M^-1 (P - C v - f): dy already holds u'' = that - ag.
+  const double ag = dyn_.ag(t);
+  rec_.accel_peaks(dy.data() + n_, ag);
+  dyn_.contact_forces(y);
+  const Eigen::VectorXd& force = dyn_.contact_force();
+  for (int i = 0; i < ns_; ++i)
+    if (dyn_.active[i]) rec_.force(i, force(i));
+  if (rec_.keeps_history()) {
+    Eigen::VectorXd shear(n_);
+    for (int i = 0; i < n_; ++i) shear(i) = dyn_.storey_shear(y, i);
+    rec_.history(t, y.head(n_), dy.segment(n_, n_), ag, force, shear);
+  }
+}
+
+void RowRun::update_peaks(const Eigen::VectorXd& y0, const Eigen::VectorXd& y1,
+                          const Eigen::VectorXd& dy0, const Eigen::VectorXd& dy1, double h) {
+  if (fork_armed_ && !fork_) fork_if_near_contact(y0, y1, h);
+  rec_.peaks_over_step(y0, y1, dy0, dy1, h);
+  const bool pounding = dyn_.pounding();
+  for (int i = 0; i < ns_; ++i) {
+    if (!dyn_.active[i]) continue;
+    const Hermite c{dyn_.penetration(y0, i), dyn_.penetration(y1, i),
+                    h * dyn_.penetration_rate(y0, i), h * dyn_.penetration_rate(y1, i)};
+    rec_.penetration(i, c.max_over_step());
+  }
+  // Free run: the peak approach u_L - u_R of each site from the same interpolant the contact
+  // events are located on (find_event), so that a pounding run of this motion touches at a
+  // site exactly when this peak exceeds its gap (up to the location tolerance).
+  for (int i = 0; i < ns_ && !pounding; ++i) {
+    const auto& s = row_.sites[i];
+    const Hermite c{y0(s.dof_left) - y0(s.dof_right), y1(s.dof_left) - y1(s.dof_right),
+                    h * dyn_.penetration_rate(y0, i), h * dyn_.penetration_rate(y1, i)};
+    rec_.approach_over_step(i, c);
+  }
+}
+
+}  // namespace pound::detail

@@ -1,0 +1,124 @@
+#pragma once
+// The adaptive integration of one run of a building row (solver/row_solver.hpp), shared by
+// row_run.cpp (start, steps, exact steps, recording, the end) and row_events.cpp (locating and
+// applying switching events). Internal to src/solver.
+#include <Eigen/Dense>
+#include <memory>
+#include <vector>
+
+#include "solver/dopri5.hpp"
+#include "solver/exact_steps.hpp"
+#include "solver/hermite.hpp"
+#include "solver/row_dynamics.hpp"
+#include "solver/row_solver.hpp"
+#include "solver/row_switches.hpp"
+#include "solver/run_recorder.hpp"
+
+namespace pound::detail {
+
+// The adaptive integration of one run (row_solver.hpp): Dormand-Prince steps between switching
+// events, each event located on re-taken steps, exact steps of the linear system between events
+// where the row allows them. The equations are RowDynamics', the events RowSwitches', the exact
+// steps' grid and propagators ExactSteps', and what the run reports RunRecorder's.
+class RowRun {
+ public:
+  RowRun(const RowProblem& p, const IntegratorSettings& s);
+  // The pounding run forked from a free run (solve_free_and_pounding): the free solver's state
+  // at the top of the loop iteration whose step it was accepting, with the contacts of
+  // `pounding` (the same problem with its laws) switched on.
+  RowRun(const RowRun& free, const RowProblem& pounding);
+  RowResult run();      // from the initial state
+  RowResult advance();  // from the current state to the end
+  // A free run to fork into `pounding` at the start of the first step in which a site comes
+  // within kForkMargin of touching (before run()).
+  void fork_into(const RowProblem* pounding) { fork_to_ = pounding; }
+  const std::shared_ptr<RowRun>& fork() const { return fork_; }
+  // Whether the fork was armed (every site open by more than kForkMargin at the start).
+  bool fork_armed() const { return fork_armed_; }
+
+ private:
+  enum class Located { none, retry, applied };
+  // A switch's value fa at the step fraction a and fb at b: the crossing lies in (a, b].
+  struct Bracket {
+    double a, fa, b, fb;
+  };
+
+  void rhs(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy) { dyn_.rhs(t, y, dy); }
+  void step(double t, double h, const Eigen::VectorXd& y, const Eigen::VectorXd& k1,
+            Eigen::VectorXd& y1, Eigen::VectorXd& err, Eigen::VectorXd& k7) {
+    auto f = [this](double tt, const Eigen::VectorXd& yy, Eigen::VectorXd& dy) { rhs(tt, yy, dy); };
+    dopri5_step(f, t, h, y, k1, y1, err, work_);
+    k7 = work_.k7;
+  }
+  double error_norm(const Eigen::VectorXd& y0, const Eigen::VectorXd& y1,
+                    const Eigen::VectorXd& err) const;
+  int find_event(const Eigen::VectorXd& y0, const Eigen::VectorXd& y1, const Eigen::VectorXd& dy0,
+                 const Eigen::VectorXd& dy1, double h, double& theta) const {
+    return switches_.find_event(dyn_, y0, y1, dy0, dy1, h, theta);
+  }
+  SwitchValue switch_at(int k, const Eigen::VectorXd& y, const Eigen::VectorXd& dy) const {
+    return switches_.value(dyn_, k, y, dy);
+  }
+
+  // Event location (Illinois iteration on re-taken steps).
+  Located locate(int ev, double theta, double hs, double en, bool trial_failed);
+  bool bracket_event(int ev, double theta, double hs, Bracket& br);
+  double refine_event(int ev, double guess, Bracket br);
+  void apply_event(int k, double t, Eigen::VectorXd& y);
+  void apply_contact_event(int i, double t, Eigen::VectorXd& y);
+  void storey_changed(int dof);
+  void retry(double hn);
+  void reject(double hf, double enf);
+
+  void start();
+  void set_step_limits();
+  bool exact_step();
+  bool contacts_open() const;
+  double next_stop();
+  void accept(double hs, double en, double t_stop);
+  bool separated() const;
+  void finish();
+  void update_peaks(const Eigen::VectorXd& y0, const Eigen::VectorXd& y1,
+                    const Eigen::VectorXd& dy0, const Eigen::VectorXd& dy1, double h);
+  void fork_if_near_contact(const Eigen::VectorXd& y0, const Eigen::VectorXd& y1, double h);
+  void record(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& dy);
+  void check_finite(double t, const Eigen::VectorXd& y) const {
+    RunRecorder::check_finite(y, t, "row solver");
+  }
+
+  const RowProblem* p_;
+  const IntegratorSettings& s_;
+  const AssembledRow& row_;
+  const int n_, ns_;
+  // The row's storeys, or elastic ones for a hand-built row: shared by a solver and its fork
+  // (never changed), so that the components of either refer to a live vector.
+  std::shared_ptr<const std::vector<RowStorey>> storeys_owner_;
+  const std::vector<RowStorey>& storeys_;
+  const bool track_, fixed_;
+  RowDynamics dyn_;
+  RowSwitches switches_;
+  ExactSteps exact_;
+  RunRecorder rec_;
+  Dopri5Work work_;
+
+  // The fork of a free run (solve_free_and_pounding). Until a site comes within kForkMargin of
+  // touching, the pounding run's steps are the free run's (no contact is active, no contact
+  // switch can fire, and every site is open by more than contacts_open()'s 1 nm), so the
+  // pounding run starts from the free run's state there. The margin is ten times the cubic
+  // interpolant's error over a step of T_min / 20 (about 1e-7 m, docs/integration.md), so that
+  // the pounding run's own interpolants do not see a crossing before it either.
+  static constexpr double kForkMargin = 1e-6;  // [m]
+  const RowProblem* fork_to_ = nullptr;
+  bool fork_armed_ = false;
+  std::shared_ptr<RowRun> fork_;
+
+  // Integration state: time, next step and largest step [s], record spacing [s], the fixed
+  // grid's and the record's last points passed, the state y and its derivative k1, the trial
+  // step's end y1 (derivative k7, error err) and the re-taken steps' (ytry, ktry, etry).
+  double t_ = 0.0, h_ = 0.0, h_max_ = 0.0, rec_dt_ = 0.0;
+  long grid_ = 0, next_sample_ = 1;
+  bool any_contact_ = false;
+  Eigen::VectorXd y_, y1_, err_, k1_, k7_, ytry_, etry_, ktry_;
+};
+
+}  // namespace pound::detail
