@@ -55,7 +55,7 @@ StepLimits sears_impact_step_limits(const SearsImpactSpec& spec) {
 SearsImpactOutcome run_sears_impact(const SearsImpactSpec& spec) {
   const StepLimits limits = sears_impact_step_limits(spec);
   const double dt = choose_step(limits, spec.dt_s);
-  const ContactLaw& law = spec.contact;
+  const SlabContactLaw& law = spec.contact;
   const bool implicit = spec.coupling == Coupling::implicit_linear_force;
 
   ModalBank bank1(spec.bar1, spec.modes, spec.xi_s, dt);

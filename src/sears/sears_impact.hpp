@@ -4,14 +4,14 @@
 // Bar 1 moves at v0 towards bar 2, which is at rest; bar 1's right end (x = l1) meets bar 2's
 // left end (x = 0) at t = 0 with both bars unstrained. Each bar is a rigid body (its centre of
 // mass, mode 0) plus N damped internal axial modes (ModalBank). The contact force follows from
-// the overlap of the two faces, delta = u1(l1) - u2(0), through ContactLaw. The run continues
+// the overlap of the two faces, delta = u1(l1) - u2(0), through SlabContactLaw. The run continues
 // after separation until the bars can no longer touch again (free vibration can bring the
 // faces back: the thesis' pendulums chatter), counting contact phases.
 #include <vector>
 
 #include "contact/impact_result.hpp"
-#include "sears/contact_law.hpp"
 #include "sears/slab.hpp"
+#include "sears/slab_contact_law.hpp"
 #include "sears/step_rule.hpp"
 
 namespace pound::sears {
@@ -30,13 +30,13 @@ enum class Coupling {
 };
 
 struct SearsImpactSpec {
-  Slab bar1;            ///< the striker, moving at v0 [m/s] in +x
-  Slab bar2;            ///< the struck bar, at rest
-  double v0_m_s = 0.0;  ///< approach velocity [m/s], > 0
-  int modes = 100;      ///< N internal modes per bar [-]
-  double xi_s = 0.05;   ///< modal damping ratio of the slabs' axial vibration [-]
-  ContactLaw contact;   ///< force-overlap law at the faces
-  double dt_s = 0.0;    ///< step [s]; 0 = automatic (sears/step_rule.hpp)
+  Slab bar1;               ///< the striker, moving at v0 [m/s] in +x
+  Slab bar2;               ///< the struck bar, at rest
+  double v0_m_s = 0.0;     ///< approach velocity [m/s], > 0
+  int modes = 100;         ///< N internal modes per bar [-]
+  double xi_s = 0.05;      ///< modal damping ratio of the slabs' axial vibration [-]
+  SlabContactLaw contact;  ///< force-overlap law at the faces
+  double dt_s = 0.0;       ///< step [s]; 0 = automatic (sears/step_rule.hpp)
   Coupling coupling = Coupling::implicit_linear_force;
   double max_time_s = 0.0;      ///< give up (NumericalError) after this time; 0 = automatic [s]
   bool record_history = false;  ///< fill SearsImpactOutcome::history (one sample per step)

@@ -57,7 +57,7 @@ RowContactLayout make_layout(const BuildingRow& row, const AssembledRow& a,
     L.floors[fr].site_left = static_cast<int>(s);   // the right building's floor: its x = 0 end
     L.site_left_floor.push_back(fl);
     L.site_right_floor.push_back(fr);
-    ContactLaw law;
+    SlabContactLaw law;
     law.kind = model.contact;
     law.force_cap_N = model.force_cap_N;
     if (model.contact == ContactKind::flat) {

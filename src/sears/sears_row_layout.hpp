@@ -4,9 +4,9 @@
 #include <Eigen/Dense>
 #include <vector>
 
-#include "sears/contact_law.hpp"
 #include "sears/modal_bank.hpp"
 #include "sears/sears_simulation.hpp"
+#include "sears/slab_contact_law.hpp"
 
 namespace pound::sears {
 
@@ -24,7 +24,7 @@ struct RowContactLayout {
   std::vector<ModalBank> banks;       ///< one per colliding floor
   std::vector<int> site_left_floor;   ///< per site: index into floors of the left building's floor
   std::vector<int> site_right_floor;  ///< per site: the right building's floor
-  std::vector<ContactLaw> laws;       ///< per site
+  std::vector<SlabContactLaw> laws;   ///< per site
 };
 
 /// The slab of floor j (0-based) of building b.

@@ -62,11 +62,6 @@ StepLimits row_step_limits(const BuildingRow& row, const GroundMotion* motion,
 }
 }  // namespace
 
-double sears_row_step(const BuildingRow& row, const GroundMotion* motion,
-                      const SearsRowModel& model) {
-  return choose_step(row_step_limits(row, motion, model), model.dt_s);
-}
-
 SearsSteps sears_row_steps(const BuildingRow& row, const GroundMotion* motion,
                            const SearsRowModel& model) {
   SearsSteps st;

@@ -25,7 +25,7 @@
 #include <vector>
 
 #include "motion/ground_motion.hpp"
-#include "sears/contact_law.hpp"
+#include "sears/slab_contact_law.hpp"
 #include "simulation/simulate_row.hpp"
 #include "solver/row_solver.hpp"
 #include "structure/building_row.hpp"
@@ -167,17 +167,13 @@ struct SearsRowResult {
   SearsStepCounts counts;
 };
 
-/// The step the model uses for this row and motion (automatic or the model's dt, checked).
-/// This is the fixed path's step; event stepping uses sears_row_steps().
-double sears_row_step(const BuildingRow& row, const GroundMotion* motion,
-                      const SearsRowModel& model);
-
-/// Fine and coarse steps: coarse = ratio x fine. Fixed stepping: sears_row_step(), ratio 1.
-/// Event stepping: the coarse step is the largest step <= min(record spacing,
-/// kCoarseStepPerBuildingPeriod x the shortest building period) that divides the record spacing;
-/// the automatic fine step is the largest step <= sears_row_step() that divides the coarse one
-/// (a given dt is kept, and the ratio rounded down). When that coarse step is not longer than
-/// the fine one (few modes, soft contacts), ratio = 1: every step is of the fixed path's size.
+/// Fine and coarse steps: coarse = ratio x fine. Fixed stepping: the step rule's step
+/// (sears/step_rule.hpp: automatic, or the model's dt, checked), ratio 1. Event stepping: the
+/// coarse step is the largest step <= min(record spacing, kCoarseStepPerBuildingPeriod x the
+/// shortest building period) that divides the record spacing; the automatic fine step is the
+/// largest step <= the fixed path's that divides the coarse one (a given dt is kept, and the ratio
+/// rounded down). When that coarse step is not longer than the fine one (few modes, soft contacts),
+/// ratio = 1: every step is of the fixed path's size.
 struct SearsSteps {
   double fine_s = 0.0;
   double coarse_s = 0.0;

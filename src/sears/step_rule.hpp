@@ -3,7 +3,7 @@
 //
 // Two time scales must be resolved: the shortest modal period retained, T_min = 2 l / (N c)
 // over the colliding bars, and the contact time scale t_c, the duration of the elastic
-// lumped-mass impact with the same contact law (ContactLaw::lumped_duration), which is never
+// lumped-mass impact with the same contact law (SlabContactLaw::lumped_duration), which is never
 // longer than the actual contact of the distributed bars.
 //
 //   automatic step:      dt = min(T_min / 10, t_c / 200)

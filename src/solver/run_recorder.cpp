@@ -120,10 +120,9 @@ void RunRecorder::finish(double t, const Eigen::VectorXd& u, const Eigen::Vector
   r_.t_end = t;
 }
 
-void RunRecorder::check_finite(const Eigen::VectorXd& x, double t, const std::string& what) {
-  if (!x.allFinite())
-    throw NumericalError(what + ": non-finite state at t = " + std::to_string(t) +
-                         " s (the response diverged; check stiffness, masses and step)");
+void RunRecorder::throw_non_finite(double t, const char* what) {
+  throw NumericalError(std::string(what) + ": non-finite state at t = " + std::to_string(t) +
+                       " s (the response diverged; check stiffness, masses and step)");
 }
 
 }  // namespace pound

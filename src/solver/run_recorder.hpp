@@ -65,6 +65,8 @@ class RunRecorder {
   void penetration(int s, double d) {
     r_.sites[s].peak_penetration = std::max(r_.sites[s].peak_penetration, d);
   }
+  /// The impulse j [N s] transmitted at site s in a step.
+  void impulse(int s, double j) { r_.sites[s].impulse += j; }
   /// Free run: the approach u_L - u_R of site s over a step, as the cubic the contact events are
   /// located on [m].
   void approach_over_step(int s, const Hermite& c) {
@@ -84,9 +86,13 @@ class RunRecorder {
   void finish(double t, const Eigen::VectorXd& u, const Eigen::VectorXd& v);
 
   /// Throws NumericalError naming `what` and the time t [s] when a value of x is not finite.
-  static void check_finite(const Eigen::VectorXd& x, double t, const std::string& what);
+  static void check_finite(const Eigen::VectorXd& x, double t, const char* what) {
+    if (!x.allFinite()) throw_non_finite(t, what);
+  }
 
  private:
+  [[noreturn]] static void throw_non_finite(double t, const char* what);
+
   int n_ = 0, ns_ = 0;
   bool contacts_ = false, history_ = false;
   std::vector<int> below_;      // per DOF: the floor DOF under its storey, -1 on the ground

@@ -1,4 +1,4 @@
-#include "sears/contact_law.hpp"
+#include "sears/slab_contact_law.hpp"
 
 #include <cmath>
 
@@ -6,14 +6,14 @@
 
 namespace pound::sears {
 
-double ContactLaw::force(double delta_m) const {
+double SlabContactLaw::force(double delta_m) const {
   if (!(delta_m > 0.0)) return 0.0;
   const double f =
       kind == ContactKind::flat ? stiffness * delta_m : stiffness * delta_m * std::sqrt(delta_m);
   return std::fmin(f, force_cap_N);
 }
 
-double ContactLaw::potential(double delta_m) const {
+double SlabContactLaw::potential(double delta_m) const {
   if (!(delta_m > 0.0)) return 0.0;
   const double p = exponent();
   // Overlap at which the cap is reached, then elastic part plus a constant-force part.
@@ -24,7 +24,7 @@ double ContactLaw::potential(double delta_m) const {
   return delta_m > d_cap ? e_el + force_cap_N * (delta_m - d_cap) : e_el;
 }
 
-double ContactLaw::solve_implicit(double delta_pred_m, double S) const {
+double SlabContactLaw::solve_implicit(double delta_pred_m, double S) const {
   if (!(delta_pred_m > 0.0)) return 0.0;
   double f = 0.0;
   if (kind == ContactKind::flat) {
@@ -46,13 +46,13 @@ double ContactLaw::solve_implicit(double delta_pred_m, double S) const {
   return std::fmin(f, force_cap_N);
 }
 
-double ContactLaw::lumped_duration(double m_red, double v0) const {
+double SlabContactLaw::lumped_duration(double m_red, double v0) const {
   if (kind == ContactKind::flat) return M_PI * std::sqrt(m_red / stiffness);
   const double delta_max = std::pow(5.0 * m_red * v0 * v0 / (4.0 * stiffness), 0.4);
   return 2.9432 * delta_max / v0;
 }
 
-void validate(const ContactLaw& law) {
+void validate(const SlabContactLaw& law) {
   if (!(std::isfinite(law.stiffness) && law.stiffness > 0.0))
     throw InputError("contact stiffness must be finite and > 0");
   if (!(law.force_cap_N > 0.0)) throw InputError("force cap must be > 0 [N]");

@@ -1,5 +1,5 @@
 #pragma once
-// Contact force of the damped Sears model (physics.md section 3):
+// The contact force between two slab faces in the damped Sears model (physics.md section 3):
 //     flat  (Th. 8.1): F = k_L delta
 //     hertz (Th. 7.1): F = k delta^1.5
 // for overlap delta > 0, F = 0 otherwise (never tensile), then F = min(F, PF_max) when a force
@@ -11,7 +11,7 @@ namespace pound::sears {
 
 enum class ContactKind { flat, hertz };
 
-struct ContactLaw {
+struct SlabContactLaw {
   ContactKind kind = ContactKind::flat;
   double stiffness = 0.0;  ///< k_L [N/m] (flat) or k [N/m^1.5] (hertz)
   double force_cap_N = std::numeric_limits<double>::infinity();  ///< PF_max [N]
@@ -33,6 +33,6 @@ struct ContactLaw {
 };
 
 /// Throws InputError unless the stiffness is finite and > 0 and the cap is > 0.
-void validate(const ContactLaw& law);
+void validate(const SlabContactLaw& law);
 
 }  // namespace pound::sears

@@ -1,0 +1,38 @@
+#pragma once
+// Newmark's average-acceleration method for the floors of a row (Chopra, Dynamics of
+// Structures, sec. 5.4; the thesis' integrator for the buildings, Th. 8.8), solved for the
+// end-of-step acceleration, which keeps m a = P exact for free bodies (momentum to round-off):
+//   Mt a_{i+1} = p_{i+1} - C (v + h/2 a) - K (u + h v + h^2/4 a),  Mt = M + h/2 C + h^2/4 K
+//   u_{i+1} = u + h v + h^2/4 (a + a_{i+1}),  v_{i+1} = v + h/2 (a + a_{i+1}).
+// Mt^-1 is applied once, so that a step costs one matrix-vector product:
+//   a_{i+1} = -(Mt^-1 M 1) ag - [Mt^-1 C, Mt^-1 K] [v + h/2 a; u + h v + h^2/4 a].
+// Kernel only: no files, no printing.
+#include <Eigen/Dense>
+
+#include "structure/building_row.hpp"
+
+namespace pound::sears {
+
+/// Mt = M + h/2 C + h^2/4 K for a step h [s].
+Eigen::MatrixXd newmark_matrix(const AssembledRow& a, double h);
+
+struct NewmarkOperator {
+  Eigen::MatrixXd CK;  ///< [Mt^-1 C, Mt^-1 K], n x 2n (column-major) [1/s, 1/s^2]
+  Eigen::VectorXd g;   ///< Mt^-1 M 1 [-]
+
+  NewmarkOperator(const AssembledRow& a, const Eigen::LLT<Eigen::MatrixXd>& mt);
+};
+
+/// The floors' state u [m], v [m/s], acc [m/s^2] with Newmark's step.
+struct NewmarkFloors {
+  Eigen::VectorXd u, v, acc;
+  Eigen::VectorXd work;  ///< scratch: [v + h/2 a; u + h v + h^2/4 a]
+
+  /// a_next = Mt^-1 (p_{i+1} - C (v + h/2 a) - K (u + h v + h^2/4 a)) without contact forces,
+  /// for a step h [s] whose end has ground acceleration ag_next [m/s^2].
+  void predict(double h, const NewmarkOperator& op, double ag_next, Eigen::VectorXd& a_next);
+  /// The step's end from the end-of-step acceleration a_next.
+  void update(double h, const Eigen::VectorXd& a_next);
+};
+
+}  // namespace pound::sears

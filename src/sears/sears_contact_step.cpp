@@ -1,0 +1,198 @@
+// Steps through contacts of a damped Sears run (sears/sears_row_run.hpp): Th. 8.8 made implicit
+// in the contact forces, longer steps through smooth contact forces, sleeping slabs and yielding
+// storeys (docs/speed.md).
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.hpp"
+#include "sears/sears_row_run.hpp"
+#include "sears/site_forces.hpp"
+
+namespace pound::sears::detail {
+
+void SearsRowRun::update_guards() {
+  for (int s = 0; s < ns; ++s)
+    guarded[s] = slabs.asleep(left_slab(s)) || slabs.asleep(right_slab(s));
+}
+
+void SearsRowRun::fall_asleep() {  // at a point of the coarse grid, before fine steps
+  for (int k = 0; k < nf; ++k) {
+    const int sl = layout.floors[k].site_left, sr = layout.floors[k].site_right;
+    const bool free_slab = (sl < 0 || (F(sl) == 0.0 && !in_contact[sl])) &&
+                           (sr < 0 || (F(sr) == 0.0 && !in_contact[sr]));
+    if (free_slab) slabs.fall_asleep(k, hc);
+  }
+  update_guards();
+}
+
+void SearsRowRun::finish_sleep() {  // at the next point of the coarse grid
+  slabs.finish_sleep(stepping.ratio);
+  update_guards();
+}
+
+// End-of-step overlaps without contact forces, delta_pred; for a guarded site an upper bound.
+void SearsRowRun::predict_overlaps() {
+  slabs.predict(begin, op);
+  for (int s = 0; s < ns; ++s) {
+    const auto& site = assembled.sites[s];
+    const double wl = slabs.predicted_right_upper(left_slab(s));
+    const double wr = slabs.predicted_left_lower(right_slab(s));
+    delta_pred(s) = u_hat(site.dof_left) - u_hat(site.dof_right) + wl - wr - site.gap;
+  }
+}
+
+// True when every guarded site's end-of-step overlap bound is below zero (with a margin for
+// round-off); otherwise wakes the sleeping slabs of the failing sites and returns false.
+bool SearsRowRun::guards_hold() {
+  bool hold = true;
+  for (int s = 0; s < ns; ++s) {
+    if (!guarded[s]) continue;
+    const int kl = left_slab(s), kr = right_slab(s);
+    const auto& site = assembled.sites[s];
+    const double bound_end = delta_pred(s) - ops[op].S.row(s).dot(F_next);
+    const double scale = std::fabs(u_hat(site.dof_left)) + std::fabs(u_hat(site.dof_right)) +
+                         std::fabs(site.gap) + std::fabs(slabs.asleep_faces(kl).right) +
+                         std::fabs(slabs.asleep_faces(kr).left) + slabs.asleep_bound(kl) +
+                         slabs.asleep_bound(kr);
+    if (bound_end < -kGuardRoundOff * scale) continue;
+    hold = false;
+    if (slabs.asleep(kl)) slabs.wake(kl);
+    if (slabs.asleep(kr)) slabs.wake(kr);
+  }
+  if (!hold) {
+    update_guards();
+    for (int s = 0; s < ns; ++s)
+      if (!guarded[s]) delta(s) = overlap_now(s);  // exact again (was stale while guarded)
+  }
+  return hold;
+}
+
+long SearsRowRun::room(long i, const Eigen::VectorXd& f) const {
+  bool cross = longest > 1 && slabs.asleep_count() == 0 && per_sample > 0;
+  for (int k = 0; k < nf && cross; ++k) {
+    const int sl = layout.floors[k].site_left, sr = layout.floors[k].site_right;
+    cross = (sl >= 0 && f(sl) > 0.0) || (sr >= 0 && f(sr) > 0.0);
+  }
+  const long r = cross ? per_sample - i % per_sample : stepping.ratio - i % stepping.ratio;
+  return std::min(r, steps - i);
+}
+
+long SearsRowRun::trial_multiple(long i, const Eigen::VectorXd& f) const {
+  const long r = room(i, f);
+  if (r <= m_next) return r;
+  const long k = (r + m_next - 1) / m_next;  // steps to cover the room
+  return (r + k - 1) / k;
+}
+
+// One step of Th. 8.8 made implicit in the contact forces (sears_simulation.hpp), of m fine
+// steps: m = 1 unless the contact forces are smooth enough for a longer step (docs/speed.md,
+// "Longer steps through smooth contact forces"). A longer step is solved first (nothing of the
+// state changes but sleeping slabs woken to the step's start) and taken only if the forces'
+// linear interpolation error over it stays within model.contact_step_tolerance; otherwise the
+// step is solved again shorter.
+long SearsRowRun::fine_step(long i) {
+  long m = trial_multiple(i, F);
+  double worst = 0.0;
+  loads(F, begin);
+  for (;;) {
+    op = static_cast<int>(m - 1);
+    const StepOperators& o = ops[op];
+    floors.predict(o.h, o.nm, ag_at((i + m) * dt), a_next);
+    if (storeys.linear()) {
+      u_hat = u + o.h * v + (0.25 * o.h * o.h) * (acc + a_next);
+      F_next.setZero();
+      if (p.contacts && ns > 0) {
+        F_next = F;  // warm start (zero at guarded sites)
+        do {
+          predict_overlaps();
+          solve_site_forces(layout.laws, o.S, delta_pred, guarded, F_next);
+        } while (slabs.asleep_count() > 0 && !guards_hold());
+      }
+    } else {
+      storey_pass(o.h, o.R, true);
+    }
+    worst = step_error(m);
+    if (m == 1 || worst <= 1.0) break;
+    ++out.counts.long_step_rejections;
+    // The error grows as h^2.
+    m = std::max(1L, std::min(m - 1, static_cast<long>(m * kStepSafety / std::sqrt(worst))));
+  }
+  const StepOperators& o = ops[op];
+  if (ns > 0) a_next.noalias() -= o.H * F_next;
+  floors.update(o.h, a_next);
+  if (!storeys.linear()) storeys.commit();
+  loads(F_next, end);
+  // The next step's multiple (the error grows as h^2); the banks predict for it.
+  m_next = worst > 0.0 ? static_cast<long>(m * kStepSafety / std::sqrt(worst)) : longest;
+  m_next = std::clamp(m_next, 1L, longest);
+  step_slabs(i, m);
+  if (m > 1) ++out.counts.long_steps;
+  F_prev = F;
+  h_prev = o.h;
+  return m;
+}
+
+// The awake slabs through the step of m fine steps from t = i dt just taken; the banks predict
+// for the next step's multiple.
+void SearsRowRun::step_slabs(long i, long m) {
+  const long m_after = i + m < steps ? trial_multiple(i + m, F_next) : 1;
+  for (int k = 0; k < nf; ++k) {
+    if (slabs.asleep(k))
+      slabs.skip(k, m);
+    else
+      slabs.step(k, begin[k], end[k], op, static_cast<int>(m_after - 1));
+  }
+}
+
+double SearsRowRun::step_error(long m) {
+  const double tol = model.contact_step_tolerance;
+  if (longest == 1 || !(tol > 0.0)) return 0.0;
+  const double h = m * dt;
+  double w = 0.0;
+  for (int s = 0; s < ns; ++s) {
+    // A site whose two slabs sleep keeps F = 0 by their bound over the whole coarse interval.
+    // A contact that starts or ends within the step, any other site without force (a contact
+    // could start and end within a longer step unseen, as within a coarse step without its
+    // bound; with one slab awake the guard is checked at the step's end only), or no previous
+    // step: the fine step.
+    if (slabs.asleep(left_slab(s)) && slabs.asleep(right_slab(s))) continue;
+    const double f0 = F(s), f1 = F_next(s), fm = F_prev(s);
+    if (f0 == 0.0 || f1 == 0.0 || !(h_prev > 0.0)) return kNoLongStep;
+    // F[t_i-1, t_i, t_i+1] = F''/2; a quadratic departs from its chord over h by F'' h^2 / 8.
+    const double d2 = 2.0 * ((f1 - f0) / h - (f0 - fm) / h_prev) / (h + h_prev);
+    w = std::max(w, std::fabs(d2) * h * h / (8.0 * tol * std::max(f0, f1)));
+  }
+  return w;
+}
+
+// The step with yielding storeys: a_next = a_hat + R r_next (and - H F_next), r_next from the
+// storeys' return maps at the end-of-step displacements, iterated to a fixed point; with
+// `contacts` the contact forces are solved again in every pass (warm started).
+void SearsRowRun::storey_pass(double h, const Eigen::MatrixXd& R, bool contacts) {
+  a_base = a_next;
+  r_next = storeys.correction();
+  F_next.setZero();
+  if (contacts && p.contacts && ns > 0) F_next = F;  // warm start (zero at guarded sites)
+  for (int pass = 0;; ++pass) {
+    a_next = a_base;
+    a_next.noalias() += R * r_next;
+    u_hat = u + h * v + (0.25 * h * h) * (acc + a_next);
+    if (contacts && p.contacts && ns > 0) {
+      do {
+        predict_overlaps();
+        solve_site_forces(layout.laws, ops[op].S, delta_pred, guarded, F_next);
+      } while (slabs.asleep_count() > 0 && !guards_hold());
+      u_end = u_hat;
+      u_end.noalias() -= (0.25 * h * h) * (ops[op].H * F_next);
+    } else {
+      u_end = u_hat;
+    }
+    if (storeys.trial(u, u_end, r_next)) return;
+    ++out.counts.storey_iterations;
+    if (pass == 50)
+      throw NumericalError(
+          "damped Sears model: the yielding storeys did not converge in 50 passes of a step");
+  }
+}
+
+}  // namespace pound::sears::detail

@@ -1,0 +1,383 @@
+// One run of a damped Sears row (sears/sears_row_run.hpp): set-up, the run's loop, coarse steps,
+// recording and the end.
+#include "sears/sears_row_run.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "core/error.hpp"
+#include "solver/hermite.hpp"
+
+namespace pound::sears::detail {
+
+RowContactLayout SearsRowRun::layout_for(const BuildingRow& row, const AssembledRow& a,
+                                         const SearsRowModel& model, const SearsSteps& stepping) {
+  RowContactLayout layout = make_layout(row, a, model);
+  build_banks(layout, row, model, stepping.fine_s);
+  if (stepping.ratio > 1)
+    for (auto& b : layout.banks) b.set_free_step(stepping.coarse_s);
+  return layout;
+}
+
+SearsRowRun::SearsRowRun(const SearsRowProblem& p_in, const SearsRowModel& model_in)
+    : p(p_in),
+      model(model_in),
+      row(*p_in.row),
+      assembled(assemble(row)),
+      stepping(sears_row_steps(row, p.motion, model)),
+      dt(stepping.fine_s),
+      hc(stepping.coarse_s),
+      steps(static_cast<long>(std::ceil(p.t_end / dt - 1e-9))),
+      event(stepping.ratio > 1),
+      layout(layout_for(row, assembled, model, stepping)),
+      n(assembled.dofs()),
+      ns(static_cast<int>(assembled.sites.size())),
+      nf(static_cast<int>(layout.floors.size())),
+      nm_coarse(assembled, Eigen::LLT<Eigen::MatrixXd>(newmark_matrix(assembled, hc))),
+      bound(assembled, p.motion ? p.motion->pga() : 0.0),
+      storeys(assembled, p.u0.size() ? p.u0 : Eigen::VectorXd::Zero(assembled.dofs())),
+      u(floors.u),
+      v(floors.v),
+      acc(floors.acc),
+      rec(assembled, assembled.storeys, p.contacts, p.record_history),
+      slabs(layout.banks, out.counts) {
+  build_operators();
+  initial_state();
+}
+
+// ops[m - 1] for steps of m = 1 .. longest fine steps through contacts (StepOperators).
+void SearsRowRun::build_operators() {
+  Eigen::MatrixXd Dsites = Eigen::MatrixXd::Zero(n, ns);  // columns e_L - e_R
+  for (int s = 0; s < ns; ++s) {
+    Dsites(assembled.sites[s].dof_left, s) = 1.0;
+    Dsites(assembled.sites[s].dof_right, s) = -1.0;
+  }
+  // A run without contacts at a row with contact sites never carries a force, so its steps
+  // off the coarse grid (the end of the run) are fine ones: one length.
+  longest = !p.contacts && ns > 0 ? 1 : stepping.longest;
+  for (long m = 1; m <= longest; ++m) {
+    const double h = m * dt;
+    const Eigen::LLT<Eigen::MatrixXd> mt(newmark_matrix(assembled, h));
+    if (m > 1)
+      for (auto& b : layout.banks) b.add_step(h);
+    StepOperators o{h, NewmarkOperator(assembled, mt), mt.solve(Dsites), {}, {}};
+    o.S = (0.25 * h * h) * Dsites.transpose() * o.H +
+          modal_compliance(layout, static_cast<int>(m - 1));
+    if (!storeys.linear()) o.R = storeys.influence(mt);
+    ops.push_back(std::move(o));
+  }
+}
+
+void SearsRowRun::initial_state() {
+  const AssembledRow& a = assembled;
+  const Eigen::VectorXd m_ones = a.M * Eigen::VectorXd::Ones(n);
+  u = p.u0.size() ? p.u0 : Eigen::VectorXd::Zero(n);
+  v = p.v0.size() ? p.v0 : Eigen::VectorXd::Zero(n);
+  if (storeys.linear()) {
+    acc = a.M.ldlt().solve(-m_ones * ag_at(0.0) - a.C * v - a.K * u);
+  } else {
+    // f = K u - B r (sears/newmark_storeys.hpp).
+    R_coarse = storeys.influence(Eigen::LLT<Eigen::MatrixXd>(newmark_matrix(a, hc)));
+    Eigen::VectorXd Br = storeys.correction();
+    for (int j = 0; j < n; ++j)
+      if (a.storeys[j].below >= 0) Br(a.storeys[j].below) -= storeys.correction()(j);
+    acc = a.M.ldlt().solve(-m_ones * ag_at(0.0) - a.C * v - a.K * u + Br);
+    r_next = storeys.correction();
+  }
+  F = Eigen::VectorXd::Zero(ns);
+  F_next = F;
+  F_prev = F;
+  delta_pred.resize(ns);
+  delta.resize(ns);
+  u_hat.resize(n);
+  a_next.resize(n);
+  floors.work.resize(2 * n);
+  for (int s = 0; s < ns; ++s)
+    delta(s) = u(a.sites[s].dof_left) - u(a.sites[s].dof_right) - a.sites[s].gap;
+  out.dt_s = dt;
+  out.coarse_dt_s = hc;
+  rec.start(u);
+  for (const auto& f : layout.floors) out.slabs.push_back(SlabPeaks{f.building, f.floor, 0.0, 0.0});
+  in_contact.assign(ns, false);
+  out.contacts.assign(ns, SiteContacts{});
+  for (int s = 0; s < ns; ++s) {
+    in_contact[s] = delta(s) > 0.0;
+    if (in_contact[s]) out.contacts[s].phases.push_back(ContactPhase{});  // open at t = 0
+  }
+  begin.resize(nf);
+  end.resize(nf);
+  modal_bound.assign(nf, 0.0);
+  site_approach.assign(ns, 0.0);
+  guarded.assign(ns, 0);
+  free_approach.assign(ns, 0.0);
+  free_approach_rate.assign(ns, 0.0);
+  if (p.motion && p.motion->dt > 0.0) {
+    const double x = p.motion->dt / dt;
+    const long k = std::lround(x);
+    if (k >= 1 && std::fabs(x - k) <= 1e-9 * x) per_sample = k;
+  }
+  for (int s = 0; s < ns && !p.contacts; ++s) {
+    free_approach[s] = approach_bound(s);
+    free_approach_rate[s] = v(a.sites[s].dof_left) - v(a.sites[s].dof_right);
+  }
+}
+
+void SearsRowRun::loads(const Eigen::VectorXd& f, std::vector<EndLoads>& to) const {
+  for (int i = 0; i < nf; ++i) {
+    to[i].left_N = layout.floors[i].site_left >= 0 ? f(layout.floors[i].site_left) : 0.0;
+    to[i].right_N = layout.floors[i].site_right >= 0 ? -f(layout.floors[i].site_right) : 0.0;
+  }
+}
+
+double SearsRowRun::overlap_now(int s) const {
+  const auto& site = assembled.sites[s];
+  return u(site.dof_left) - u(site.dof_right) + slabs.disp(left_slab(s)).right -
+         slabs.disp(right_slab(s)).left - site.gap;
+}
+
+double SearsRowRun::approach_bound(int s) const {
+  const auto& site = assembled.sites[s];
+  return u(site.dof_left) - u(site.dof_right) + slabs.right_face_upper(left_slab(s)) -
+         slabs.left_face_lower(right_slab(s));
+}
+
+void SearsRowRun::wake_site(int s) {
+  if (slabs.dormant(left_slab(s))) slabs.wake_dormant(left_slab(s));
+  if (slabs.dormant(right_slab(s))) slabs.wake_dormant(right_slab(s));
+  delta(s) = overlap_now(s);
+}
+
+void SearsRowRun::coarse_step(double t_next) {  // F = 0 at both ends
+  floors.predict(hc, nm_coarse, ag_at(t_next), a_next);
+  if (!storeys.linear()) storey_pass(hc, R_coarse, false);
+  floors.update(hc, a_next);
+  if (!storeys.linear()) storeys.commit();
+  F_next.setZero();
+  loads(F_next, end);
+  // Without contacts the modes are never loaded and stay at rest (zero displacement and
+  // acceleration, as initialised): nothing to step.
+  if (p.contacts)
+    for (int k = 0; k < nf; ++k) {
+      if (slabs.dormant(k))
+        slabs.skip_dormant(k);
+      else
+        slabs.step_free(k);
+    }
+}
+
+// True when no contact can start within the next coarse step (docs/speed.md): no force acts
+// now, and at every site the bound on the faces' approach (building translation plus the
+// internal vibration of both slabs), times kCoarseBoundSafety, stays below the gap.
+bool SearsRowRun::contact_free() {
+  if (!p.contacts || ns == 0) return true;
+  // A test that fails at a site with a dormant slab is repeated with the site's exact overlap.
+  auto holds = [&](auto&& test) {
+    for (int s = 0; s < ns; ++s) {
+      if (test(s)) continue;
+      if (!site_dormant(s)) return false;
+      wake_site(s);
+      if (!test(s)) return false;
+    }
+    return true;
+  };
+  if (!holds([&](int s) { return !in_contact[s] && F(s) == 0.0 && delta(s) < 0.0; })) return false;
+  if (storeys.linear())
+    bound.set_state(u, v);
+  else
+    bound.set_state(u, v, storeys.strain_by_building(u));
+  // The building translation alone first (cheap); each site's bound is kept for the full test
+  // below (waking a dormant slab changes the overlap, not the buildings' state).
+  if (!holds([&](int s) {
+        const auto& site = assembled.sites[s];
+        site_approach[s] = bound.approach(site.dof_left, site.dof_right, v, hc);
+        return kCoarseBoundSafety * site_approach[s] < -delta(s);
+      }))
+    return false;
+  // Free modes only lose energy, so the bound taken after the last fine step stays valid
+  // through every following coarse step (dormant or not).
+  if (!modal_bound_valid)
+    for (int k = 0; k < nf; ++k) modal_bound[k] = slabs.bank(k).face_motion_bound(hc);
+  modal_bound_valid = true;
+  return holds([&](int s) {
+    const double b = site_approach[s] + modal_bound[left_slab(s)] + modal_bound[right_slab(s)];
+    return kCoarseBoundSafety * b < -delta(s);
+  });
+}
+
+// Contact sites: events, peaks, impulse (force linear over the step).
+void SearsRowRun::record_sites(bool coarse, double h, double t_next) {
+  for (int s = 0; s < ns; ++s) {
+    if (guarded[s]) continue;  // no force and no contact (shown by guards_hold)
+    record_site(s, coarse, h, t_next);
+  }
+  if (!coarse && ns > 0 && (F.cwiseAbs().maxCoeff() > 0.0 || F_next.cwiseAbs().maxCoeff() > 0.0))
+    ++out.counts.fine_in_contact;
+}
+
+void SearsRowRun::record_site(int s, bool coarse, double h, double t_next) {
+  double d = overlap_bound(s);  // exact unless a slab is dormant
+  if (site_dormant(s) && !(d < 0.0)) {
+    wake_site(s);
+    d = delta(s);
+  }
+  if (coarse && p.contacts && d > 0.0) ++out.counts.bound_violations;
+  if (!p.contacts) {
+    // Without contacts the modes stay at rest (coarse_step, fine_step with zero loads) and
+    // the faces move with the floors: the approach is that of the floors, its peak between
+    // the step's ends from their cubic Hermite interpolant (solver/hermite.hpp).
+    const double ap = approach_bound(s);
+    const double rate = v(assembled.sites[s].dof_left) - v(assembled.sites[s].dof_right);
+    rec.approach_over_step(s, Hermite{free_approach[s], ap, h * free_approach_rate[s], h * rate});
+    free_approach[s] = ap;
+    free_approach_rate[s] = rate;
+  }
+  const double step_impulse = 0.5 * (F(s) + F_next(s)) * h;
+  rec.impulse(s, step_impulse);
+  rec.force(s, F_next(s));
+  rec.penetration(s, d);
+  const double t_cross = delta(s) != d ? t_next - h + h * delta(s) / (delta(s) - d) : t_next;
+  std::vector<ContactPhase>& phases = out.contacts[s].phases;
+  if (!in_contact[s] && d > 0.0) {
+    in_contact[s] = true;
+    rec.contact_started(s, t_cross);
+    ++rec.result().events;
+    phases.push_back(ContactPhase{t_cross, -1.0, 0.0, 0.0});
+  } else if (in_contact[s] && !(d > 0.0)) {
+    in_contact[s] = false;
+    ++rec.result().events;
+    rec.contact_ended(s, t_cross);
+    phases.back().end_s = t_cross;
+    phases.back().impulse_Ns += step_impulse;  // the force falls to zero in this step
+  }
+  if (in_contact[s]) {
+    phases.back().peak_force_N = std::max(phases.back().peak_force_N, F_next(s));
+    phases.back().impulse_Ns += step_impulse;
+  }
+  delta(s) = d;
+}
+
+void SearsRowRun::record_peaks(bool coarse, double ag) {
+  // Floor peaks (relative displacement, storey drift, absolute acceleration).
+  rec.sampled_peaks(u);
+  rec.accel_peaks(acc.data(), ag);
+  // Slab faces and centres: floor (rigid) + internal acceleration (Th. 7.5, 8.3).
+  if (coarse) ++coarse_in_run;
+  for (int k = 0; k < nf; ++k)
+    if (!slabs.asleep(k)) record_slab(k, coarse, ag);  // asleep: sampled when it wakes
+}
+
+void SearsRowRun::record_slab(int k, bool coarse, double ag) {
+  const double a0 = acc(layout.floors[k].dof) + ag;
+  SlabPeaks& pk = out.slabs[k];
+  const double lowest_peak = std::min(pk.face_accel, pk.centre_accel);
+  if (slabs.dormant(k)) {
+    if (slabs.peaks_bounded(k, std::fabs(a0), lowest_peak)) return;  // no new peak possible
+    slabs.wake_dormant(k);
+  }
+  const SectionValues& ai = slabs.accel(k);
+  double face = 0.0;
+  if (layout.floors[k].site_left >= 0) face = std::max(face, std::fabs(a0 + ai.left));
+  if (layout.floors[k].site_right >= 0) face = std::max(face, std::fabs(a0 + ai.right));
+  pk.face_accel = std::max(pk.face_accel, face);
+  pk.centre_accel = std::max(pk.centre_accel, std::fabs(a0 + ai.centre));
+  // After a coarse step (and every kDormancyRetry coarse steps of a run), an awake slab
+  // whose free vibration cannot raise its peaks now goes dormant.
+  if (coarse && p.contacts && model.sleeping_slabs && coarse_in_run % kDormancyRetry == 1)
+    slabs.try_dormant(k, std::fabs(a0), std::min(pk.face_accel, pk.centre_accel));
+}
+
+SearsRowResult SearsRowRun::run() {
+  long i = 0;
+  while (i < steps) {
+    const bool on_grid = event && i % stepping.ratio == 0 && i + stepping.ratio <= steps;
+    const bool coarse = on_grid && contact_free();
+    if (!coarse && slabs.dormant_count() > 0) slabs.wake_all_dormant();
+    if (!coarse) coarse_in_run = 0;
+    if (on_grid && !coarse && p.contacts && model.sleeping_slabs) fall_asleep();
+    if (p.track_energy) {
+      u_prev = u;
+      v_prev = v;
+    }
+    double h = hc;
+    if (coarse) {
+      i += stepping.ratio;
+      coarse_step(i * dt);
+      ++out.counts.coarse;
+      m_next = 1;
+      F_prev = F;
+      h_prev = hc;
+    } else {
+      // A step through contacts (SearsRowRun::room says how far it may reach).
+      const long m = fine_step(i);
+      i += m;
+      h = m * dt;
+      modal_bound_valid = false;
+      ++out.counts.fine;
+      if (slabs.asleep_count() > 0 && i % stepping.ratio == 0) finish_sleep();
+    }
+    const double t_next = i * dt;
+    RunRecorder::check_finite(u, t_next, "damped Sears model");
+    const double ag = ag_at(t_next);
+    if (p.track_energy) add_energy(h, t_next);
+    record_sites(coarse, h, t_next);
+    F = F_next;
+    record_peaks(coarse, ag);
+    if (rec.keeps_history()) {
+      Eigen::VectorXd shear(n);
+      for (int k = 0; k < n; ++k) shear(k) = storeys.shear(u, k);
+      rec.history(t_next, u, acc, ag, F, shear);
+    }
+  }
+  finish();
+  return std::move(out);
+}
+
+void SearsRowRun::finish() {
+  slabs.wake_all_dormant();
+  for (auto& c : out.contacts) count_impacts(c, model.impact_force_fraction);
+  rec.finish(steps * dt, u, v);
+  RowResult& r = rec.result();
+  r.steps = out.counts.fine + out.counts.coarse;
+  r.hysteretic_energy.resize(n);
+  for (int k = 0; k < n; ++k) r.hysteretic_energy(k) = storeys.dissipated(u, k);
+  if (p.track_energy) {
+    EnergyBalance& e = r.energy;
+    e.input = e_input;
+    e.damping = e_damping;
+    e.contact = e_contact;
+    e.kinetic = 0.5 * v.dot(assembled.M * v);
+    e.strain = storeys.stored(u);
+    e.hysteretic = r.hysteretic_energy.sum();
+  }
+  out.row = std::move(r);
+}
+
+// The step's work terms (Newmark average acceleration: u_i+1 - u_i = h (v_i + v_i+1) / 2 and
+// M (v_i+1 - v_i) = h (p - C v - f) averaged over the step's ends, so that the kinetic energy
+// changes by exactly the work of the averaged forces on the displacement increment):
+// input -du^T M 1 (ag_i + ag_i+1) / 2, damping h v_avg^T C v_avg, contact
+// sum_s (F_i + F_i+1) / 2 (du_L - du_R).
+void SearsRowRun::add_energy(double h, double t_next) {
+  const AssembledRow& a = assembled;
+  const double ag_avg = 0.5 * (ag_at(t_next - h) + ag_at(t_next));
+  double mdu = 0.0;
+  for (int k = 0; k < n; ++k) mdu += a.M(k, k) * (u(k) - u_prev(k));
+  e_input -= ag_avg * mdu;
+  const Eigen::VectorXd v_avg = 0.5 * (v + v_prev);
+  e_damping += h * v_avg.dot(a.C * v_avg);
+  for (int k = 0; k < ns; ++k) {
+    const int l = a.sites[k].dof_left, rr = a.sites[k].dof_right;
+    e_contact += 0.5 * (F(k) + F_next(k)) * ((u(l) - u_prev(l)) - (u(rr) - u_prev(rr)));
+  }
+}
+
+}  // namespace pound::sears::detail
+
+namespace pound::sears {
+
+SearsRowResult solve_sears_row(const SearsRowProblem& p, const SearsRowModel& model) {
+  return detail::SearsRowRun(p, model).run();
+}
+
+}  // namespace pound::sears

@@ -1,0 +1,142 @@
+#pragma once
+// One run of a damped Sears row, solve_sears_row() (sears_simulation.hpp; docs/sears.md
+// "Buildings in a row", docs/speed.md), shared by sears_row_run.cpp (set-up, the run's loop,
+// coarse steps, recording, the end) and sears_contact_step.cpp (steps through contacts: the
+// contact forces, longer steps, sleeping slabs, yielding storeys). Members are named after the
+// symbols of the equations (u, v, F, S, H, ...). Internal to src/sears.
+#include <Eigen/Dense>
+#include <limits>
+#include <vector>
+
+#include "sears/newmark_row.hpp"
+#include "sears/newmark_storeys.hpp"
+#include "sears/sears_row_layout.hpp"
+#include "sears/sears_simulation.hpp"
+#include "sears/slab_set.hpp"
+#include "sears/translation_bound.hpp"
+#include "solver/run_recorder.hpp"
+
+namespace pound::sears::detail {
+
+// Longer steps through smooth contact forces (docs/speed.md): the next step's length is
+// kStepSafety times the one the error estimate allows; kNoLongStep marks a step that must be
+// a fine one (SearsRowRun::step_error).
+inline constexpr double kStepSafety = 0.9;
+inline constexpr double kNoLongStep = std::numeric_limits<double>::infinity();
+
+// The operators of one loaded step of h = m fine steps (m = 1 .. SearsSteps::longest): with the
+// contact forces P = -sum_s F_s (e_L - e_R), a_{i+1} = a_hat - H F, H = Mt^-1 [e_L - e_R],
+// u_{i+1} = u_hat - h^2/4 H F, the overlaps' compliance S, and for yielding storeys R = Mt^-1 B.
+struct StepOperators {
+  double h;
+  NewmarkOperator nm;
+  Eigen::MatrixXd H, S, R;
+};
+
+class SearsRowRun {
+ public:
+  SearsRowRun(const SearsRowProblem& p, const SearsRowModel& model);
+  SearsRowResult run();
+
+ private:
+  void build_operators();
+  void initial_state();
+  void loads(const Eigen::VectorXd& f, std::vector<EndLoads>& to) const;
+  double ag_at(double t) const { return p.motion ? p.motion->at(t) : 0.0; }
+  int left_slab(int s) const { return layout.site_left_floor[s]; }
+  int right_slab(int s) const { return layout.site_right_floor[s]; }
+  // Overlap at the start of the step at site s (both slabs awake).
+  double overlap_now(int s) const;
+  // Approach u_L - u_R of the faces of site s (floors plus internal vibration); with a dormant
+  // slab, its upper bound.
+  double approach_bound(int s) const;
+  double overlap_bound(int s) const { return approach_bound(s) - assembled.sites[s].gap; }
+  bool site_dormant(int s) const {
+    return slabs.dormant(left_slab(s)) || slabs.dormant(right_slab(s));
+  }
+  void wake_site(int s);  // both slabs of site s awake, delta(s) exact
+  // Sleeping slabs (runs of fine steps).
+  void update_guards();
+  void fall_asleep();
+  void finish_sleep();
+  void predict_overlaps();
+  bool guards_hold();
+  // Steps through contacts (sears_contact_step.cpp).
+  long fine_step(long i);
+  long trial_multiple(long i, const Eigen::VectorXd& f) const;
+  long room(long i, const Eigen::VectorXd& f) const;
+  double step_error(long m);
+  void storey_pass(double h, const Eigen::MatrixXd& R, bool contacts);
+  void step_slabs(long i, long m);
+  // Coarse steps (no contact).
+  void coarse_step(double t_next);
+  bool contact_free();
+  // Results after a step.
+  void add_energy(double h, double t_next);
+  void record_sites(bool coarse, double h, double t_next);
+  void record_site(int s, bool coarse, double h, double t_next);
+  void record_peaks(bool coarse, double ag);
+  void record_slab(int k, bool coarse, double ag);
+  void finish();
+
+  // The layout with its modal banks for these steps.
+  static RowContactLayout layout_for(const BuildingRow& row, const AssembledRow& a,
+                                     const SearsRowModel& model, const SearsSteps& stepping);
+
+  const SearsRowProblem& p;
+  const SearsRowModel& model;
+  const BuildingRow& row;
+  const AssembledRow assembled;
+  const SearsSteps stepping;
+  const double dt, hc;  // fine and coarse step [s]
+  const long steps;     // fine steps in the run
+  long per_sample = 0;  // fine steps per record sample (0: the record spacing is not a multiple)
+  const bool event;
+  RowContactLayout layout;
+  const int n, ns, nf;  // floor DOFs, contact sites, colliding floors
+
+  // ops[m - 1]: steps of m fine steps through contacts; the modal banks' recurrence m - 1.
+  std::vector<StepOperators> ops;
+  const NewmarkOperator nm_coarse;  // coarse steps carry no contact force (event stepping)
+  long longest = 1;                 // ops.size(): the longest step through contacts [fine steps]
+  int op = 0;                       // ops[op]: the step being solved
+  TranslationBound bound;
+
+  // Yielding storeys (sears/newmark_storeys.hpp): a_i+1 = a_hat + R r_i+1 - H F, R = Mt^-1 B
+  // for each step size; r iterated with the storeys' return maps.
+  NewmarkStoreys storeys;
+  Eigen::MatrixXd R_coarse;
+  Eigen::VectorXd r_next, a_base, u_end;
+  // Energy balance (p.track_energy): the work terms of each step, trapezoidal in the step's
+  // end values, which Newmark's average-acceleration scheme balances exactly for linear storeys.
+  Eigen::VectorXd u_prev, v_prev;
+  double e_input = 0.0, e_damping = 0.0, e_contact = 0.0;
+
+  // Floor state [m], [m/s], [m/s^2]; contact forces [N] and overlaps [m] per site.
+  NewmarkFloors floors;
+  Eigen::VectorXd &u, &v, &acc;
+  Eigen::VectorXd F, F_next, delta_pred, delta, u_hat, a_next;
+  SearsRowResult out;
+  RunRecorder rec;
+  SlabSet slabs;
+  std::vector<bool> in_contact;
+  std::vector<EndLoads> begin, end;
+  // Longer steps through smooth contact forces (docs/speed.md): the forces at the start of the
+  // previous step [N] and its length [s] (0: none since the start), the next step's multiple.
+  Eigen::VectorXd F_prev;
+  double h_prev = 0.0;
+  long m_next = 1;
+  std::vector<double> modal_bound;
+  std::vector<double> site_approach;  // TranslationBound::approach per site, contact_free() [m]
+  // Runs without contacts: each site's face approach and its rate at the last step's end, for
+  // the peak approach between steps (SiteResult::peak_approach) [m], [m/s].
+  std::vector<double> free_approach, free_approach_rate;
+  bool modal_bound_valid = false;  // modal_bound holds since the last fine step
+  // Sites with a sleeping slab ("guarded") keep F = 0 as long as the upper bound of their
+  // end-of-step overlap stays negative (guards_hold); otherwise their sleeping slabs wake and the
+  // step's forces are solved again with the site included.
+  std::vector<char> guarded;
+  long coarse_in_run = 0;  // coarse steps since the last fine step
+};
+
+}  // namespace pound::sears::detail
