@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "app/commands.hpp"
-#include "io/history_writer.hpp"
+#include "simulation/history_file.hpp"
 #include "io/json.hpp"
 #include "io/options.hpp"
 #include "simulation/simulate_row.hpp"

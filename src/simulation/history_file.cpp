@@ -1,4 +1,4 @@
-#include "io/history_writer.hpp"
+#include "simulation/history_file.hpp"
 
 #include <cmath>
 
