@@ -5,9 +5,9 @@
 #include <vector>
 
 #include "app/commands.hpp"
-#include "simulation/history_file.hpp"
 #include "io/json.hpp"
 #include "io/options.hpp"
+#include "simulation/history_file.hpp"
 #include "simulation/simulate_row.hpp"
 #include "study/row_options.hpp"
 #include "study/sears_row_options.hpp"

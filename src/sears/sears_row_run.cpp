@@ -205,17 +205,8 @@ bool SearsRowRun::contact_free() {
   });
 }
 
-// Contact sites: events, peaks, impulse (force linear over the step).
-void SearsRowRun::record_sites(bool coarse, double h, double t_next) {
-  for (int s = 0; s < ns; ++s) {
-    if (guarded[s]) continue;  // no force and no contact (shown by guards_hold)
-    record_site(s, coarse, h, t_next);
-  }
-  if (!coarse && ns > 0 && (F.cwiseAbs().maxCoeff() > 0.0 || F_next.cwiseAbs().maxCoeff() > 0.0))
-    ++out.counts.fine_in_contact;
-}
-
-void SearsRowRun::record_site(int s, bool coarse, double h, double t_next) {
+__attribute__((always_inline)) inline void SearsRowRun::record_site(int s, bool coarse, double h,
+                                                                    double t_next) {
   double d = overlap_bound(s);  // exact unless a slab is dormant
   if (site_dormant(s) && !(d < 0.0)) {
     wake_site(s);
@@ -257,17 +248,17 @@ void SearsRowRun::record_site(int s, bool coarse, double h, double t_next) {
   delta(s) = d;
 }
 
-void SearsRowRun::record_peaks(bool coarse, double ag) {
-  // Floor peaks (relative displacement, storey drift, absolute acceleration).
-  rec.sampled_peaks(u);
-  rec.accel_peaks(acc.data(), ag);
-  // Slab faces and centres: floor (rigid) + internal acceleration (Th. 7.5, 8.3).
-  if (coarse) ++coarse_in_run;
-  for (int k = 0; k < nf; ++k)
-    if (!slabs.asleep(k)) record_slab(k, coarse, ag);  // asleep: sampled when it wakes
+// Contact sites: events, peaks, impulse (force linear over the step).
+void SearsRowRun::record_sites(bool coarse, double h, double t_next) {
+  for (int s = 0; s < ns; ++s) {
+    if (guarded[s]) continue;  // no force and no contact (shown by guards_hold)
+    record_site(s, coarse, h, t_next);
+  }
+  if (!coarse && ns > 0 && (F.cwiseAbs().maxCoeff() > 0.0 || F_next.cwiseAbs().maxCoeff() > 0.0))
+    ++out.counts.fine_in_contact;
 }
 
-void SearsRowRun::record_slab(int k, bool coarse, double ag) {
+inline void SearsRowRun::record_slab(int k, bool coarse, double ag) {
   const double a0 = acc(layout.floors[k].dof) + ag;
   SlabPeaks& pk = out.slabs[k];
   const double lowest_peak = std::min(pk.face_accel, pk.centre_accel);
@@ -285,6 +276,15 @@ void SearsRowRun::record_slab(int k, bool coarse, double ag) {
   // whose free vibration cannot raise its peaks now goes dormant.
   if (coarse && p.contacts && model.sleeping_slabs && coarse_in_run % kDormancyRetry == 1)
     slabs.try_dormant(k, std::fabs(a0), std::min(pk.face_accel, pk.centre_accel));
+}
+
+void SearsRowRun::record_peaks(bool coarse, double ag) {
+  // Floor peaks (relative displacement, storey drift, absolute acceleration).
+  rec.sampled_peaks(u, acc.data(), ag);
+  // Slab faces and centres: floor (rigid) + internal acceleration (Th. 7.5, 8.3).
+  if (coarse) ++coarse_in_run;
+  for (int k = 0; k < nf; ++k)
+    if (!slabs.asleep(k)) record_slab(k, coarse, ag);  // asleep: sampled when it wakes
 }
 
 SearsRowResult SearsRowRun::run() {

@@ -80,11 +80,6 @@ void SlabSet::finish_sleep(long ratio) {
   n_asleep_ = 0;
 }
 
-void SlabSet::skip_dormant(int k) {
-  ++dormant_steps_[k];
-  ++counts_.dormant_slab_steps;
-}
-
 void SlabSet::try_dormant(int k, double a0_abs, double lowest) {
   accel_bound_[k] = banks_[k].free_accel_bound();
   if (!(a0_abs + accel_bound_[k] <= lowest)) return;

@@ -71,7 +71,10 @@ class SlabSet {
   bool dormant(int k) const { return dormant_[k]; }
   int dormant_count() const { return n_dormant_; }
   /// Dormant slab k skips a coarse step.
-  void skip_dormant(int k);
+  void skip_dormant(int k) {
+    ++dormant_steps_[k];
+    ++counts_.dormant_slab_steps;
+  }
   /// Whether slab k's free vibration cannot raise a peak absolute acceleration above `lowest`
   /// [m/s^2] with its floor at |a0| [m/s^2] (the bound of its last try_dormant()).
   bool peaks_bounded(int k, double a0_abs, double lowest) const {

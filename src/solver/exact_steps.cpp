@@ -34,11 +34,6 @@ void ExactSteps::enable(const AssembledRow& row, double h_max, double rec_dt,
   invalidate();
 }
 
-bool ExactSteps::on_grid(double t) {
-  while (double(point_ + 1) * h_ <= t * (1 + 1e-14) + 1e-15) ++point_;
-  return std::fabs(t - double(point_) * h_) <= 1e-14 * std::max(1.0, t) + 1e-15;
-}
-
 void ExactSteps::undo_iteration() {
   if (visited_ >= 0) --visits_[visited_];
   declined_ = declined_at_top_;

@@ -5,6 +5,8 @@
 // ag, so one step of linear_step() reaches t_k+1 exactly. This keeps the grid and the
 // propagators (one per tangent stiffness met); the row solver takes the steps. Kernel only.
 #include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "solver/linear_step.hpp"
@@ -44,7 +46,10 @@ class ExactSteps {
   bool enabled() const { return enabled_; }
   double grid_step() const { return h_; }
   /// The last grid point at or before t [s] (advancing to it); whether t is on it.
-  bool on_grid(double t);
+  bool on_grid(double t) {
+    while (double(point_ + 1) * h_ <= t * (1 + 1e-14) + 1e-15) ++point_;
+    return std::fabs(t - double(point_) * h_) <= 1e-14 * std::max(1.0, t) + 1e-15;
+  }
   /// The next grid point's time [s].
   double next_point() const { return double(point_ + 1) * h_; }
   /// After an exact step to the next point.

@@ -38,14 +38,6 @@ RowDynamics::RowDynamics(const AssembledRow& row, const std::vector<RowStorey>& 
   scratch_.setZero(n_);
 }
 
-void RowDynamics::contact_forces(const Eigen::VectorXd& y) {
-  for (int i = 0; i < ns_; ++i) {
-    double f = 0.0;
-    if (active[i]) f = (*laws_)[i]->force(penetration(y, i), penetration_rate(y, i), v0[i]);
-    force_(i) = f;
-  }
-}
-
 void RowDynamics::rhs(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy) {
   contact_forces(y);
   const double a_g = ag(t);

@@ -50,7 +50,13 @@ class RowDynamics {
   /// dy at (t, y) [SI per s]; the contact forces of y in contact_force().
   void rhs(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy);
   /// The contact force per site at y [N] (zero where no contact is active).
-  void contact_forces(const Eigen::VectorXd& y);
+  void contact_forces(const Eigen::VectorXd& y) {
+    for (int i = 0; i < ns_; ++i) {
+      double f = 0.0;
+      if (active[i]) f = (*laws_)[i]->force(penetration(y, i), penetration_rate(y, i), v0[i]);
+      force_(i) = f;
+    }
+  }
   const Eigen::VectorXd& contact_force() const { return force_; }
 
   /// Penetration delta = u_L - u_R - gap at site i (physics.md section 1) [m] and its rate.

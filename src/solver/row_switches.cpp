@@ -39,7 +39,7 @@ void RowSwitches::storey_changed(int dof, const StoreyState& s) {
   }
 }
 
-double RowSwitches::first_crossing(const Hermite& c) {
+__attribute__((always_inline)) inline double RowSwitches::first_crossing(const Hermite& c) {
   double lo = 0.0, th = 1.0;
   const int nscan = 32;
   for (int i = 1; i <= nscan; ++i) {

@@ -6,8 +6,6 @@
 #include "core/error.hpp"
 
 namespace pound {
-namespace {
-
 // QuinticHermite::absmax_bound() of every floor's displacement (out[i]) and of every storey's
 // drift (out[n + i]; below[i] = 1 where the storey joins floor i - 1, 0 where it stands on the
 // ground, so that the drift of a first storey is its floor's displacement) over a step of
@@ -15,7 +13,7 @@ namespace {
 // floors, compiled for AVX2 and the baseline (no fused multiply-add, so the same bits), instead
 // of a bound and a branch per quintic (peaks_over_step refines only where a bound could raise a
 // peak).
-__attribute__((target_clones("avx2", "default"))) void peak_bounds(
+__attribute__((target_clones("avx2", "default"))) void RunRecorder::peak_bounds(
     int n, const double* __restrict u0, const double* __restrict u1, const double* __restrict v0,
     const double* __restrict v1, const double* __restrict a0, const double* __restrict a1,
     const double* __restrict below, double h, double h2, double* __restrict out) {
@@ -32,8 +30,6 @@ __attribute__((target_clones("avx2", "default"))) void peak_bounds(
                        h2 * a0[i] - w * (h2 * a0[i - 1]), h2 * a1[i] - w * (h2 * a1[i - 1]));
   }
 }
-
-}  // namespace
 
 RunRecorder::RunRecorder(const AssembledRow& row, const std::vector<RowStorey>& storeys,
                          bool contacts, bool history)
@@ -61,48 +57,6 @@ void RunRecorder::start(const Eigen::VectorXd& u0) {
   r_.sites.assign(ns_, SiteResult{});
   for (int s = 0; s < ns_ && !contacts_; ++s)
     r_.sites[s].peak_approach = u0(site_dofs_[s].first) - u0(site_dofs_[s].second);
-}
-
-void RunRecorder::sampled_peaks(const Eigen::VectorXd& u) {
-  for (int k = 0; k < n_; ++k) {
-    const int b = below_[k];
-    r_.peak_disp(k) = std::max(r_.peak_disp(k), std::fabs(u(k)));
-    r_.peak_drift(k) = std::max(r_.peak_drift(k), std::fabs(b >= 0 ? u(k) - u(b) : u(k)));
-  }
-}
-
-void RunRecorder::peaks_over_step(const Eigen::VectorXd& y0, const Eigen::VectorXd& y1,
-                                  const Eigen::VectorXd& dy0, const Eigen::VectorXd& dy1,
-                                  double h) {
-  // Displacement and drift extrema inside the step from the quintic Hermite interpolant of the
-  // displacements, velocities and accelerations at both ends (sixth-order accurate: exact steps
-  // of h_max = T_min / 20 leave the peaks within 1e-8 of the motion between them).
-  const int n = n_;
-  const double h2 = h * h;
-  const double* bound = bounds_.data();
-  peak_bounds(n, y0.data(), y1.data(), y0.data() + n, y1.data() + n, dy0.data() + n, dy1.data() + n,
-              weight_.data(), h, h2, bounds_.data());
-  for (int i = 0; i < n; ++i) {  // QuinticHermite::raise_peak, its bound from peak_bounds
-    const bool disp = !(bound[i] <= r_.peak_disp(i)), drift = !(bound[n + i] <= r_.peak_drift(i));
-    if (!disp && !drift) continue;
-    const QuinticHermite c{y0(i),         y1(i),           h * y0(n + i),
-                           h * y1(n + i), h2 * dy0(n + i), h2 * dy1(n + i)};
-    if (disp) r_.peak_disp(i) = c.refine_peak(r_.peak_disp(i));
-    const int b = below_[i];
-    if (b < 0) {  // a first storey: its drift is the floor's displacement
-      r_.peak_drift(i) = r_.peak_disp(i);
-      continue;
-    }
-    if (!drift) continue;
-    QuinticHermite d = c;
-    d.g0 -= y0(b);
-    d.g1 -= y1(b);
-    d.m0 -= h * y0(n + b);
-    d.m1 -= h * y1(n + b);
-    d.c0 -= h2 * dy0(n + b);
-    d.c1 -= h2 * dy1(n + b);
-    r_.peak_drift(i) = d.refine_peak(r_.peak_drift(i));
-  }
 }
 
 void RunRecorder::history(double t, const Eigen::VectorXd& u, const Eigen::VectorXd& a_rel,
