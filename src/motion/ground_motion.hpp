@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "core/constants.hpp"
+
 namespace pound {
 
 struct GroundMotion {
@@ -27,8 +29,5 @@ struct GroundMotion {
   /// Peak absolute acceleration [m/s^2].
   double pga() const;
 };
-
-/// Standard gravity [m/s^2], used to convert records given in g.
-inline constexpr double kGravity = 9.80665;
 
 }  // namespace pound

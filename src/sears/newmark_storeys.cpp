@@ -23,6 +23,10 @@ NewmarkStoreys::NewmarkStoreys(const AssembledRow& a, const Eigen::VectorXd& u0)
   }
   trial_ = committed_;
   r_trial_ = r_;
+  rd_.setZero(n);
+  rd_trial_ = rd_;
+  rd_prev_ = rd_;
+  for (const auto& st : storeys_) tangent_damping_ = tangent_damping_ || st.damping_a1 > 0.0;
 }
 
 Eigen::MatrixXd NewmarkStoreys::influence(const Eigen::LLT<Eigen::MatrixXd>& mt) const {
@@ -36,14 +40,21 @@ Eigen::MatrixXd NewmarkStoreys::influence(const Eigen::LLT<Eigen::MatrixXd>& mt)
 }
 
 bool NewmarkStoreys::trial(const Eigen::VectorXd& u, const Eigen::VectorXd& u_end,
-                           Eigen::VectorXd& guess) {
+                           const Eigen::VectorXd& v_end, Eigen::VectorXd& guess) {
   bool converged = true;
   for (int i = 0, n = static_cast<int>(storeys_.size()); i < n; ++i) {
     const RowStorey& s = storeys_[i];
     const double d1 = drift(u_end, i);
     const double V = s.law->advance(s.p, committed_[i], drift(u, i), d1, trial_[i]);
-    const double r = s.p.k0 * d1 - V;
-    if (std::fabs(r - guess(i)) > 1e-12 * (std::fabs(V) + std::fabs(s.p.k0 * d1)))
+    double r = s.p.k0 * d1 - V, fd = 0.0;
+    if (s.damping_a1 > 0.0) {  // tangent damping at the trial branch (newmark_storeys.hpp)
+      double slope = s.p.k0, offset = 0.0;
+      s.law->branch_line(s.p, trial_[i], slope, offset);
+      fd = s.damping_a1 * (std::max(slope, 0.0) - s.p.k0) * drift(v_end, i);
+      r -= fd;
+      rd_trial_(i) = fd;
+    }
+    if (std::fabs(r - guess(i)) > 1e-12 * (std::fabs(V) + std::fabs(s.p.k0 * d1) + std::fabs(fd)))
       converged = false;
     guess(i) = r;
   }
@@ -55,6 +66,18 @@ void NewmarkStoreys::commit() {
   committed_.swap(trial_);
   trial_ = committed_;
   r_ = r_trial_;
+  if (tangent_damping_) {
+    rd_prev_ = rd_;
+    rd_ = rd_trial_;
+  }
+}
+
+double NewmarkStoreys::damper_work(const Eigen::VectorXd& u_prev, const Eigen::VectorXd& u) const {
+  if (!tangent_damping_) return 0.0;
+  double w = 0.0;
+  for (int i = 0, n = static_cast<int>(storeys_.size()); i < n; ++i)
+    w += 0.5 * (rd_prev_(i) + rd_(i)) * (drift(u, i) - drift(u_prev, i));
+  return w;
 }
 
 const std::vector<double>& NewmarkStoreys::strain_by_building(const Eigen::VectorXd& u) {
@@ -69,7 +92,7 @@ const std::vector<double>& NewmarkStoreys::strain_by_building(const Eigen::Vecto
 }
 
 double NewmarkStoreys::shear(const Eigen::VectorXd& u, int i) const {
-  return storeys_[i].p.k0 * drift(u, i) - r_(i);
+  return storeys_[i].p.k0 * drift(u, i) - r_(i) - rd_(i);
 }
 
 double NewmarkStoreys::dissipated(const Eigen::VectorXd& u, int i) const {
@@ -81,7 +104,9 @@ double NewmarkStoreys::stored(const Eigen::VectorXd& u) const {
   double e = 0.0;
   for (std::size_t i = 0; i < storeys_.size(); ++i) {
     const RowStorey& s = storeys_[i];
-    e += s.law->stored(s.p, committed_[i], drift(u, int(i)), committed_[i].x);
+    const double d = drift(u, int(i));
+    e += s.law->stored(s.p, committed_[i], d, committed_[i].x);
+    if (s.kg != 0.0) e -= 0.5 * s.kg * d * d;  // P-Delta
   }
   return e;
 }

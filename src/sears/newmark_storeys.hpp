@@ -10,7 +10,11 @@
 // (modified Newton with the initial stiffness, Chopra, Dynamics of Structures, sec. 5.7;
 // OpenSees' ModifiedNewton -initial): each pass contracts the error by about
 // (1 - b) (w h)^2 / 4, so two or three passes suffice; a step in which no storey leaves its
-// linear branch needs none. Kernel only: no files, no printing.
+// linear branch needs none. With P-Delta K already holds the geometric stiffness (K = K0 - Kg)
+// and r stays the laws' part. With tangent-stiffness damping (RowStorey::damping_a1) r also
+// takes the damper a1 (max(k_t, 0) - k0) of each such storey at the end-of-step drift rate:
+// r_j = k0_j d_j - V_j - f_d,j, f_d,j = a1 (max(k_t,j, 0) - k0_j) dd_j (Charney 2008).
+// Kernel only: no files, no printing.
 #include <Eigen/Dense>
 #include <vector>
 
@@ -30,10 +34,17 @@ class NewmarkStoreys {
   /// R = Mt^-1 B for a Newmark matrix Mt [1/kg].
   Eigen::MatrixXd influence(const Eigen::LLT<Eigen::MatrixXd>& mt) const;
 
-  /// Trial states for the step from the committed displacements u to u_end [m]. Writes their
-  /// correction into `guess` and returns true when it differs from the guess given by no more
-  /// than a relative 1e-12 (converged).
-  bool trial(const Eigen::VectorXd& u, const Eigen::VectorXd& u_end, Eigen::VectorXd& guess);
+  /// Whether a storey's damping follows its tangent stiffness (trial() needs the velocities).
+  bool tangent_damping() const { return tangent_damping_; }
+  /// Trial states for the step from the committed displacements u to u_end [m] (velocities
+  /// v_end at its end [m/s]; read with tangent damping only). Writes their correction into
+  /// `guess` and returns true when it differs from the guess given by no more than a relative
+  /// 1e-12 (converged).
+  bool trial(const Eigen::VectorXd& u, const Eigen::VectorXd& u_end, const Eigen::VectorXd& v_end,
+             Eigen::VectorXd& guess);
+  /// The work of the tangent damping's dampers over the step just committed, from the
+  /// displacements u_prev to u (trapezoidal in the dampers' forces) [J]; 0 without.
+  double damper_work(const Eigen::VectorXd& u_prev, const Eigen::VectorXd& u) const;
   /// Makes the last trial the committed state.
   void commit();
 
@@ -44,7 +55,7 @@ class NewmarkStoreys {
   double shear(const Eigen::VectorXd& u, int i) const;
   /// Hysteretic energy dissipated by floor DOF i's storey (committed) [J].
   double dissipated(const Eigen::VectorXd& u, int i) const;
-  /// Recoverable strain energy of all storeys (committed) [J].
+  /// Recoverable strain energy of all storeys (committed), with P-Delta's -P d^2 / (2 h) [J].
   double stored(const Eigen::VectorXd& u) const;
 
  private:
@@ -58,7 +69,9 @@ class NewmarkStoreys {
   std::vector<char> building_linear_;
   std::vector<double> strain_;
   Eigen::VectorXd r_, r_trial_;
+  Eigen::VectorXd rd_, rd_trial_, rd_prev_;  // the damper forces f_d of tangent damping [N]
   bool linear_ = true;
+  bool tangent_damping_ = false;
 };
 
 }  // namespace pound::sears

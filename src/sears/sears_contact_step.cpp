@@ -187,7 +187,11 @@ void SearsRowRun::storey_pass(double h, const Eigen::MatrixXd& R, bool contacts)
     } else {
       u_end = u_hat;
     }
-    if (storeys.trial(u, u_end, r_next)) return;
+    if (storeys.tangent_damping()) {  // the end-of-step velocities, contact forces included
+      v_end = v + (0.5 * h) * (acc + a_next);
+      if (contacts && p.contacts && ns > 0) v_end.noalias() -= (0.5 * h) * (ops[op].H * F_next);
+    }
+    if (storeys.trial(u, u_end, v_end, r_next)) return;
     ++out.counts.storey_iterations;
     if (pass == 50)
       throw NumericalError(

@@ -366,6 +366,7 @@ void SearsRowRun::add_energy(double h, double t_next) {
   e_input -= ag_avg * mdu;
   const Eigen::VectorXd v_avg = 0.5 * (v + v_prev);
   e_damping += h * v_avg.dot(a.C * v_avg);
+  if (storeys.tangent_damping()) e_damping += storeys.damper_work(u_prev, u);
   for (int k = 0; k < ns; ++k) {
     const int l = a.sites[k].dof_left, rr = a.sites[k].dof_right;
     e_contact += 0.5 * (F(k) + F_next(k)) * ((u(l) - u_prev(l)) - (u(rr) - u_prev(rr)));

@@ -106,7 +106,7 @@ class SearsRowRun {
   // for each step size; r iterated with the storeys' return maps.
   NewmarkStoreys storeys;
   Eigen::MatrixXd R_coarse;
-  Eigen::VectorXd r_next, a_base, u_end;
+  Eigen::VectorXd r_next, a_base, u_end, v_end;
   // Energy balance (p.track_energy): the work terms of each step, trapezoidal in the step's
   // end values, which Newmark's average-acceleration scheme balances exactly for linear storeys.
   Eigen::VectorXd u_prev, v_prev;

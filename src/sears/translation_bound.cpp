@@ -5,8 +5,28 @@
 
 namespace pound::sears {
 
+namespace {
+
+// Gershgorin's bound on the largest eigenvalue of M^-1/2 A M^-1/2 for the block [o, end) of a
+// symmetric A [1/s^2].
+double largest_eigenvalue_bound(const AssembledRow& a, const Eigen::MatrixXd& A, int o, int end) {
+  double lam = 0.0;
+  for (int i = o; i < end; ++i) {
+    double row = 0.0;
+    for (int j = o; j < end; ++j)
+      row += std::fabs(A(i, j)) * std::sqrt(a.inv_mass(i) * a.inv_mass(j));
+    lam = std::max(lam, row);
+  }
+  return lam;
+}
+
+}  // namespace
+
 TranslationBound::TranslationBound(const AssembledRow& a, double ag_max)
-    : K_(a.K), M_(a.M), ag_max_(std::fabs(ag_max)) {
+    : K_(a.K),
+      Kg_(a.Kg.size() ? a.Kg : Eigen::MatrixXd::Zero(a.dofs(), a.dofs())),
+      M_(a.M),
+      ag_max_(std::fabs(ag_max)) {
   const int n = a.dofs(), nb = static_cast<int>(a.offset.size());
   building_of_.assign(n, 0);
   for (int b = 0; b < nb; ++b) {
@@ -21,15 +41,46 @@ TranslationBound::TranslationBound(const AssembledRow& a, double ag_max)
     sqrt_mass_.push_back(std::sqrt(m));
   }
   sqrt2E_.assign(nb, 0.0);
+  own_.assign(nb, 0);
+  omega_g_.assign(nb, 0.0);
+  // Per building: w_g of P-Delta, and with tangent damping the bound beta_t of its damping
+  // forces (translation_bound.hpp).
+  std::vector<double> lambda0(nb, 0.0), a0(nb, 0.0), a1(nb, 0.0);
+  std::vector<char> tangent(nb, 0);
+  const Eigen::MatrixXd K0 = a.K + Kg_;
+  for (int b = 0; b < nb; ++b) {
+    const int end = b + 1 < nb ? a.offset[b + 1] : n;
+    omega_g_[b] = std::sqrt(largest_eigenvalue_bound(a, Kg_, a.offset[b], end));
+    lambda0[b] = largest_eigenvalue_bound(a, K0, a.offset[b], end);
+  }
+  for (int k = 0; k < n && static_cast<int>(a.storeys.size()) == n; ++k) {
+    const RowStorey& st = a.storeys[k];
+    if (!(st.damping_a1 > 0.0)) continue;
+    tangent[st.building] = 1;
+    a1[st.building] = st.damping_a1;
+    a0[st.building] = (a.C(k, k) - st.damping_a1 * K0(k, k)) * a.inv_mass(k);  // C = a0 M + a1 K0
+  }
   // alpha_k^2 = e_k^T M^-1 K M^-1 e_k; beta_k^2 = e_k^T M^-1 C M^-1 C M^-1 e_k (M diagonal).
   G_.resize(n);
+  G_own_.resize(n);
   for (int k = 0; k < n; ++k) {
     const double ik = a.inv_mass(k);
     const double alpha2 = ik * ik * a.K(k, k);
     double beta2 = 0.0;
     for (int j = 0; j < n; ++j) beta2 += a.C(j, k) * a.C(j, k) * a.inv_mass(j);
     beta2 *= ik * ik;
+    const int b = building_of_[k];
+    if (tangent[b]) {
+      const double beta_t = a0[b] * std::sqrt(ik) + a1[b] * std::sqrt(K0(k, k) * lambda0[b]) * ik;
+      beta2 = std::max(beta2, beta_t * beta_t);
+    }
     G_(k) = std::sqrt(alpha2 + beta2);
+    if (Kg_(k, k) != 0.0) {
+      const double alpha02 = ik * ik * K0(k, k), gamma2 = ik * ik * Kg_(k, k);
+      G_own_(k) = std::sqrt(alpha02 + gamma2 + beta2);
+    } else {
+      G_own_(k) = G_(k);
+    }
   }
 }
 
@@ -38,11 +89,14 @@ void TranslationBound::set_state(const Eigen::VectorXd& u, const Eigen::VectorXd
   for (std::size_t b = 0; b < begin_.size(); ++b) {
     const int o = begin_[b], m = size_[b];
     const bool own = !strain.empty() && strain[b] >= 0.0;
+    own_[b] = own;
     double twoE = own ? 2.0 * strain[b] : 0.0;
     for (int i = o; i < o + m; ++i) {
       twoE += M_(i, i) * v(i) * v(i);
       if (!own)
         for (int j = o; j < o + m; ++j) twoE += u(i) * K_(i, j) * u(j);
+      else if (omega_g_[b] > 0.0)  // P-Delta: E' = T + U + G
+        for (int j = o; j < o + m; ++j) twoE += u(i) * Kg_(i, j) * u(j);
     }
     sqrt2E_[b] = std::sqrt(std::max(0.0, twoE));
   }
@@ -51,7 +105,11 @@ void TranslationBound::set_state(const Eigen::VectorXd& u, const Eigen::VectorXd
 double TranslationBound::approach(int l, int r, const Eigen::VectorXd& v, double h) const {
   auto accel = [&](int k) {
     const int b = building_of_[k];
-    return G_(k) * (sqrt2E_[b] + sqrt_mass_[b] * ag_max_ * h);
+    if (own_[b] && omega_g_[b] > 0.0) {  // P-Delta on yielding storeys: E' may grow
+      const double w = omega_g_[b], c = sqrt_mass_[b] * ag_max_ / w;
+      return G_own_(k) * ((sqrt2E_[b] + c) * std::exp(w * h) - c);
+    }
+    return (own_[b] ? G_own_(k) : G_(k)) * (sqrt2E_[b] + sqrt_mass_[b] * ag_max_ * h);
   };
   return std::max(0.0, v(l) - v(r)) * h + 0.5 * h * h * (accel(l) + accel(r));
 }

@@ -18,6 +18,20 @@
 // dE_h/dt >= 0 (E_b can only grow by the ground's work) and V_j^2 <= 2 k0_j U_j, so that
 // |(M^-1 f)_k| <= (|V_k| + |V_k+1|) / m_k <= sqrt(k0_k + k0_k+1) sqrt(2 U) / m_k = alpha_k sqrt(2
 // U).
+// P-Delta on yielding storeys (the linear case needs nothing: K = K0 - Kg stays positive definite,
+// structure/building.cpp): E = T + U - G, G = u^T Kg u / 2, still obeys the energy equation, but
+// -G is not bounded below. E' = T + U + G grows by at most 2 dG/dt = 2 u^T Kg v
+// <= 2 sqrt(2 G) sqrt(v^T Kg v) <= 2 w_g sqrt(2 G) sqrt(2 T) <= 2 w_g E', w_g^2 >= the largest
+// eigenvalue of M^-1 Kg (Gershgorin), so X = sqrt(2 E') obeys X' <= sqrt(m_b) |ag| + w_g X:
+//     X(t + tau) <= (X(t) + sqrt(m_b) |ag|_max / w_g) e^(w_g tau) - sqrt(m_b) |ag|_max / w_g,
+// and the geometric forces add gamma_k sqrt(2 G), gamma_k^2 = Kg_kk / m_k^2, to the acceleration:
+// G_k = sqrt(alpha_k^2 + gamma_k^2 + beta_k^2) with alpha from K0.
+// Tangent-stiffness damping (RowStorey::damping_a1): C_t = a0 M + a1 K_t with 0 <= K_t <= K0, so
+// v^T C_t v >= 0 and |(M^-1 C_t v)_k| <= (a0 / sqrt(m_k) + a1 sqrt(K0_kk lambda0) / m_k)
+// sqrt(v^T M v), lambda0 >= the largest eigenvalue of M^-1 K0 (Gershgorin): beta_k is that.
+// The IMK law's unloading stiffness falls at reversals, which raises its U by V^2 (1/Ku' - 1/Ku)/2
+// without work (hysteresis/imk.hpp): within a coarse step that is a fraction beta_K of one
+// storey's elastic energy, which kCoarseBoundSafety covers; bound_violations counts any miss.
 #include <Eigen/Dense>
 #include <vector>
 
@@ -43,9 +57,12 @@ class TranslationBound {
   std::vector<int> building_of_;   // per DOF
   std::vector<int> begin_, size_;  // per building
   std::vector<double> sqrt_mass_;  // sqrt(m_b) per building [sqrt(kg)]
-  std::vector<double> sqrt2E_;     // sqrt(2 E_b) per building, current [sqrt(J)]
-  Eigen::VectorXd G_;              // per DOF [1/(s sqrt(kg))]
-  Eigen::MatrixXd K_, M_;
+  std::vector<double> sqrt2E_;     // sqrt(2 E_b) (yielding storeys: sqrt(2 E'_b)) [sqrt(J)]
+  std::vector<double> omega_g_;    // per building: w_g (P-Delta) [1/s]
+  std::vector<char> own_;          // per building: its strain energy given (yielding storeys)
+  Eigen::VectorXd G_;              // per DOF, linear storeys [1/(s sqrt(kg))]
+  Eigen::VectorXd G_own_;          // per DOF, yielding storeys (with P-Delta's gamma_k)
+  Eigen::MatrixXd K_, Kg_, M_;
   double ag_max_ = 0.0;
 };
 

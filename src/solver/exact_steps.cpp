@@ -15,6 +15,7 @@ ExactSteps::ExactSteps(const ExactSteps& o)
       offsets_ready_(o.offsets_ready_),
       offsets_response_(o.offsets_response_),
       k_scratch_(o.k_scratch_),
+      c_scratch_(o.c_scratch_),
       visits_(o.visits_),
       declined_at_top_(o.declined_at_top_),
       visited_(o.visited_) {}
@@ -64,7 +65,8 @@ const LinearStep* ExactSteps::propagator(const RowDynamics& dyn, const Assembled
     Eigen::MatrixXd A = Eigen::MatrixXd::Zero(2 * n, 2 * n);
     A.topRightCorner(n, n).setIdentity();
     A.bottomLeftCorner(n, n) = -(im.asDiagonal() * e.K);
-    A.bottomRightCorner(n, n) = -(im.asDiagonal() * row.C);
+    dyn.damping_matrix(c_scratch_);  // the tangent stiffness' damping, or the initial C
+    A.bottomRightCorner(n, n) = -(im.asDiagonal() * c_scratch_);
     Eigen::MatrixXd B = Eigen::MatrixXd::Zero(2 * n, n + 1);
     B.block(n, 0, n, n) = -Eigen::MatrixXd(im.asDiagonal());
     B.block(n, n, n, 1).setConstant(-1.0);

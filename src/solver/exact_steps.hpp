@@ -89,6 +89,7 @@ class ExactSteps {
   bool offsets_ready_ = false;
   Eigen::VectorXd offsets_response_;
   Eigen::MatrixXd k_scratch_;  // the current stiffness, to look up its entry [N/m]
+  Eigen::MatrixXd c_scratch_;  // the current damping matrix [N s/m]
   std::vector<int> visits_;    // per entry: grid points of this run met with its stiffness
   // What the current loop iteration changed before its step was accepted (undo_iteration).
   long declined_at_top_ = -1;

@@ -67,6 +67,14 @@ void RowDynamics::rhs(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy) {
 
 void RowDynamics::storey_changed(int) {
   if (affine_) forces_.set_lines(storey);
+  if (forces_.tangent_damping()) forces_.set_tangent_damping(storey);
+}
+
+void RowDynamics::damping_matrix(Eigen::MatrixXd& C) const {
+  if (forces_.tangent_damping())
+    forces_.damping_matrix(C);
+  else
+    C = row_.C;
 }
 
 void RowDynamics::energy_rates(const Eigen::VectorXd& y, double a_g, double* dE) const {
@@ -92,6 +100,7 @@ double RowDynamics::storey_energies(const Eigen::VectorXd& y, Eigen::VectorXd& h
     const double d = drift(y, 0, i);
     hysteretic(i) = st.law->dissipated(st.p, storey[i], d, continuous_states(y, i));
     strain += st.law->stored(st.p, storey[i], d, continuous_states(y, i));
+    if (st.kg != 0.0) strain -= 0.5 * st.kg * d * d;  // P-Delta: -P d^2 / (2 h)
   }
   return strain;
 }

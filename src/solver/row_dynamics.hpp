@@ -89,8 +89,11 @@ class RowDynamics {
   /// the branches' lines [N] (solver/row_forces.hpp).
   void stiffness(Eigen::MatrixXd& K) const { forces_.stiffness(affine_, K); }
   const std::vector<double>& offsets() const { return forces_.offsets(); }
+  /// The current damping matrix [N s/m] (the initial one unless tangent-stiffness damping).
+  void damping_matrix(Eigen::MatrixXd& C) const;
 
-  /// The storeys' strain energy and, per DOF, the hysteretic energy at y [J].
+  /// The storeys' strain energy (with P-Delta's -P d^2 / (2 h) per storey) and, per DOF, the
+  /// hysteretic energy at y [J].
   double storey_energies(const Eigen::VectorXd& y, Eigen::VectorXd& hysteretic) const;
 
   // Discrete states (changed at switching events, solver/row_switches.hpp).

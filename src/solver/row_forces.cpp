@@ -1,5 +1,6 @@
 #include "solver/row_forces.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 
@@ -37,6 +38,23 @@ RowForces::RowForces(const AssembledRow& row, const std::vector<RowStorey>& stor
     row_start_.push_back(static_cast<int>(col_.size()));
   }
   tl_.assign(n_, 0.0), td_.assign(n_, 0.0), tu_.assign(n_, 0.0), off_.assign(n_, 0.0);
+  // Tangent-stiffness damping: the initial damping and, per such storey, where its entries
+  // (i, i), (b, b), (i, b), (b, i) stand in the compressed rows (b the floor below, -1: none).
+  for (int i = 0; i < n_; ++i) tangent_damping_ = tangent_damping_ || storeys_[i].damping_a1 > 0.0;
+  if (tangent_damping_) {
+    cl0_ = cl_, cd0_ = cd_, cu0_ = cu_, c_val0_ = c_val_;
+    auto at = [&](int i, int j) {
+      for (int e = row_start_[i]; e < row_start_[i + 1]; ++e)
+        if (col_[e] == j) return e;
+      return -1;
+    };
+    damping_entry_.assign(n_, {-1, -1, -1, -1});
+    for (int i = 0; i < n_; ++i) {
+      const int b = storeys_[i].below;
+      damping_entry_[i] = {at(i, i), b >= 0 ? at(b, b) : -1, b >= 0 ? at(i, b) : -1,
+                           b >= 0 ? at(b, i) : -1};
+    }
+  }
 }
 
 void RowForces::set_lines(const std::vector<StoreyState>& states) {
@@ -48,6 +66,8 @@ void RowForces::set_lines(const std::vector<StoreyState>& states) {
     const RowStorey& st = storeys_[i];
     double slope = 0.0, offset = 0.0;
     st.law->branch_line(st.p, states[i], slope, offset);
+    // P-Delta: the storey's shear gains -kg d (row_forces.hpp).
+    slope -= st.kg;
     // V = slope (u_i - u_b) + offset acts as +V on floor i and -V on the floor below b.
     td_[i] += slope;
     off_[i] += offset;
@@ -58,6 +78,39 @@ void RowForces::set_lines(const std::vector<StoreyState>& states) {
       off_[st.below] -= offset;
     }
   }
+}
+
+void RowForces::set_tangent_damping(const std::vector<StoreyState>& states) {
+  cl_ = cl0_, cd_ = cd0_, cu_ = cu0_, c_val_ = c_val0_;
+  for (int i = 0; i < n_; ++i) {
+    const RowStorey& st = storeys_[i];
+    if (!(st.damping_a1 > 0.0)) continue;
+    double slope = 0.0, offset = 0.0;
+    st.law->branch_line(st.p, states[i], slope, offset);
+    // a1 (max(k_t, 0) - k0) between floor i and the floor below (Charney 2008): a damper of
+    // that coefficient in parallel with the initial stiffness' one.
+    const double dc = st.damping_a1 * (std::max(slope, 0.0) - st.p.k0);
+    const int b = st.below;
+    const auto& e = damping_entry_[i];
+    auto add = [&](int entry, double x) {
+      if (entry >= 0) c_val_[entry] += x;
+    };
+    cd_[i] += dc;
+    add(e[0], dc);
+    if (b < 0) continue;
+    cd_[b] += dc;
+    cu_[b] -= dc;
+    cl_[i] -= dc;
+    add(e[1], dc);
+    add(e[2], -dc);
+    add(e[3], -dc);
+  }
+}
+
+void RowForces::damping_matrix(Eigen::MatrixXd& C) const {
+  C.setZero(n_, n_);
+  for (int i = 0; i < n_; ++i)
+    for (int e = row_start_[i]; e < row_start_[i + 1]; ++e) C(i, col_[e]) = c_val_[e];
 }
 
 void RowForces::stiffness(bool affine, Eigen::MatrixXd& K) const {
@@ -83,7 +136,8 @@ void RowForces::general(const Eigen::VectorXd& y, const std::vector<StoreyState>
     const RowStorey& st = storeys_[i];
     const double d = u[i] - (st.below >= 0 ? u[st.below] : 0.0);
     const double* x = xoff[i] >= 0 ? u + xoff[i] : nullptr;
-    const double V = st.law->shear(st.p, states[i], d, x);
+    double V = st.law->shear(st.p, states[i], d, x);
+    if (st.kg != 0.0) V -= st.kg * d;  // P-Delta
     dv[i] += V;
     if (st.below >= 0) dv[st.below] -= V;
     if (x) {

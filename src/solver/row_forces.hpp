@@ -5,9 +5,13 @@
 //     buildings (Th. 3.6; Chopra 11.4.1), or compressed rows when C is full (modal damping);
 //   - piecewise-linear storeys (elastic, bilinear): f = K_t u + off, the bands of the current
 //     tangent stiffness and the forces of the branches' offsets, rebuilt at every switch;
-//   - other laws (Bouc-Wen): f_j = V_j - V_j+1 from the laws' shears, storey by storey.
+//   - other laws (Bouc-Wen): f_j = V_j - V_j+1 from the laws' shears, storey by storey;
+// with P-Delta (RowStorey::kg) every storey's shear gains -kg d (in K for linear storeys), and with
+// tangent-stiffness damping (RowStorey::damping_a1) the damping bands follow the storeys' branches
+// (set_tangent_damping).
 // Each path costs O(nonzeros) and allocates nothing. Kernel only: no files, no printing.
 #include <Eigen/Dense>
+#include <array>
 #include <vector>
 
 #include "structure/building_row.hpp"
@@ -30,8 +34,14 @@ class RowForces {
   /// (dy = the whole state derivative, dv = dy + n).
   void general(const Eigen::VectorXd& y, const std::vector<StoreyState>& states,
                const std::vector<int>& xoff, double ag, double* dy) const;
+  /// Tangent-stiffness damping: C = C0 + sum a1 (max(k_t, 0) - k0) per such storey, from every
+  /// storey's current branch.
+  void set_tangent_damping(const std::vector<StoreyState>& states);
+  bool tangent_damping() const { return tangent_damping_; }
   /// C v [N].
   void damping(const double* v, double* cv) const;
+  /// The current damping matrix C [N s/m].
+  void damping_matrix(Eigen::MatrixXd& C) const;
   /// The stiffness of the linear or affine right-hand side [N/m]: K (linear storeys) or the
   /// tangent K_t of set_lines() (affine), so that f = K u + offsets().
   void stiffness(bool affine, Eigen::MatrixXd& K) const;
@@ -47,6 +57,9 @@ class RowForces {
   std::vector<int> row_start_, col_;                 // compressed rows of K and C
   std::vector<double> k_val_, c_val_;                // their entries [N/m], [N s/m]
   std::vector<double> tl_, td_, tu_, off_;           // K_t bands [N/m], offsets [N]
+  bool tangent_damping_ = false;                     // a storey with damping_a1 > 0
+  std::vector<double> cl0_, cd0_, cu0_, c_val0_;     // the initial C's bands and entries
+  std::vector<std::array<int, 4>> damping_entry_;    // per storey: its entries of C
   mutable Eigen::VectorXd cv_;                       // scratch: C v [N]
 };
 

@@ -2,11 +2,57 @@
 
 #include <Eigen/Eigenvalues>
 #include <cmath>
+#include <cstdio>
 
+#include "core/constants.hpp"
 #include "core/error.hpp"
 #include "hysteresis/registry.hpp"
 
 namespace pound {
+
+namespace {
+
+std::string number(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", x);
+  return buf;
+}
+
+}  // namespace
+
+void validate_gravity(const Building& b, const std::string& where) {
+  const std::size_t n = b.masses.size();
+  if (!b.gravity_loads.empty() && b.gravity_loads.size() != n)
+    throw InputError(where + ": " + std::to_string(n) + " floors but " +
+                     std::to_string(b.gravity_loads.size()) +
+                     " gravity loads; give one value or one per floor");
+  for (std::size_t j = 0; j < b.gravity_loads.size(); ++j)
+    if (!(b.gravity_loads[j] > 0.0 && std::isfinite(b.gravity_loads[j])))
+      throw InputError(where + ": gravity load of floor " + std::to_string(j + 1) +
+                       " must be a finite number > 0 N");
+  for (std::size_t j = 0; b.p_delta && j < n; ++j) {
+    const double P = b.storey_gravity_load(static_cast<int>(j)), h = b.storey_heights[j];
+    if (!(b.stiffnesses[j] > P / h))
+      throw InputError(where + ": storey " + std::to_string(j + 1) +
+                       " cannot carry its gravity load with P-Delta: its stiffness " +
+                       number(b.stiffnesses[j]) + " N/m must exceed P / h = " + number(P / h) +
+                       " N/m (P = " + number(P) + " N of the floors at and above it, h = " +
+                       number(h) + " m); raise the stiffness or lower gravity_loads");
+  }
+  if (b.damping_stiffness == DampingStiffness::tangent) {
+    if (b.damping != DampingKind::rayleigh)
+      throw InputError(where +
+                       ": damping_stiffness = tangent needs damping_type = rayleigh (the "
+                       "stiffness-proportional part is what it changes)");
+    const StoreyLaw& law = find_storey_law(b.hysteresis, where);
+    double slope, offset;
+    if (!law.branch_line(b.storey(0), StoreyState{}, slope, offset))
+      throw InputError(where +
+                       ": damping_stiffness = tangent needs a piecewise-linear storey law "
+                       "(elastic, bilinear, imk), not '" +
+                       b.hysteresis + "'");
+  }
+}
 
 void validate(const Building& b, const std::string& where) {
   const auto n = b.masses.size();
@@ -43,6 +89,7 @@ void validate(const Building& b, const std::string& where) {
     throw InputError(where + ": hysteresis '" + b.hysteresis +
                      "' needs yield_shears (the storey yield shears Fy > 0 in N, one value or one "
                      "per storey)");
+  validate_gravity(b, where);
   for (std::size_t j = 0; j < n; ++j) {
     const std::string f = " of storey " + std::to_string(j + 1);
     if (!b.yield_shears.empty() && !(b.yield_shears[j] > 0.0 && !std::isnan(b.yield_shears[j])))
@@ -63,6 +110,20 @@ StoreyParameters Building::storey(int j) const {
   return p;
 }
 
+double Building::gravity_load(int j) const {
+  return gravity_loads.empty() ? masses[j] * kGravity : gravity_loads[j];
+}
+
+double Building::storey_gravity_load(int j) const {
+  double P = 0.0;
+  for (int i = floors() - 1; i >= j; --i) P += gravity_load(i);
+  return P;
+}
+
+double Building::geometric_stiffness(int j) const {
+  return p_delta ? storey_gravity_load(j) / storey_heights[j] : 0.0;
+}
+
 BuildingMatrices assemble(const Building& b) {
   const int n = b.floors();
   BuildingMatrices out;
@@ -77,6 +138,18 @@ BuildingMatrices assemble(const Building& b) {
       out.K(j - 1, j - 1) += k;
       out.K(j - 1, j) -= k;
       out.K(j, j - 1) -= k;
+    }
+  }
+  // P-Delta: storey j's shear gains -P_j d_j / h_j, a spring of stiffness -P_j / h_j between the
+  // same floors (the geometric stiffness, Kg in the pattern of K).
+  out.Kg = Eigen::MatrixXd::Zero(n, n);
+  for (int j = 0; j < n && b.p_delta; ++j) {
+    const double kg = b.geometric_stiffness(j);
+    out.Kg(j, j) += kg;
+    if (j > 0) {
+      out.Kg(j - 1, j - 1) += kg;
+      out.Kg(j - 1, j) -= kg;
+      out.Kg(j, j - 1) -= kg;
     }
   }
   out.C = Eigen::MatrixXd::Zero(n, n);
@@ -99,11 +172,14 @@ BuildingMatrices assemble(const Building& b) {
     out.C = out.M * Phi * d.asDiagonal() * Phi.transpose() * out.M;
   } else if (n == 1) {
     out.C(0, 0) = 2.0 * xi * w(0) * b.masses[0];
+    out.rayleigh_a0 = 2.0 * xi * w(0);
   } else {
     // Rayleigh damping with ratio xi on modes 1 and 2 (Chopra 11.4.1).
     const double a0 = 2.0 * xi * w(0) * w(1) / (w(0) + w(1));
     const double a1 = 2.0 * xi / (w(0) + w(1));
     out.C = a0 * out.M + a1 * out.K;
+    out.rayleigh_a0 = a0;
+    out.rayleigh_a1 = a1;
   }
   return out;
 }

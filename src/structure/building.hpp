@@ -14,6 +14,13 @@ enum class DampingKind {
   modal,     ///< classical modal damping, ratio xi on every mode
 };
 
+/// Which stiffness the stiffness-proportional part of Rayleigh damping uses (Charney 2008,
+/// "Unintended consequences of modeling damping in structures", J. Struct. Eng. 134(4)).
+enum class DampingStiffness {
+  initial,  ///< C = a0 M + a1 K0, constant (the default)
+  tangent,  ///< C = a0 M + a1 K_t: each storey's current tangent stiffness (at least 0)
+};
+
 struct Building {
   std::string name;                    ///< label for reports
   std::vector<double> masses;          ///< floor masses, floor 1 first [kg]
@@ -28,17 +35,32 @@ struct Building {
                                      ///< empty for "elastic" (no ductility is reported then)
   std::vector<double> hardening;     ///< post-yield stiffness ratio b per storey [-]; empty: 0.02
   std::vector<double> bw_n;          ///< Bouc-Wen sharpness n per storey [-]; empty: 2
+  /// P-Delta: the gravity load of the floors at and above storey j, P_j, acting on its drift
+  /// d_j adds -P_j d_j / h_j to the storey shear (a geometric stiffness -P_j / h_j; e.g.
+  /// Chopra, Dynamics of Structures, sec. 19.6 / FEMA P695 sec. 5.2.5).
+  bool p_delta = false;
+  std::vector<double> gravity_loads;  ///< gravity load per floor [N]; empty: m_j g
+  DampingStiffness damping_stiffness = DampingStiffness::initial;
 
   int floors() const { return static_cast<int>(masses.size()); }
   bool inelastic() const { return hysteresis != "elastic"; }
   /// The parameters of storey j (0-based): k0, Fy (infinite when none), b, n.
   StoreyParameters storey(int j) const;
+  /// Gravity load of floor j (0-based) [N]: gravity_loads, or m_j g.
+  double gravity_load(int j) const;
+  /// P_j: the gravity load of floors j and above [N].
+  double storey_gravity_load(int j) const;
+  /// The geometric stiffness P_j / h_j of storey j with P-Delta [N/m]; 0 without.
+  double geometric_stiffness(int j) const;
 };
 
 /// Mass, stiffness and damping matrices of one building (floor DOFs relative to the ground).
 struct BuildingMatrices {
-  Eigen::MatrixXd M, K, C;
-  Eigen::VectorXd periods;  ///< undamped periods, longest first [s]
+  Eigen::MatrixXd M, K, C;   ///< K from the initial storey stiffnesses, C from M and that K
+  Eigen::MatrixXd Kg;        ///< geometric stiffness of P-Delta (zero without): K - Kg acts [N/m]
+  Eigen::VectorXd periods;   ///< undamped periods of M and K (without P-Delta), longest first [s]
+  double rayleigh_a0 = 0.0;  ///< Rayleigh C = a0 M + a1 K [1/s] (0 for modal damping)
+  double rayleigh_a1 = 0.0;  ///< [s]
 };
 
 /// Assembles the matrices (Th. 3.6). Stiffness may be zero only for free bodies (no modes).
@@ -46,7 +68,13 @@ BuildingMatrices assemble(const Building& b);
 
 /// Checks masses > 0, stiffnesses > 0, heights > 0, 0 <= xi < 1, matching lengths, a known
 /// hysteresis law with its parameters (Fy > 0 for every storey of an inelastic law,
-/// 0 <= b < 1, n > 0); throws InputError naming `where` and the offending floor.
+/// 0 <= b < 1, n > 0), gravity loads > 0 and with P-Delta k0_j > P_j / h_j, tangent damping only
+/// with Rayleigh damping and a piecewise-linear law; throws InputError naming `where` and the
+/// offending floor.
 void validate(const Building& b, const std::string& where);
+/// The part of validate() for gravity: loads > 0; with P-Delta every storey stiffer than its
+/// geometric stiffness P / h (else it buckles under its own gravity load, the lateral stiffness
+/// k0 - P / h being <= 0); tangent damping only with Rayleigh damping and piecewise-linear laws.
+void validate_gravity(const Building& b, const std::string& where);
 
 }  // namespace pound

@@ -40,22 +40,32 @@ AssembledRow assemble(const BuildingRow& row) {
   out.M = Eigen::MatrixXd::Zero(n, n);
   out.C = Eigen::MatrixXd::Zero(n, n);
   out.K = Eigen::MatrixXd::Zero(n, n);
+  out.Kg = Eigen::MatrixXd::Zero(n, n);
   for (std::size_t b = 0; b < row.buildings.size(); ++b) {
-    const auto m = assemble(row.buildings[b]);
-    const int o = out.offset[b], nb = row.buildings[b].floors();
+    const Building& bd = row.buildings[b];
+    const auto m = assemble(bd);
+    const int o = out.offset[b], nb = bd.floors();
     out.M.block(o, o, nb, nb) = m.M;
     out.C.block(o, o, nb, nb) = m.C;
-    out.K.block(o, o, nb, nb) = m.K;
+    if (bd.p_delta) {
+      out.K.block(o, o, nb, nb) = m.K - m.Kg;
+      out.Kg.block(o, o, nb, nb) = m.Kg;
+    } else {
+      out.K.block(o, o, nb, nb) = m.K;
+    }
     out.periods.push_back(m.periods);
-    const StoreyLaw& law = find_storey_law(row.buildings[b].hysteresis, row.buildings[b].name);
+    const StoreyLaw& law = find_storey_law(bd.hysteresis, bd.name);
+    // Linear: the forces are K u and the damping C v with constant matrices.
     out.linear = out.linear && law.linear();
     for (int j = 0; j < nb; ++j) {
       RowStorey s;
       s.law = &law;
-      s.p = row.buildings[b].storey(j);
+      s.p = bd.storey(j);
       s.below = j > 0 ? o + j - 1 : -1;
       s.above = j + 1 < nb ? o + j + 1 : -1;
       s.building = static_cast<int>(b);
+      s.kg = bd.geometric_stiffness(j);
+      if (bd.damping_stiffness == DampingStiffness::tangent) s.damping_a1 = m.rayleigh_a1;
       out.storeys.push_back(s);
     }
   }

@@ -34,13 +34,23 @@ struct RowStorey {
   int below = -1;                  ///< global DOF of the floor below, -1 for the ground
   int above = -1;                  ///< global DOF of the floor above, -1 for the roof
   int building = 0;                ///< 0-based
+  /// P-Delta: the geometric stiffness P / h of the storey [N/m] (0 without): the storey's shear
+  /// is the law's V minus kg times its drift.
+  double kg = 0.0;
+  /// Tangent-stiffness damping (DampingStiffness::tangent): the building's Rayleigh a1 [s]; the
+  /// storey's stiffness-proportional damping is then a1 max(k_t, 0) instead of a1 k0. 0: the
+  /// initial stiffness' damping.
+  double damping_a1 = 0.0;
 };
 
 /// The assembled row: block-diagonal matrices over all floors, building after building.
 /// K is built from the initial storey stiffnesses (and C from it and M); a storey whose law is
 /// not linear replaces its K contribution by its shear (see storeys).
 struct AssembledRow {
+  /// M, C from the initial storey stiffnesses, and K: the initial storey stiffnesses minus the
+  /// geometric stiffness of P-Delta (K = K0 - Kg), the stiffness that acts.
   Eigen::MatrixXd M, C, K;
+  Eigen::MatrixXd Kg;                    ///< geometric stiffness of P-Delta [N/m] (zero without)
   Eigen::VectorXd inv_mass;              ///< 1 / M_ii [1/kg]
   std::vector<int> offset;               ///< first global DOF of each building
   std::vector<Eigen::VectorXd> periods;  ///< per building [s]

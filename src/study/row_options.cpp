@@ -28,6 +28,14 @@ std::vector<OptionSpec> row_option_specs() {
       {"building#.hardening", "-", "0.02",
        "post-yield stiffness ratio b = k_post / k0 in [0, 1) (one value or a list)"},
       {"building#.bw_n", "-", "2", "Bouc-Wen sharpness n > 0 (one value or a list)"},
+      {"building#.p_delta", "", "false",
+       "P-Delta: the gravity load P_i of the floors at and above storey i adds -P_i d_i / h_i "
+       "to its shear (true/false)"},
+      {"building#.gravity_loads", "N", "",
+       "gravity load per floor for P-Delta (one value for all floors, or a list; default m g)"},
+      {"building#.damping_stiffness", "", "initial",
+       "stiffness of the stiffness-proportional Rayleigh damping: initial (k0) or tangent (each "
+       "storey's current tangent stiffness, at least 0; Charney 2008)"},
       {"pair#.gap", "m", "0",
        "at-rest gap between building # and #+1 (one value, or one per colliding floor)"},
       {"contact.model", "", "lve", "contact model: " + contact_model_names()},
@@ -65,6 +73,9 @@ std::vector<OptionSpec> row_option_specs() {
        "lumped rows between contacts and yield events: exact (the linear system's exact step "
        "on the h_max grid) or dopri5 (adaptive Dormand-Prince throughout)"},
       {"simulation.extra_time", "s", "0", "free vibration simulated after the record ends"},
+      {"simulation.collapse_drift_ratio", "-", "0.1",
+       "a building whose storey drift ratio passes this has collapsed: the run stops there "
+       "(pounding run) or the building stops (free run)"},
   };
 }
 
@@ -110,6 +121,21 @@ void read_hysteresis(const Options& opt, const std::string& pre, Building& bd) {
                              [](double x) { return x >= 0 && x < 1; });
   bd.bw_n = storey_list(opt, pre + "bw_n", n, "valid: a Bouc-Wen exponent n > 0",
                         [](double x) { return x > 0; });
+}
+
+// [buildingN] p_delta, gravity_loads, damping_stiffness.
+void read_gravity(const Options& opt, const std::string& pre, Building& bd) {
+  bd.p_delta = parse_bool(opt, pre + "p_delta");
+  if (opt.given(pre + "gravity_loads"))
+    bd.gravity_loads = storey_list(opt, pre + "gravity_loads", bd.masses.size(),
+                                   "valid: gravity loads > 0 N", [](double x) { return x > 0; });
+  const std::string ds = opt.get_string(pre + "damping_stiffness");
+  if (ds == "initial")
+    bd.damping_stiffness = DampingStiffness::initial;
+  else if (ds == "tangent")
+    bd.damping_stiffness = DampingStiffness::tangent;
+  else
+    throw opt.invalid(pre + "damping_stiffness", "valid: initial or tangent");
 }
 
 // "building1..building3", or "building1" for one.
@@ -175,6 +201,8 @@ BuildingRow row_from_options(const Options& opt) {
     else
       throw opt.invalid(pre + "damping_type", "valid: rayleigh or modal");
     read_hysteresis(opt, pre, bd);
+    read_gravity(opt, pre, bd);
+    validate_gravity(bd, opt.where(pre + (bd.p_delta ? "p_delta" : "damping_stiffness")));
     validate(bd, opt.where(pre + "masses"));
     row.buildings.push_back(bd);
   }
