@@ -59,7 +59,7 @@ StoreyParameters Building::storey(int j) const {
   p.k0 = stiffnesses[j];
   if (!yield_shears.empty()) p.Fy = yield_shears[j];
   if (!hardening.empty()) p.b = hardening[j];
-  if (!bw_n.empty()) p.n = bw_n[j];
+  if (!bw_n.empty()) p.bw_n = bw_n[j];
   return p;
 }
 
