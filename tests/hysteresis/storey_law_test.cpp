@@ -202,7 +202,7 @@ TEST(StoreyLawRegistry, NamesTheValidLawsForAnUnknownOne) {
   } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()),
               "study.ini:3: key 'building1.hysteresis': unknown hysteresis law 'takeda'; valid: "
-              "elastic, bilinear, bouc-wen");
+              "elastic, bilinear, bouc-wen, imk");
   }
 }
 
