@@ -34,17 +34,19 @@
 //   6 post-capping    on the backbone, to the residual drift d_res where V = Fr
 //   7 residual        V = Fr up to theta_u h
 //   failed            V = 0 for ever
-// Peak-oriented reloading (Ibarra et al. 2005, sec. 3.2): at a new excursion (the shear
-// crossing zero at u0) toward a side, the target is the global peak G (the largest drift
+// Peak-oriented reloading (Ibarra et al. 2005; OpenSees' branches 3 and 4): at a new excursion (the
+// shear crossing zero at u0) toward a side, the target is the global peak G (the largest drift
 // reached toward that side, on the current backbone; the yield point before the side yielded),
 // or first the last reversal point L of that side when u0 < d_L, V_L < V_G and L lies above
 // the line from u0 to G (V_L / (d_L - u0) > V_G / (d_G - u0)), then G; past G the backbone.
 // (Degenerate case, as OpenSees: when G is not ahead of u0, the shear goes straight onto the
 // backbone at u0.)
 // Unloading (a drift reversal on branches 3-7, i.e. the shear and the drift rate of opposite
-// signs): L becomes the reversal point, and G too when it lies beyond G; Ku is reduced (below).
+// signs): L becomes the reversal point, and so does G when the reversal point lies beyond it;
+// Ku is reduced (below).
 //
-// Cyclic deterioration (Ibarra et al. 2005, eqs. 4-10; Lignos & Krawinkler 2011, eqs. 3-4),
+// Cyclic deterioration (Ibarra et al. 2005; Lignos & Krawinkler 2011: the energy rule of Rahnama
+// & Krawinkler 1993 for the four modes),
 // with E_h the hysteretic energy dissipated so far and E_exc its value at the start of the
 // current excursion:
 //   - at each new excursion (shear crossing zero) toward side s:
