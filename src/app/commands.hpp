@@ -10,4 +10,5 @@ int run_merge(int argc, const char* const* argv);
 int run_fragility(int argc, const char* const* argv);
 int run_summary(int argc, const char* const* argv);
 int run_risk(int argc, const char* const* argv);
+int run_hysteresis(int argc, const char* const* argv);
 }  // namespace pound::app

@@ -34,6 +34,8 @@ const Command kCommands[] = {
      "amplification statistics of a campaign file per intensity, building and floor"},
     {"risk", pound::app::run_risk,
      "pounding risk at every gap from a campaign and a hazard curve; the gap for a target"},
+    {"hysteresis", pound::app::run_hysteresis,
+     "one storey driven through a drift history by a storey law (drift_m,shear_N)"},
 };
 
 void usage(std::ostream& out) {
@@ -75,9 +77,9 @@ int main(int argc, char** argv) {
       return 1;
     }
   }
-  std::cerr << "pound: error: unknown command '" << argv[1]
-            << "'; valid commands: impact, simulate, motion, campaign, merge, fragility, summary, "
-               "risk (see "
-               "'pound --help')\n";
+  std::string names;
+  for (const auto& c : kCommands) names += (names.empty() ? "" : ", ") + std::string(c.name);
+  std::cerr << "pound: error: unknown command '" << argv[1] << "'; valid commands: " << names
+            << " (see 'pound --help')\n";
   return 2;
 }

@@ -19,7 +19,7 @@ double ratio_power(double z, double uy, double n) {
 double BoucWenStorey::slope(const StoreyParameters& p, double z, double sign) {
   // 1 - |z|^n (gamma + beta sgn(dd z)) with beta = gamma = 1 / (2 uy^n): loading (dd z > 0)
   // 1 - |z/uy|^n, unloading 1.
-  return sign * z > 0.0 ? 1.0 - ratio_power(z, p.uy(), p.n) : 1.0;
+  return sign * z > 0.0 ? 1.0 - ratio_power(z, p.uy(), p.bw_n) : 1.0;
 }
 
 double BoucWenStorey::shear(const StoreyParameters& p, const StoreyState&, double d,
@@ -51,7 +51,7 @@ double BoucWenStorey::advance(const StoreyParameters& p, const StoreyState& comm
   const double delta = d1 - d0;
   if (delta != 0.0) {
     const double sign = delta > 0.0 ? 1.0 : -1.0;
-    const double max_sub = p.uy() / (50.0 * std::max(1.0, p.n));
+    const double max_sub = p.uy() / (50.0 * std::max(1.0, p.bw_n));
     const int m = std::max(1, static_cast<int>(std::ceil(std::fabs(delta) / max_sub)));
     const double h = delta / m, c = (1.0 - p.b) * p.k0;
     // dz/dd = slope(z), dE/dd = c z (1 - slope(z)) (energy per unit drift along the path).

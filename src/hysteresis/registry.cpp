@@ -4,6 +4,7 @@
 #include "hysteresis/bilinear.hpp"
 #include "hysteresis/bouc_wen.hpp"
 #include "hysteresis/elastic.hpp"
+#include "hysteresis/imk.hpp"
 
 namespace pound {
 
@@ -11,10 +12,12 @@ const std::vector<StoreyLawInfo>& storey_laws() {
   static const ElasticStorey elastic;
   static const BilinearStorey bilinear;
   static const BoucWenStorey bouc_wen;
+  static const ImkStorey imk;
   static const std::vector<StoreyLawInfo> laws = {
       {"elastic", "linear elastic, Th. 3.6", &elastic},
       {"bilinear", "kinematic hardening, OpenSees Steel01 without isotropic hardening", &bilinear},
       {"bouc-wen", "Bouc 1967, Wen 1976", &bouc_wen},
+      {"imk", "peak-oriented modified Ibarra-Medina-Krawinkler, OpenSees IMKPeakOriented", &imk},
   };
   return laws;
 }

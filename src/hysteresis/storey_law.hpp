@@ -25,13 +25,24 @@
 
 namespace pound {
 
-/// Parameters of one storey [SI].
+/// Parameters of one storey [SI]. A law reads the members it documents; the defaults of the
+/// IMK members are those of docs/hysteresis.md (reinforced-concrete frames).
 struct StoreyParameters {
   double k0 = 0.0;                                      ///< initial stiffness [N/m]
   double Fy = std::numeric_limits<double>::infinity();  ///< yield shear [N]
   double b = 0.02;                                      ///< hardening k_post / k0 [-]
-  double n = 2.0;                                       ///< Bouc-Wen sharpness [-]
-  double uy() const { return Fy / k0; }                 ///< yield drift [m]
+  double bw_n = 2.0;                                    ///< Bouc-Wen sharpness n [-]
+  double h = 3.0;  ///< storey height [m]; drift ratios are drifts / h
+  // Deteriorating law (imk.hpp), drift ratios of h:
+  double cap_strength_ratio = 1.2;     ///< Fc / Fy >= 1 [-]
+  double plastic_drift_ratio = 0.06;   ///< theta_p: yield to cap [-]
+  double post_cap_drift_ratio = 0.10;  ///< theta_pc: cap to zero strength [-]
+  double ultimate_drift_ratio =        ///< theta_u: no strength beyond [-]
+      std::numeric_limits<double>::infinity();
+  double residual_strength_ratio = 0.0;  ///< Fr / Fy in [0, 1) [-]
+  double energy_capacity = 100.0;        ///< lambda: E_t = lambda Fy uy [-]
+  double energy_exponent = 1.0;          ///< c of beta = (E_i / (E_t - sum E_j))^c [-]
+  double uy() const { return Fy / k0; }  ///< yield drift [m]
 };
 
 /// History variables of one storey; a law uses the members it documents.
@@ -42,6 +53,11 @@ struct StoreyState {
   double dissipated = 0.0;  ///< hysteretic energy dissipated before the branch began [J]
   /// Continuous states (incremental form; the continuous form keeps them in the ODE state).
   double x[2] = {0.0, 0.0};
+  /// Room for a law's history variables (the IMK law's current line, unloading stiffness,
+  /// energies, and per direction its backbone and peaks: imk.cpp names them). All zero is the
+  /// state at rest that no law has touched yet.
+  static constexpr int kHistory = 25;
+  double history[kHistory] = {};
 };
 
 /// A switching function and its time derivative: a switch happens where `value` rises through
@@ -104,6 +120,11 @@ class StoreyLaw {
   /// energies.
   virtual double advance(const StoreyParameters& p, const StoreyState& committed, double d0,
                          double d1, StoreyState& trial) const = 0;
+
+  // --- Both forms --------------------------------------------------------------------------
+  /// True once the storey has failed for good (a deteriorating law that lost all strength: it
+  /// carries no shear from then on). The solvers use it to detect collapse.
+  virtual bool failed(const StoreyParameters&, const StoreyState&) const { return false; }
 };
 
 }  // namespace pound

@@ -85,6 +85,13 @@ void validate(const Building& b, const std::string& where) {
   per_storey(b.yield_shears, "yield_shears");
   per_storey(b.hardening, "hardening");
   per_storey(b.bw_n, "bw_n");
+  per_storey(b.cap_strength_ratio, "cap_strength_ratio");
+  per_storey(b.plastic_drift_ratio, "plastic_drift_ratio");
+  per_storey(b.post_cap_drift_ratio, "post_cap_drift_ratio");
+  per_storey(b.ultimate_drift_ratio, "ultimate_drift_ratio");
+  per_storey(b.residual_strength_ratio, "residual_strength_ratio");
+  per_storey(b.energy_capacity, "energy_capacity");
+  per_storey(b.energy_exponent, "energy_exponent");
   if (b.inelastic() && b.yield_shears.empty())
     throw InputError(where + ": hysteresis '" + b.hysteresis +
                      "' needs yield_shears (the storey yield shears Fy > 0 in N, one value or one "
@@ -98,7 +105,35 @@ void validate(const Building& b, const std::string& where) {
       throw InputError(where + ": hardening" + f + " must be in [0, 1) (b = k_post / k0)");
     if (!b.bw_n.empty() && !(b.bw_n[j] > 0.0 && std::isfinite(b.bw_n[j])))
       throw InputError(where + ": bw_n" + f + " must be a finite number > 0");
+    const std::string imk_problem =
+        imk_parameter_problem(b.storey(static_cast<int>(j)), b.hysteresis == "imk");
+    if (!imk_problem.empty())
+      throw InputError(where + ": storey " + std::to_string(j + 1) + ": " + imk_problem);
   }
+}
+
+std::string imk_parameter_problem(const StoreyParameters& p, bool imk) {
+  auto positive = [](double x) { return x > 0.0 && std::isfinite(x); };
+  if (!(p.cap_strength_ratio >= 1.0 && std::isfinite(p.cap_strength_ratio)))
+    return "cap_strength_ratio must be a finite Fc / Fy >= 1";
+  if (!positive(p.plastic_drift_ratio)) return "plastic_drift_ratio must be a finite theta_p > 0";
+  if (!positive(p.post_cap_drift_ratio))
+    return "post_cap_drift_ratio must be a finite theta_pc > 0";
+  if (!(p.residual_strength_ratio >= 0.0 && p.residual_strength_ratio < 1.0))
+    return "residual_strength_ratio must be Fr / Fy in [0, 1)";
+  if (!positive(p.energy_capacity)) return "energy_capacity must be a finite lambda > 0";
+  if (!positive(p.energy_exponent)) return "energy_exponent must be a finite c > 0";
+  if (!(p.ultimate_drift_ratio > 0.0)) return "ultimate_drift_ratio must be theta_u > 0";
+  const double cap = p.uy() / p.h + p.plastic_drift_ratio;  // the cap drift ratio
+  if (imk && !(p.ultimate_drift_ratio >= cap)) {
+    char b[160];
+    std::snprintf(b, sizeof b,
+                  "ultimate_drift_ratio must not be below the cap drift ratio uy / h + theta_p = "
+                  "%.6g (theta_u >= %.6g)",
+                  cap, cap);
+    return b;
+  }
+  return "";
 }
 
 StoreyParameters Building::storey(int j) const {
@@ -106,7 +141,18 @@ StoreyParameters Building::storey(int j) const {
   p.k0 = stiffnesses[j];
   if (!yield_shears.empty()) p.Fy = yield_shears[j];
   if (!hardening.empty()) p.b = hardening[j];
-  if (!bw_n.empty()) p.n = bw_n[j];
+  if (!bw_n.empty()) p.bw_n = bw_n[j];
+  p.h = storey_heights[j];
+  auto take = [j](const std::vector<double>& v, double& x) {
+    if (!v.empty()) x = v[j];
+  };
+  take(cap_strength_ratio, p.cap_strength_ratio);
+  take(plastic_drift_ratio, p.plastic_drift_ratio);
+  take(post_cap_drift_ratio, p.post_cap_drift_ratio);
+  take(ultimate_drift_ratio, p.ultimate_drift_ratio);
+  take(residual_strength_ratio, p.residual_strength_ratio);
+  take(energy_capacity, p.energy_capacity);
+  take(energy_exponent, p.energy_exponent);
   return p;
 }
 

@@ -28,13 +28,23 @@ struct Building {
   std::vector<double> storey_heights;  ///< storey heights, for drift ratios [m]
   double damping_ratio = 0.05;         ///< inherent damping ratio [-]
   DampingKind damping = DampingKind::rayleigh;
-  /// Storey hysteresis (hysteresis/registry.hpp): "elastic", "bilinear" or "bouc-wen". The
-  /// damping matrix stays the one built from the initial stiffnesses, constant through yielding.
+  /// Storey hysteresis (hysteresis/registry.hpp): "elastic", "bilinear", "bouc-wen" or "imk".
+  /// The damping matrix stays the one built from the initial stiffnesses, constant through
+  /// yielding.
   std::string hysteresis = "elastic";
   std::vector<double> yield_shears;  ///< storey yield shears Fy, storey 1 first [N]; may be
                                      ///< empty for "elastic" (no ductility is reported then)
   std::vector<double> hardening;     ///< post-yield stiffness ratio b per storey [-]; empty: 0.02
   std::vector<double> bw_n;          ///< Bouc-Wen sharpness n per storey [-]; empty: 2
+  // The deteriorating law "imk" (hysteresis/imk.hpp), per storey; empty: the defaults of
+  // StoreyParameters (docs/hysteresis.md). Drift ratios are of the storey heights.
+  std::vector<double> cap_strength_ratio;       ///< Fc / Fy >= 1 [-]
+  std::vector<double> plastic_drift_ratio;      ///< theta_p > 0, yield to cap [-]
+  std::vector<double> post_cap_drift_ratio;     ///< theta_pc > 0, cap to zero strength [-]
+  std::vector<double> ultimate_drift_ratio;     ///< theta_u, not below the cap [-]; empty: none
+  std::vector<double> residual_strength_ratio;  ///< Fr / Fy in [0, 1) [-]
+  std::vector<double> energy_capacity;          ///< lambda > 0, E_t = lambda Fy uy [-]
+  std::vector<double> energy_exponent;          ///< c > 0 [-]
   /// P-Delta: the gravity load of the floors at and above storey j, P_j, acting on its drift
   /// d_j adds -P_j d_j / h_j to the storey shear (a geometric stiffness -P_j / h_j; e.g.
   /// Chopra, Dynamics of Structures, sec. 19.6 / FEMA P695 sec. 5.2.5).
@@ -44,7 +54,8 @@ struct Building {
 
   int floors() const { return static_cast<int>(masses.size()); }
   bool inelastic() const { return hysteresis != "elastic"; }
-  /// The parameters of storey j (0-based): k0, Fy (infinite when none), b, n.
+  /// The parameters of storey j (0-based): k0, Fy (infinite when none), b, n, its height and
+  /// the IMK parameters.
   StoreyParameters storey(int j) const;
   /// Gravity load of floor j (0-based) [N]: gravity_loads, or m_j g.
   double gravity_load(int j) const;
@@ -68,13 +79,19 @@ BuildingMatrices assemble(const Building& b);
 
 /// Checks masses > 0, stiffnesses > 0, heights > 0, 0 <= xi < 1, matching lengths, a known
 /// hysteresis law with its parameters (Fy > 0 for every storey of an inelastic law,
-/// 0 <= b < 1, n > 0), gravity loads > 0 and with P-Delta k0_j > P_j / h_j, tangent damping only
-/// with Rayleigh damping and a piecewise-linear law; throws InputError naming `where` and the
-/// offending floor.
+/// 0 <= b < 1, n > 0, Fc / Fy >= 1, theta_p, theta_pc, lambda, c > 0, 0 <= Fr / Fy < 1 and,
+/// with "imk", theta_u not below the cap drift ratio uy / h + theta_p), gravity loads > 0 and
+/// with P-Delta k0_j > P_j / h_j, tangent damping only with Rayleigh damping and a
+/// piecewise-linear law; throws InputError naming `where` and the offending floor.
 void validate(const Building& b, const std::string& where);
 /// The part of validate() for gravity: loads > 0; with P-Delta every storey stiffer than its
 /// geometric stiffness P / h (else it buckles under its own gravity load, the lateral stiffness
 /// k0 - P / h being <= 0); tangent damping only with Rayleigh damping and piecewise-linear laws.
 void validate_gravity(const Building& b, const std::string& where);
+
+/// What is wrong with the IMK parameters of a storey ("" when nothing): each key with what is
+/// valid (Fc / Fy >= 1; theta_p, theta_pc, lambda, c > 0; Fr / Fy in [0, 1); theta_u > 0 and,
+/// when `imk` (the storey's law), not below the cap drift ratio uy / h + theta_p).
+std::string imk_parameter_problem(const StoreyParameters& p, bool imk);
 
 }  // namespace pound

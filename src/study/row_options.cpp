@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "contact/registry.hpp"
 #include "contact/restitution.hpp"
@@ -11,7 +12,54 @@
 
 namespace pound {
 
+namespace {
+
+// A default of StoreyParameters as the option's default text (one source for both).
+std::string default_text(double x) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%g", x);
+  return b;
+}
+
+}  // namespace
+
+std::vector<OptionSpec> storey_law_option_specs(const std::string& prefix) {
+  const StoreyParameters d;
+  const std::string list = prefix.empty() ? "" : " (one value or a list)";
+  return {
+      {prefix + "hardening", "-", default_text(d.b),
+       "post-yield stiffness ratio b = k_post / k0 in [0, 1)" + list},
+      {prefix + "bw_n", "-", default_text(d.bw_n), "Bouc-Wen sharpness n > 0" + list},
+      {prefix + "cap_strength_ratio", "-", default_text(d.cap_strength_ratio),
+       "imk: cap strength over yield strength Fc / Fy >= 1" + list},
+      {prefix + "plastic_drift_ratio", "-", default_text(d.plastic_drift_ratio),
+       "imk: drift ratio theta_p > 0 from yield to the cap" + list},
+      {prefix + "post_cap_drift_ratio", "-", default_text(d.post_cap_drift_ratio),
+       "imk: drift ratio theta_pc > 0 from the cap to zero strength" + list},
+      {prefix + "ultimate_drift_ratio", "-", "",
+       "imk: drift ratio theta_u beyond which the storey has no strength, not below the cap "
+       "drift ratio uy / h + theta_p" +
+           list + " (default: none)"},
+      {prefix + "residual_strength_ratio", "-", default_text(d.residual_strength_ratio),
+       "imk: residual strength over yield strength Fr / Fy in [0, 1)" + list},
+      {prefix + "energy_capacity", "-", default_text(d.energy_capacity),
+       "imk: lambda > 0 of the reference energy E_t = lambda Fy uy of cyclic deterioration" + list},
+      {prefix + "energy_exponent", "-", default_text(d.energy_exponent),
+       "imk: exponent c > 0 of cyclic deterioration" + list},
+  };
+}
+
 std::vector<OptionSpec> row_option_specs() {
+  auto specs = row_option_specs_without_laws();
+  const auto laws = storey_law_option_specs("building#.");
+  // After building#.yield_shears, where hardening and bw_n always stood.
+  auto at = std::find_if(specs.begin(), specs.end(),
+                         [](const OptionSpec& o) { return o.key == "building#.yield_shears"; });
+  specs.insert(at + 1, laws.begin(), laws.end());
+  return specs;
+}
+
+std::vector<OptionSpec> row_option_specs_without_laws() {
   return {
       {"building#.name", "", "", "label of the building"},
       {"building#.masses", "kg", "", "floor masses, floor 1 first (list)"},
@@ -25,9 +73,6 @@ std::vector<OptionSpec> row_option_specs() {
       {"building#.yield_shears", "N", "",
        "storey yield shears Fy > 0 (one value for all storeys, or a list); required by the "
        "inelastic laws"},
-      {"building#.hardening", "-", "0.02",
-       "post-yield stiffness ratio b = k_post / k0 in [0, 1) (one value or a list)"},
-      {"building#.bw_n", "-", "2", "Bouc-Wen sharpness n > 0 (one value or a list)"},
       {"building#.p_delta", "", "false",
        "P-Delta: the gravity load P_i of the floors at and above storey i adds -P_i d_i / h_i "
        "to its shear (true/false)"},
@@ -107,7 +152,7 @@ std::vector<double> positive_list(const Options& opt, const std::string& key, st
   return storey_list(opt, key, n, what + " must be > 0", [](double x) { return x > 0; });
 }
 
-// [buildingN] hysteresis, yield_shears, hardening, bw_n.
+// [buildingN] hysteresis, yield_shears and the storey-law keys.
 void read_hysteresis(const Options& opt, const std::string& pre, Building& bd) {
   const std::size_t n = bd.masses.size();
   bd.hysteresis = opt.get_string(pre + "hysteresis");
@@ -117,11 +162,51 @@ void read_hysteresis(const Options& opt, const std::string& pre, Building& bd) {
   else if (bd.inelastic())
     throw InputError(opt.where(pre + "yield_shears") + ": missing; hysteresis '" + bd.hysteresis +
                      "' needs the storey yield shears Fy > 0 in N (one value or one per storey)");
+  read_storey_law_keys(opt, pre, bd);
+}
+
+}  // namespace
+
+void read_storey_law_keys(const Options& opt, const std::string& pre, Building& bd) {
+  const std::size_t n = bd.masses.size();
   bd.hardening = storey_list(opt, pre + "hardening", n, "valid: b = k_post / k0 in [0, 1)",
                              [](double x) { return x >= 0 && x < 1; });
   bd.bw_n = storey_list(opt, pre + "bw_n", n, "valid: a Bouc-Wen exponent n > 0",
                         [](double x) { return x > 0; });
+  bd.cap_strength_ratio =
+      storey_list(opt, pre + "cap_strength_ratio", n, "valid: a cap strength ratio Fc / Fy >= 1",
+                  [](double x) { return x >= 1; });
+  auto positive = [&](const char* key, const std::string& what) {
+    return storey_list(opt, pre + key, n, "valid: " + what + " > 0",
+                       [](double x) { return x > 0; });
+  };
+  bd.plastic_drift_ratio = positive("plastic_drift_ratio", "a plastic drift ratio theta_p");
+  bd.post_cap_drift_ratio = positive("post_cap_drift_ratio", "a post-capping drift ratio theta_pc");
+  bd.residual_strength_ratio = storey_list(opt, pre + "residual_strength_ratio", n,
+                                           "valid: a residual strength ratio Fr / Fy in [0, 1)",
+                                           [](double x) { return x >= 0 && x < 1; });
+  bd.energy_capacity = positive("energy_capacity", "an energy capacity lambda");
+  bd.energy_exponent = positive("energy_exponent", "an energy exponent c");
+  bd.ultimate_drift_ratio.clear();
+  const std::string u = pre + "ultimate_drift_ratio";
+  if (!opt.given(u)) return;
+  bd.ultimate_drift_ratio = positive("ultimate_drift_ratio", "an ultimate drift ratio theta_u");
+  if (bd.hysteresis != "imk") return;
+  for (std::size_t j = 0; j < n; ++j) {
+    const StoreyParameters p = bd.storey(static_cast<int>(j));
+    const double cap = p.uy() / p.h + p.plastic_drift_ratio;
+    if (!(p.ultimate_drift_ratio >= cap)) {
+      char b[200];
+      std::snprintf(b, sizeof b,
+                    "valid: theta_u not below the cap drift ratio uy / h + theta_p = %.6g of "
+                    "storey %zu (uy = Fy / k0)",
+                    cap, j + 1);
+      throw opt.invalid(u, b);
+    }
+  }
 }
+
+namespace {
 
 // [buildingN] p_delta, gravity_loads, damping_stiffness.
 void read_gravity(const Options& opt, const std::string& pre, Building& bd) {

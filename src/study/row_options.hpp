@@ -15,6 +15,16 @@ namespace pound {
 
 /// [building#], [pair#], [contact], [motion], [integrator], [simulation] keys.
 std::vector<OptionSpec> row_option_specs();
+/// The same without the storey-law keys below.
+std::vector<OptionSpec> row_option_specs_without_laws();
+/// The storey laws' parameter keys under `prefix` ("building#." in studies, "" for
+/// `pound hysteresis`): hardening, bw_n and the IMK keys, with units, defaults and meanings.
+std::vector<OptionSpec> storey_law_option_specs(const std::string& prefix);
+/// Reads those keys under `prefix` into b for its b.masses.size() storeys (one value for all or
+/// one per storey), each validated with an error naming the key and what is valid; with
+/// b.hysteresis = "imk" theta_u is checked against the cap drift ratio, so b's stiffnesses,
+/// storey heights and yield shears must be set before.
+void read_storey_law_keys(const Options& opt, const std::string& prefix, Building& b);
 
 /// Buildings and gaps. Needs building1 (and building2.. for a row); validates masses,
 /// stiffnesses, heights, damping and gaps with errors naming file, line and key.

@@ -19,7 +19,7 @@ StoreyParameters storey(double b, double n = 2.0) {
   p.k0 = 2e7;  // N/m
   p.Fy = 2e5;  // N: uy = 0.01 m
   p.b = b;
-  p.n = n;
+  p.bw_n = n;
   return p;
 }
 
@@ -202,7 +202,7 @@ TEST(StoreyLawRegistry, NamesTheValidLawsForAnUnknownOne) {
   } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()),
               "study.ini:3: key 'building1.hysteresis': unknown hysteresis law 'takeda'; valid: "
-              "elastic, bilinear, bouc-wen");
+              "elastic, bilinear, bouc-wen, imk");
   }
 }
 

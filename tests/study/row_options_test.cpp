@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -153,6 +154,104 @@ TEST(RowOptions, NumbersPastTheRowNameTheirKeyAndTheValidRange) {
               "command line: --building3.masses: there is no building1 (building1.masses is "
               "missing; buildings are numbered 1, 2, 3, ... without gaps), so valid: building1");
   }
+}
+
+}  // namespace
+}  // namespace pound
+
+namespace pound {
+namespace {
+
+// The IMK keys (issue 23): read with their defaults, one value or one per storey, into the
+// storey parameters (drift ratios of the storey heights); bad values name the key and what is
+// valid.
+TEST(RowOptions, ImkKeysReachTheStoreyParameters) {
+  std::vector<std::string> args = kRow;
+  args.insert(args.end(), {"--building1.hysteresis", "imk", "--building1.yield_shears", "2e4",
+                           "--building1.storey_heights", "3.5", "--building1.cap_strength_ratio",
+                           "1.1, 1.2, 1.3", "--building1.ultimate_drift_ratio", "0.15",
+                           "--building1.energy_capacity", "80"});
+  const Options o = parsed(args);
+  const BuildingRow row = row_from_options(o);
+  const StoreyParameters p = row.buildings[0].storey(1);
+  EXPECT_EQ(p.h, 3.5);
+  EXPECT_EQ(p.cap_strength_ratio, 1.2);
+  EXPECT_EQ(p.ultimate_drift_ratio, 0.15);
+  EXPECT_EQ(p.energy_capacity, 80.0);
+  const StoreyParameters d;  // the defaults
+  EXPECT_EQ(p.plastic_drift_ratio, d.plastic_drift_ratio);
+  EXPECT_EQ(p.post_cap_drift_ratio, d.post_cap_drift_ratio);
+  EXPECT_EQ(p.residual_strength_ratio, d.residual_strength_ratio);
+  EXPECT_EQ(p.energy_exponent, d.energy_exponent);
+  EXPECT_EQ(d.cap_strength_ratio, 1.2);
+  EXPECT_EQ(d.plastic_drift_ratio, 0.06);
+  EXPECT_EQ(d.post_cap_drift_ratio, 0.1);
+  EXPECT_EQ(d.energy_capacity, 100.0);
+  EXPECT_TRUE(std::isinf(d.ultimate_drift_ratio));
+  // Building 2 (elastic) carries the defaults too, and no theta_u.
+  EXPECT_TRUE(std::isinf(row.buildings[1].storey(0).ultimate_drift_ratio));
+}
+
+TEST(RowOptions, BadImkKeysNameTheKeyAndWhatIsValid) {
+  const std::vector<std::string> imk = {
+      "--building1.hysteresis", "imk", "--building1.yield_shears", "2e4", "--contact.k", "1e8"};
+  auto with = [&](std::vector<std::string> extra) {
+    extra.insert(extra.begin(), imk.begin(), imk.end());
+    return error_of(extra);
+  };
+  EXPECT_EQ(with({"--building1.cap_strength_ratio", "0.9"}),
+            "command line: --building1.cap_strength_ratio = '0.9': valid: a cap strength ratio "
+            "Fc / Fy >= 1");
+  for (const char* v : {"0", "-0.01"}) {
+    EXPECT_NE(with({"--building1.plastic_drift_ratio", v})
+                  .find("--building1.plastic_drift_ratio = '" + std::string(v) +
+                        "': valid: a plastic drift ratio theta_p > 0"),
+              std::string::npos)
+        << v;
+    EXPECT_NE(with({"--building1.post_cap_drift_ratio", v}).find("theta_pc > 0"),
+              std::string::npos);
+    EXPECT_NE(with({"--building1.energy_capacity", v}).find("lambda > 0"), std::string::npos);
+  }
+  for (const char* v : {"1", "-0.1", "1.5"})
+    EXPECT_NE(with({"--building1.residual_strength_ratio", v}).find("Fr / Fy in [0, 1)"),
+              std::string::npos)
+        << v;
+  EXPECT_NE(with({"--building1.energy_exponent", "0"}).find("c > 0"), std::string::npos);
+  // theta_u below the cap drift ratio uy / h + theta_p = 2e4 / 2e6 / 3 + 0.06 = 0.0633333.
+  EXPECT_EQ(with({"--building1.ultimate_drift_ratio", "0.05"}),
+            "command line: --building1.ultimate_drift_ratio = '0.05': valid: theta_u not below "
+            "the cap drift ratio uy / h + theta_p = 0.0633333 of storey 1 (uy = Fy / k0)");
+  EXPECT_EQ(with({"--building1.ultimate_drift_ratio", "0.07"}), "");
+  // Keys of another law are read and range-checked as hardening is, but theta_u is compared
+  // with the cap only under imk.
+  EXPECT_EQ(error_of({"--building1.ultimate_drift_ratio", "0.01", "--contact.k", "1e8"}), "");
+  EXPECT_NE(error_of({"--building1.cap_strength_ratio", "0.5"}).find("Fc / Fy >= 1"),
+            std::string::npos);
+  // A list of the wrong length.
+  EXPECT_NE(with({"--building1.plastic_drift_ratio", "0.05, 0.06"}).find("expected 3 values"),
+            std::string::npos);
+}
+
+TEST(RowOptions, ValidateChecksTheImkParametersOfBuildingsMadeInCode) {
+  Building b;
+  b.masses = {1e3};
+  b.stiffnesses = {2e6};
+  b.storey_heights = {3.0};
+  b.hysteresis = "imk";
+  b.yield_shears = {2e4};
+  validate(b, "here");
+  b.ultimate_drift_ratio = {0.05};
+  try {
+    validate(b, "here");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("here: storey 1: ultimate_drift_ratio must not be below"),
+              std::string::npos)
+        << e.what();
+  }
+  b.ultimate_drift_ratio.clear();
+  b.cap_strength_ratio = {0.99};
+  EXPECT_THROW(validate(b, "here"), InputError);
 }
 
 }  // namespace
