@@ -335,7 +335,7 @@ class Imk {
     const double x0 = n * u0;
     if (!(sd.d_global > x0)) return enter_backbone(n, x0, u0, w);  // G not ahead of u0
     const double k_global = sd.f_global / (sd.d_global - x0);
-    if (x0 < sd.d_local && sd.f_local < sd.f_global && sd.f_local / (sd.d_local - x0) > k_global)
+    if (x0 < sd.d_local && sd.f_local <= sd.f_global && sd.f_local / (sd.d_local - x0) > k_global)
       set_line(n * kToLocal, u0, 0.0, sd.f_local / (sd.d_local - x0), w);
     else
       set_line(n * kToGlobal, u0, 0.0, k_global, w);

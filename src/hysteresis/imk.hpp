@@ -37,8 +37,10 @@
 // Peak-oriented reloading (Ibarra et al. 2005; OpenSees' branches 3 and 4): at a new excursion (the
 // shear crossing zero at u0) toward a side, the target is the global peak G (the largest drift
 // reached toward that side, on the current backbone; the yield point before the side yielded),
-// or first the last reversal point L of that side when u0 < d_L, V_L < V_G and L lies above
+// or first the last reversal point L of that side when u0 < d_L, V_L <= V_G and L lies above
 // the line from u0 to G (V_L / (d_L - u0) > V_G / (d_G - u0)), then G; past G the backbone.
+// (OpenSees asks V_L < V_G; a tie, as on the residual plateau, is decided there by the round-off
+// of its incremental shears. Here L lies above the line in a tie, as the issue's rule says.)
 // (Degenerate case, as OpenSees: when G is not ahead of u0, the shear goes straight onto the
 // backbone at u0.)
 // Unloading (a drift reversal on branches 3-7, i.e. the shear and the drift rate of opposite
@@ -60,7 +62,10 @@
 //     with E_h counted without the elastic energy V^2 / (2 Ku) still stored at the reversal
 //     (Ku before the reduction). (The 2020 OpenSees code added that energy to E_h - E_exc
 //     instead; its 2022 revision subtracts it, as the issue states.)
-//   A beta below zero counts as zero.
+//   A beta below zero counts as zero (the issue's clipping). OpenSees fails the storey at a beta
+//   below -0.01, which a beta_K reaches once Ku has deteriorated below the slope K of the
+//   reloading line the excursion began on (its energy up to the unloading is then
+//   V^2 (1/K - 1/Ku) / 2 < 0).
 // Failure (the storey carries no shear from then on): a beta above 1 or E_t - E_h <= 0 at an
 // excursion or unloading; a drift beyond theta_u h; the backbone reaching zero shear (Fr = 0 at
 // the end of the post-capping branch, or a global peak with no strength left).

@@ -149,6 +149,27 @@ TEST_F(Cli, YieldingStoreyKeysAreValidated) {
                {"building1.yield_shears", "expected 2 values"});
 }
 
+TEST_F(Cli, ImkStoreyKeysAreValidated) {
+  // Issue 23: Fc / Fy < 1, theta_p, theta_pc or lambda <= 0, Fr / Fy outside [0, 1) and theta_u
+  // below the cap each give one line naming the key and what is valid, exit 2, no file.
+  const std::string b1 = "stiffnesses = 1e6, 1e6\n";
+  const std::string imk = b1 + "hysteresis = imk\nyield_shears = 2e4\n";
+  expect_error(study(b1, imk + "cap_strength_ratio = 0.9\n"),
+               {"study.ini:6", "building1.cap_strength_ratio", "Fc / Fy >= 1"});
+  expect_error(study(b1, imk + "plastic_drift_ratio = 0\n"),
+               {"study.ini:6", "building1.plastic_drift_ratio", "theta_p > 0"});
+  expect_error(study(b1, imk + "post_cap_drift_ratio = -0.1\n"),
+               {"building1.post_cap_drift_ratio", "theta_pc > 0"});
+  expect_error(study(b1, imk + "energy_capacity = 0\n"),
+               {"building1.energy_capacity", "lambda > 0"});
+  expect_error(study(b1, imk + "residual_strength_ratio = 1\n"),
+               {"building1.residual_strength_ratio", "[0, 1)"});
+  // uy / h + theta_p = 0.02 / 3 + 0.06
+  expect_error(study(b1, imk + "ultimate_drift_ratio = 0.06\n"),
+               {"study.ini:6", "building1.ultimate_drift_ratio", "0.0666667"});
+  expect_error(study(b1, b1 + "hysteresis = imk\n"), {"building1.yield_shears", "missing"});
+}
+
 TEST_F(Cli, YieldingStoreysAreReportedWithTheEnergyBalance) {
   const std::string b1 = "stiffnesses = 1e6, 1e6\n";
   const CmdResult r =

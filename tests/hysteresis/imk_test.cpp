@@ -495,6 +495,44 @@ TEST(Imk, EveryFailureLeavesTheStoreyWithoutShearForEver) {
   EXPECT_GT(e_before, 2.5 * fy_uy);
 }
 
+TEST(Imk, ReloadingAimsAtTheLastReversalPointWhenItLiesAboveTheLineToThePeak) {
+  // No deterioration within reach (lambda = 1e12): Ku = k0. Peaks at +5 uy and -5 uy, then a
+  // reload toward +5 uy turned back at +2 uy (the last reversal point L, on that reloading
+  // line), a shallower excursion to -3 uy, and the reload toward +: from the new zero crossing
+  // u0, to the right of the last one, the line to the global peak G passes below L, so the
+  // storey aims at L first, then at G, then follows the backbone (the peak-oriented rule with
+  // the last reversal point).
+  StoreyParameters p = imk_storey();
+  p.energy_capacity = 1e12;
+  const ImkStorey law;
+  const double uy = p.uy();
+  Incremental inc{law, p, {}};
+  double vg = 0.0, vl = 0.0, vr = 0.0;
+  for (double d : path({5 * uy}, uy / 50)) vg = inc.go(d);
+  for (double d : path({-5 * uy}, uy / 50)) inc.go(5 * uy + d);
+  for (double d : path({7 * uy}, uy / 50)) vl = inc.go(-5 * uy + d);  // up to +2 uy
+  for (double d : path({-5 * uy}, uy / 50)) vr = inc.go(2 * uy + d);  // down to -3 uy
+  const double u0 = -3 * uy - vr / p.k0;
+  const double kl = vl / (2 * uy - u0), kg = vg / (5 * uy - u0);
+  ASSERT_GT(kl, kg);  // L lies above the line from u0 to G
+  int checked = 0;
+  for (double d : path({12 * uy}, uy / 50)) {
+    const double x = -3 * uy + d, v = inc.go(x);
+    double expected;
+    if (x <= u0)
+      expected = vr + p.k0 * (x + 3 * uy);  // unloading along Ku = k0
+    else if (x <= 2 * uy)
+      expected = kl * (x - u0);  // toward L
+    else if (x <= 5 * uy)
+      expected = vl + (vg - vl) / (3 * uy) * (x - 2 * uy);  // from L toward G
+    else
+      expected = backbone(p, x);
+    ASSERT_NEAR(v, expected, 1e-6 * p.Fy) << x;
+    ++checked;
+  }
+  EXPECT_EQ(checked, 600);
+}
+
 TEST(Imk, SwitchesAndSafeIntervals) {
   // Elastic: one drift switch (|d| reaching uy), the interval (-uy, uy) safe; a loading branch:
   // its end on the drift and the drift-rate reversal; unloading: both ends on the drift and safe.
