@@ -22,6 +22,29 @@ void print_json(const RowSimulation& s, const BuildingRow& row,
   w.begin_object().key("buildings").begin_array();
   for (std::size_t b = 0; b < row.buildings.size(); ++b) {
     w.begin_object().field("index", static_cast<long>(b)).field("name", row.buildings[b].name);
+    // Collapse (issue 23): in each run, and when and where.
+    auto collapse_of = [&](const std::vector<BuildingCollapse>& c) {
+      return b < c.size() ? c[b] : BuildingCollapse{};
+    };
+    const BuildingCollapse cp = collapse_of(s.collapse_pounding), cf = collapse_of(s.collapse_free);
+    w.field("collapsed_pounding", cp.collapsed).field("collapsed_free", cf.collapsed);
+    w.key("collapse_time_s").begin_object();
+    for (const auto* c : {&cp, &cf}) {
+      w.key(c == &cp ? "pounding" : "free");
+      if (c->collapsed)
+        w.value(c->time);
+      else
+        w.null();
+    }
+    w.end_object().key("collapse_storey").begin_object();
+    for (const auto* c : {&cp, &cf}) {
+      w.key(c == &cp ? "pounding" : "free");
+      if (c->collapsed)
+        w.value(c->storey);
+      else
+        w.null();
+    }
+    w.end_object();
     w.key("floors").begin_array();
     for (const auto& f : s.floors) {
       if (f.building != static_cast<int>(b)) continue;
@@ -45,7 +68,14 @@ void print_json(const RowSimulation& s, const BuildingRow& row,
     }
     w.end_array().end_object();
   }
-  w.end_array().key("contacts").begin_array();
+  w.end_array();
+  // The pounding run stops at its first collapse (null: it ran to the end).
+  w.key("pounding_stopped_at_s");
+  if (s.pounding.stopped)
+    w.value(s.pounding.t_end);
+  else
+    w.null();
+  w.key("contacts").begin_array();
   for (std::size_t k = 0; k < s.sites.size(); ++k) {
     const auto& c = s.sites[k];
     w.begin_object()
@@ -91,6 +121,32 @@ void print_json(const RowSimulation& s, const BuildingRow& row,
   std::cout << w.str() << "\n";
 }
 
+// Collapse (issue 23): per building and run, when, where and why; only when one collapsed.
+void print_collapse_table(const RowSimulation& s, const BuildingRow& row) {
+  bool any = false;
+  for (const auto* c : {&s.collapse_pounding, &s.collapse_free})
+    for (const auto& x : *c) any = any || x.collapsed;
+  if (!any) return;
+  std::printf("\n%-12s %-9s %10s %7s %-14s\n", "building", "run", "collapse[s]", "storey", "cause");
+  for (std::size_t b = 0; b < row.buildings.size(); ++b)
+    for (const auto* c : {&s.collapse_pounding, &s.collapse_free}) {
+      const BuildingCollapse x = b < c->size() ? (*c)[b] : BuildingCollapse{};
+      const char* run = c == &s.collapse_pounding ? "pounding" : "free";
+      if (!x.collapsed) {
+        std::printf("%-12s %-9s %10s %7s %-14s\n", row.buildings[b].name.c_str(), run, "-", "-",
+                    "standing");
+        continue;
+      }
+      std::printf("%-12s %-9s %10.4f %7d %-14s\n", row.buildings[b].name.c_str(), run, x.time,
+                  x.storey, x.cause == CollapseCause::drift ? "drift" : "failed storey");
+    }
+  if (s.pounding.stopped)
+    std::printf(
+        "the pounding run stopped at its first collapse, t = %.4f s: its peaks are those up "
+        "to then, its residual drifts unknown\n",
+        s.pounding.t_end);
+}
+
 void print_table(const RowSimulation& s, const BuildingRow& row,
                  const std::vector<sears::SlabPeaks>& slabs,
                  const std::vector<sears::SiteContacts>& phases) {
@@ -115,6 +171,7 @@ void print_table(const RowSimulation& s, const BuildingRow& row,
                   f.residual_drift_ratio_free, f.ductility_pounding, f.ductility_free,
                   f.hysteretic_energy_pounding, f.hysteretic_energy_free);
   }
+  print_collapse_table(s, row);
   std::printf("\n%-10s %12s %12s %12s %12s %12s %12s %12s\n", "energy[J]", "input", "kinetic",
               "strain", "damping", "hysteretic", "contact", "residual");
   for (const auto* run : {&s.pounding, &s.free}) {
@@ -190,6 +247,7 @@ int run_simulate(int argc, const char* const* argv) {
   so.extra_time = opt.get_nonnegative("simulation.extra_time");
   so.record_history = opt.given("histories");
   so.track_energy = true;
+  so.collapse_drift_ratio = opt.get_positive("simulation.collapse_drift_ratio");
   if (is_sears) {
     // The step limits need the motion: a too large --dt fails here, before any output.
     const std::string dt_key = opt.given("dt") ? "dt" : "sears.dt";

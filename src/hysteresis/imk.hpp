@@ -112,6 +112,7 @@ class ImkStorey final : public StoreyLaw {
   double advance(const StoreyParameters& p, const StoreyState& committed, double d0, double d1,
                  StoreyState& trial) const override;
   bool failed(const StoreyParameters& p, const StoreyState& s) const override;
+  bool can_fail() const override { return true; }
 
   /// The unloading stiffness Ku of state s [N/m] (k0 before any unloading).
   static double unloading_stiffness(const StoreyParameters& p, const StoreyState& s);

@@ -125,6 +125,8 @@ class StoreyLaw {
   /// True once the storey has failed for good (a deteriorating law that lost all strength: it
   /// carries no shear from then on). The solvers use it to detect collapse.
   virtual bool failed(const StoreyParameters&, const StoreyState&) const { return false; }
+  /// Whether failed() can ever be true (the solvers skip the test for laws that cannot fail).
+  virtual bool can_fail() const { return false; }
 };
 
 }  // namespace pound

@@ -27,6 +27,9 @@ NewmarkStoreys::NewmarkStoreys(const AssembledRow& a, const Eigen::VectorXd& u0)
   rd_trial_ = rd_;
   rd_prev_ = rd_;
   for (const auto& st : storeys_) tangent_damping_ = tangent_damping_ || st.damping_a1 > 0.0;
+  can_fail_.assign(n, 0);
+  failed_in_step_.assign(n, 0);
+  for (int i = 0; i < n; ++i) can_fail_[i] = storeys_[i].law->can_fail();
 }
 
 Eigen::MatrixXd NewmarkStoreys::influence(const Eigen::LLT<Eigen::MatrixXd>& mt) const {
@@ -45,7 +48,13 @@ bool NewmarkStoreys::trial(const Eigen::VectorXd& u, const Eigen::VectorXd& u_en
   for (int i = 0, n = static_cast<int>(storeys_.size()); i < n; ++i) {
     const RowStorey& s = storeys_[i];
     const double d1 = drift(u_end, i);
-    const double V = s.law->advance(s.p, committed_[i], drift(u, i), d1, trial_[i]);
+    double V;
+    if (can_fail_[i] && failed_in_step_[i]) {
+      V = s.law->shear(s.p, trial_[i], d1, trial_[i].x);  // failed: no shear
+    } else {
+      V = s.law->advance(s.p, committed_[i], drift(u, i), d1, trial_[i]);
+      if (can_fail_[i] && s.law->failed(s.p, trial_[i])) failed_in_step_[i] = 1;
+    }
     double r = s.p.k0 * d1 - V, fd = 0.0;
     if (s.damping_a1 > 0.0) {  // tangent damping at the trial branch (newmark_storeys.hpp)
       double slope = s.p.k0, offset = 0.0;
@@ -63,6 +72,7 @@ bool NewmarkStoreys::trial(const Eigen::VectorXd& u, const Eigen::VectorXd& u_en
 }
 
 void NewmarkStoreys::commit() {
+  std::fill(failed_in_step_.begin(), failed_in_step_.end(), 0);
   committed_.swap(trial_);
   trial_ = committed_;
   r_ = r_trial_;

@@ -55,6 +55,8 @@ class NewmarkStoreys {
   double shear(const Eigen::VectorXd& u, int i) const;
   /// Hysteretic energy dissipated by floor DOF i's storey (committed) [J].
   double dissipated(const Eigen::VectorXd& u, int i) const;
+  /// Whether floor DOF i's storey has failed (committed; StoreyLaw::failed).
+  bool failed(int i) const { return storeys_[i].law->failed(storeys_[i].p, committed_[i]); }
   /// Recoverable strain energy of all storeys (committed), with P-Delta's -P d^2 / (2 h) [J].
   double stored(const Eigen::VectorXd& u) const;
 
@@ -70,6 +72,10 @@ class NewmarkStoreys {
   std::vector<double> strain_;
   Eigen::VectorXd r_, r_trial_;
   Eigen::VectorXd rd_, rd_trial_, rd_prev_;  // the damper forces f_d of tangent damping [N]
+  // A storey whose trial failed within the step stays failed for the step's further passes: a
+  // failure at an unloading has no fixed point otherwise (V for a trial drift past the failure,
+  // 0 short of it).
+  std::vector<char> can_fail_, failed_in_step_;
   bool linear_ = true;
   bool tangent_damping_ = false;
 };

@@ -98,6 +98,7 @@ long SearsRowRun::fine_step(long i) {
     op = static_cast<int>(m - 1);
     const StepOperators& o = ops[op];
     floors.predict(o.h, o.nm, ag_at((i + m) * dt), a_next);
+    hold_still(a_next);
     if (storeys.linear()) {
       u_hat = u + o.h * v + (0.25 * o.h * o.h) * (acc + a_next);
       F_next.setZero();
@@ -176,6 +177,7 @@ void SearsRowRun::storey_pass(double h, const Eigen::MatrixXd& R, bool contacts)
   for (int pass = 0;; ++pass) {
     a_next = a_base;
     a_next.noalias() += R * r_next;
+    hold_still(a_next);
     u_hat = u + h * v + (0.25 * h * h) * (acc + a_next);
     if (contacts && p.contacts && ns > 0) {
       do {

@@ -97,7 +97,11 @@ void SearsRowRun::initial_state() {
     delta(s) = u(a.sites[s].dof_left) - u(a.sites[s].dof_right) - a.sites[s].gap;
   out.dt_s = dt;
   out.coarse_dt_s = hc;
+  rec.set_collapse(a.storeys, p.collapse_drift_ratio);
   rec.start(u);
+  if (std::isfinite(p.collapse_drift_ratio))
+    for (const auto& st : a.storeys)
+      failure_check = failure_check || (st.kg > 0.0 && !st.law->linear());
   for (const auto& f : layout.floors) out.slabs.push_back(SlabPeaks{f.building, f.floor, 0.0, 0.0});
   in_contact.assign(ns, false);
   out.contacts.assign(ns, SiteContacts{});
@@ -150,6 +154,7 @@ void SearsRowRun::wake_site(int s) {
 
 void SearsRowRun::coarse_step(double t_next) {  // F = 0 at both ends
   floors.predict(hc, nm_coarse, ag_at(t_next), a_next);
+  hold_still(a_next);
   if (!storeys.linear()) storey_pass(hc, R_coarse, false);
   floors.update(hc, a_next);
   if (!storeys.linear()) storeys.commit();
@@ -278,9 +283,9 @@ inline void SearsRowRun::record_slab(int k, bool coarse, double ag) {
     slabs.try_dormant(k, std::fabs(a0), std::min(pk.face_accel, pk.centre_accel));
 }
 
-void SearsRowRun::record_peaks(bool coarse, double ag) {
+void SearsRowRun::record_peaks(bool coarse, double ag, double t_next, double h) {
   // Floor peaks (relative displacement, storey drift, absolute acceleration).
-  rec.sampled_peaks(u, acc.data(), ag);
+  rec.sampled_peaks(u, acc.data(), ag, t_next, h);
   // Slab faces and centres: floor (rigid) + internal acceleration (Th. 7.5, 8.3).
   if (coarse) ++coarse_in_run;
   for (int k = 0; k < nf; ++k)
@@ -317,38 +322,93 @@ SearsRowResult SearsRowRun::run() {
       if (slabs.asleep_count() > 0 && i % stepping.ratio == 0) finish_sleep();
     }
     const double t_next = i * dt;
+    current_t = t_next;
     RunRecorder::check_finite(u, t_next, "damped Sears model");
     const double ag = ag_at(t_next);
     if (p.track_energy) add_energy(h, t_next);
     record_sites(coarse, h, t_next);
     F = F_next;
-    record_peaks(coarse, ag);
+    record_peaks(coarse, ag, t_next, h);
+    if (failure_check) check_failures(t_next);
     if (rec.keeps_history()) {
       Eigen::VectorXd shear(n);
       for (int k = 0; k < n; ++k) shear(k) = storeys.shear(u, k);
       rec.history(t_next, u, acc, ag, F, shear);
     }
+    if (rec.take_new_collapses() > 0 && on_collapse()) break;
   }
   finish();
   return std::move(out);
 }
 
+void SearsRowRun::check_failures(double t) {
+  for (int i = 0; i < n; ++i) {
+    const RowStorey& st = assembled.storeys[i];
+    if (st.kg > 0.0 && !rec.collapsed(st.building) && storeys.failed(i))
+      rec.collapse(st.building, i - assembled.offset[st.building] + 1, t,
+                   CollapseCause::failed_storey);
+  }
+}
+
+bool SearsRowRun::on_collapse() {
+  if (p.contacts) {
+    rec.result().stopped = true;
+    return true;
+  }
+  if (p.track_energy && !energy_held) {
+    held_energy = energy_now();
+    energy_held = true;
+  }
+  bool all = true;
+  for (int b = 0; b < rec.buildings(); ++b) {
+    if (!rec.collapsed(b)) {
+      all = false;
+      continue;
+    }
+    rec.hold(b);
+    for (int i = 0; i < n; ++i)
+      if (rec.held(i) && std::find(held_dofs.begin(), held_dofs.end(), i) == held_dofs.end()) {
+        held_dofs.push_back(i);
+        v(i) = 0.0;
+        acc(i) = 0.0;
+      }
+  }
+  if (all) rec.result().stopped = true;
+  return all;
+}
+
+EnergyBalance SearsRowRun::energy_now() const {
+  EnergyBalance e;
+  e.input = e_input;
+  e.damping = e_damping;
+  e.contact = e_contact;
+  e.kinetic = 0.5 * v.dot(assembled.M * v);
+  e.strain = storeys.stored(u);
+  for (int k = 0; k < n; ++k) e.hysteretic += storeys.dissipated(u, k);
+  return e;
+}
+
 void SearsRowRun::finish() {
   slabs.wake_all_dormant();
   for (auto& c : out.contacts) count_impacts(c, model.impact_force_fraction);
-  rec.finish(steps * dt, u, v);
+  const bool stopped = rec.result().stopped;
+  rec.finish(stopped ? current_t : steps * dt, u, v);
   RowResult& r = rec.result();
   r.steps = out.counts.fine + out.counts.coarse;
   r.hysteretic_energy.resize(n);
   for (int k = 0; k < n; ++k) r.hysteretic_energy(k) = storeys.dissipated(u, k);
   if (p.track_energy) {
     EnergyBalance& e = r.energy;
-    e.input = e_input;
-    e.damping = e_damping;
-    e.contact = e_contact;
-    e.kinetic = 0.5 * v.dot(assembled.M * v);
-    e.strain = storeys.stored(u);
-    e.hysteretic = r.hysteretic_energy.sum();
+    if (energy_held) {
+      e = held_energy;
+    } else {
+      e.input = e_input;
+      e.damping = e_damping;
+      e.contact = e_contact;
+      e.kinetic = 0.5 * v.dot(assembled.M * v);
+      e.strain = storeys.stored(u);
+      e.hysteretic = r.hysteretic_energy.sum();
+    }
   }
   out.row = std::move(r);
 }

@@ -75,7 +75,15 @@ class SearsRowRun {
   void add_energy(double h, double t_next);
   void record_sites(bool coarse, double h, double t_next);
   void record_site(int s, bool coarse, double h, double t_next);
-  void record_peaks(bool coarse, double ag);
+  void record_peaks(bool coarse, double ag, double t_next, double h);
+  // Collapse (solver/row_solver.hpp): failed storeys under P-Delta; after collapses, true when
+  // the run stops (contacts: the first; without: all buildings held).
+  void check_failures(double t);
+  bool on_collapse();
+  void hold_still(Eigen::VectorXd& a) const {  // held floors: no acceleration
+    for (int i : held_dofs) a(i) = 0.0;
+  }
+  EnergyBalance energy_now() const;
   void record_slab(int k, bool coarse, double ag);
   void finish();
 
@@ -137,6 +145,14 @@ class SearsRowRun {
   // step's forces are solved again with the site included.
   std::vector<char> guarded;
   long coarse_in_run = 0;  // coarse steps since the last fine step
+  // Collapse: a storey that can fail under P-Delta (kg > 0, a law other than elastic); the
+  // floors held still (a run without contacts after its buildings collapsed); the energy balance
+  // at its first collapse.
+  bool failure_check = false;
+  double current_t = 0.0;  // the time reached [s]
+  std::vector<int> held_dofs;
+  bool energy_held = false;
+  EnergyBalance held_energy;
 };
 
 }  // namespace pound::sears::detail

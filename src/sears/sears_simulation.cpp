@@ -98,6 +98,7 @@ SearsRowSimulation simulate_sears_row(const BuildingRow& row, const GroundMotion
   p.t_end = motion.duration() + opt.extra_time;
   p.record_history = opt.record_history;
   p.track_energy = opt.track_energy;
+  p.collapse_drift_ratio = opt.collapse_drift_ratio;
   p.contacts = false;
   SearsRowResult free_run = solve_sears_row(p, model);
   RowResult free = std::move(free_run.row);

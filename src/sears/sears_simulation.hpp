@@ -140,6 +140,9 @@ struct SearsRowProblem {
   bool record_history = false;           ///< one History entry per step
   bool track_energy = false;             ///< the energy balance (RowResult::energy)
   Eigen::VectorXd u0, v0;                ///< initial floor state (empty: at rest) [m], [m/s]
+  /// Collapse (issue 23), as RowProblem::collapse_drift_ratio: a run with contacts stops at the
+  /// first collapse, one without holds the building still [-]; infinite: no check.
+  double collapse_drift_ratio = std::numeric_limits<double>::infinity();
 };
 
 /// How a run was stepped.

@@ -28,7 +28,9 @@ RowSimulation summarize_runs(const BuildingRow& row, RowResult free, RowResult p
       f.accel_pounding = out.pounding.peak_abs_accel(i);
       f.accel_free = out.free.peak_abs_accel(i);
       auto residual = [&](const RowResult& r) {
-        if (r.u_end.size() <= i) return std::numeric_limits<double>::quiet_NaN();
+        const bool collapsed = !r.collapse.empty() && r.collapse[b].collapsed;
+        if (r.u_end.size() <= i || collapsed || r.stopped)
+          return std::numeric_limits<double>::quiet_NaN();
         return std::fabs(r.u_end(i) - (j > 0 ? r.u_end(i - 1) : 0.0)) / bd.storey_heights[j];
       };
       f.residual_drift_ratio_pounding = residual(out.pounding);
@@ -45,6 +47,8 @@ RowSimulation summarize_runs(const BuildingRow& row, RowResult free, RowResult p
       out.floors.push_back(f);
     }
   }
+  out.collapse_pounding = out.pounding.collapse;
+  out.collapse_free = out.free.collapse;
   for (std::size_t k = 0; k < a.sites.size(); ++k) {
     const auto& sr = out.pounding.sites[k];
     SiteResponse s;
@@ -71,6 +75,7 @@ RowSimulation simulate_row(const BuildingRow& row, const GroundMotion& motion,
   p.t_end = motion.duration() + opt.extra_time;
   p.record_history = opt.record_history;
   p.track_energy = opt.track_energy;
+  p.collapse_drift_ratio = opt.collapse_drift_ratio;
   for (const auto& l : laws) p.laws.push_back(l.get());
   RunPair runs = solve_free_and_pounding(p, integ);  // without and with the contacts
   return summarize_runs(row, std::move(runs.free), std::move(runs.pounding));

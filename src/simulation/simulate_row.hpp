@@ -2,6 +2,7 @@
 // One simulation of a row of buildings under one ground motion, run twice: with pounding and
 // without (the same equations and steps with the contacts switched off), and the response
 // measures of physics.md section 4. A pure function: the kernel of a Monte Carlo sample.
+#include <limits>
 #include <vector>
 
 #include "motion/ground_motion.hpp"
@@ -20,7 +21,8 @@ struct FloorResponse {
   double drift_ratio_pounding = 0.0, drift_ratio_free = 0.0;  ///< peak storey drift / height [-]
   double drift_amplification = 0.0;                           ///< [-]
   double accel_pounding = 0.0, accel_free = 0.0;  ///< peak absolute acceleration [m/s^2]
-  /// |storey drift| at the end of the run (record plus extra_time) / storey height [-]
+  /// |storey drift| at the end of the run (record plus extra_time) / storey height [-]; NaN
+  /// for a building that collapsed, and for every building of a run that stopped at a collapse
   double residual_drift_ratio_pounding = 0.0, residual_drift_ratio_free = 0.0;
   /// Ductility demand: peak storey drift / yield drift Fy / k0 [-]; NaN when the building has
   /// no yield shears.
@@ -46,12 +48,18 @@ struct RowSimulation {
   std::vector<FloorResponse> floors;
   std::vector<SiteResponse> sites;
   RowResult pounding, free;  ///< the raw runs (histories when requested)
+  /// Per building: collapse in each run (issue 23; RowResult::collapse); empty without the
+  /// check. The pounding run stops at its first collapse.
+  std::vector<BuildingCollapse> collapse_pounding, collapse_free;
 };
 
 struct RowSimulationOptions {
   double extra_time = 0.0;      ///< free vibration after the record ends [s]
   bool record_history = false;  ///< keep time histories of both runs
   bool track_energy = false;    ///< energy balance of both runs (RowResult::energy)
+  /// A building whose storey drift ratio passes this (or whose storey fails under P-Delta) has
+  /// collapsed (RowProblem::collapse_drift_ratio); infinite: no check [-].
+  double collapse_drift_ratio = std::numeric_limits<double>::infinity();
 };
 
 /// The response measures of physics.md section 4 from a free and a pounding run of the same

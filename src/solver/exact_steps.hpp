@@ -44,6 +44,7 @@ class ExactSteps {
   /// this run's own).
   void enable(const AssembledRow& row, double h_max, double rec_dt, ExactStepCache* shared);
   bool enabled() const { return enabled_; }
+  void disable() { enabled_ = false; }
   double grid_step() const { return h_; }
   /// The last grid point at or before t [s] (advancing to it); whether t is on it.
   bool on_grid(double t) {

@@ -36,6 +36,7 @@ RowDynamics::RowDynamics(const AssembledRow& row, const std::vector<RowStorey>& 
   layout_.size = layout_.energies + (track_ ? 3 : 0);
   force_.setZero(ns_);
   scratch_.setZero(n_);
+  held_.assign(n_, 0);
 }
 
 void RowDynamics::rhs(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy) {
@@ -62,6 +63,9 @@ void RowDynamics::rhs(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy) {
     dv[site.dof_left] -= im[site.dof_left] * f;
     dv[site.dof_right] += im[site.dof_right] * f;
   }
+  if (any_held_)
+    for (int i = 0; i < n_; ++i)
+      if (held_[i]) du[i] = dv[i] = 0.0;
   if (track_) energy_rates(y, a_g, du + layout_.energies);
 }
 

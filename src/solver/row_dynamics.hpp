@@ -83,6 +83,13 @@ class RowDynamics {
     const RowStorey& st = storeys_[dof];
     return st.law->shear(st.p, storey[dof], drift(y, 0, dof), continuous_states(y, dof));
   }
+  /// Floor DOF i holds still from now on: no velocity or acceleration (a free run's collapsed
+  /// building; its velocity must be set to zero by the caller).
+  void hold(int i) {
+    held_[i] = 1;
+    any_held_ = true;
+  }
+  bool held(int i) const { return held_[i]; }
   /// After storey `dof` changed branch: the piecewise-linear forces' lines.
   void storey_changed(int dof);
   /// The stiffness of the linear or piecewise-linear right-hand side [N/m] and the offsets of
@@ -113,6 +120,8 @@ class RowDynamics {
   StateLayout layout_;
   const std::vector<const ContactLaw*>* laws_ = nullptr;
   const GroundMotion* motion_ = nullptr;
+  std::vector<char> held_;  // per DOF: held still (hold)
+  bool any_held_ = false;
   Eigen::VectorXd force_;            // contact force per site [N]
   mutable Eigen::VectorXd scratch_;  // damping forces C v [N] (energy rates)
   RowForces forces_;                 // internal forces of the floors

@@ -44,6 +44,21 @@ struct EnergyBalance {
   double residual() const { return input - (kinetic + strain + damping + hysteretic + contact); }
 };
 
+/// Why a building collapsed (issue 23).
+enum class CollapseCause {
+  none,
+  drift,          ///< a storey's drift ratio passed the collapse drift ratio
+  failed_storey,  ///< a storey lost all strength under its P-Delta load
+};
+
+/// Whether and where a building of the row collapsed in a run.
+struct BuildingCollapse {
+  bool collapsed = false;
+  double time = -1.0;  ///< [s]; -1 when standing
+  int storey = 0;      ///< 1-based storey of the building where it happened; 0 when standing
+  CollapseCause cause = CollapseCause::none;
+};
+
 struct RowResult {
   Eigen::VectorXd peak_disp;       ///< max |u| per floor DOF [m]
   Eigen::VectorXd peak_drift;      ///< max |u_j - u_{j-1}| per floor DOF (its storey) [m]
@@ -53,6 +68,12 @@ struct RowResult {
   EnergyBalance energy;               ///< when the run tracks it (else zeros)
   Eigen::VectorXd u_end, v_end;       ///< state at the end [m], [m/s]
   double t_end = 0.0;                 ///< time reached [s]
+  /// Per building (when the run checks collapse; else empty). A run with contacts stops at the
+  /// first collapse (`stopped`): every building's peaks are those up to then. A run without
+  /// contacts holds a collapsed building still and goes on with the others; its energy balance
+  /// is the one at its first collapse.
+  std::vector<BuildingCollapse> collapse;
+  bool stopped = false;  ///< ended at a collapse before the end of the run
   long steps = 0, rejected = 0, events = 0;
   long exact_steps = 0;  ///< of `steps`, exact steps of the linear system (linear_step.hpp)
   /// Of `steps`, those the pounding run shares with the free run (solve_free_and_pounding:

@@ -24,6 +24,7 @@ RowRun::RowRun(const RowProblem& p, const IntegratorSettings& s)
       dyn_(row_, storeys_, track_),
       switches_(row_, storeys_),
       rec_(row_, storeys_, !p.laws.empty(), p.record_history) {
+  rec_.set_collapse(storeys_, p.collapse_drift_ratio);
   if (!p.laws.empty() && static_cast<int>(p.laws.size()) != ns_)
     throw std::logic_error("one contact law per site expected");
   dyn_.set_contacts(&p.laws);
@@ -216,20 +217,69 @@ bool RowRun::separated() const {
   return true;
 }
 
+EnergyBalance RowRun::energy_now() const {
+  const StateLayout& at = dyn_.layout();
+  EnergyBalance e;
+  Eigen::VectorXd hysteretic;
+  const double strain = dyn_.storey_energies(y_, hysteretic);
+  for (int i = 0; i < n_; ++i) e.kinetic += 0.5 * std::pow(y_(n_ + i), 2) / row_.inv_mass(i);
+  e.strain = strain;
+  e.hysteretic = hysteretic.sum();
+  e.input = y_(at.energies);
+  e.damping = y_(at.energies + 1);
+  e.contact = y_(at.energies + 2);
+  return e;
+}
+
 void RowRun::finish() {
   const StateLayout& at = dyn_.layout();
   rec_.finish(t_, y_.head(n_), y_.segment(n_, n_));
   RowResult& r = rec_.result();
   for (int i = 0; i < ns_; ++i) r.sites[i].impulse = y_(at.impulses + i);
-  const double strain = dyn_.storey_energies(y_, r.hysteretic_energy);
+  dyn_.storey_energies(y_, r.hysteretic_energy);
   if (!track_) return;
-  EnergyBalance& e = r.energy;
-  for (int i = 0; i < n_; ++i) e.kinetic += 0.5 * std::pow(y_(n_ + i), 2) / row_.inv_mass(i);
-  e.strain = strain;
-  e.hysteretic = r.hysteretic_energy.sum();
-  e.input = y_(at.energies);
-  e.damping = y_(at.energies + 1);
-  e.contact = y_(at.energies + 2);
+  r.energy = energy_held_ ? held_energy_ : energy_now();
+}
+
+bool RowRun::on_collapse() {
+  RowResult& r = rec_.result();
+  if (dyn_.pounding()) {
+    r.stopped = true;
+    return true;
+  }
+  if (track_ && !energy_held_) {
+    held_energy_ = energy_now();
+    energy_held_ = true;
+  }
+  // The pounding run must stop at this collapse: if it has not forked yet, it is solved alone.
+  if (fork_armed_ && !fork_) {
+    fork_armed_ = false;
+    own_pounding_run_ = true;
+  }
+  bool all = true;
+  for (int b = 0; b < rec_.buildings(); ++b) {
+    if (!rec_.collapsed(b)) {
+      all = false;
+      continue;
+    }
+    rec_.hold(b);
+    for (int i = 0; i < n_; ++i)
+      if (rec_.held(i) && !dyn_.held(i)) {
+        dyn_.hold(i);
+        y_(n_ + i) = 0.0;
+      }
+  }
+  exact_.disable();  // the propagators would move the held floors
+  rhs(t_, y_, k1_);
+  if (all) r.stopped = true;
+  return all;
+}
+
+// A storey that failed (StoreyLaw::failed) under its P-Delta load collapses its building.
+void RowRun::check_failure(int dof, double t) {
+  const RowStorey& st = storeys_[dof];
+  if (st.kg > 0.0 && st.law->failed(st.p, dyn_.storey[dof]))
+    rec_.collapse(st.building, dof - row_.offset[st.building] + 1, t, CollapseCause::failed_storey);
 }
 
 RowResult RowRun::run() {
@@ -241,6 +291,7 @@ RowResult RowRun::advance() {
   const double t_end = p_->t_end;
   const bool events = switches_.any(dyn_);
   while (t_ < t_end * (1 - 1e-14)) {
+    if (rec_.take_new_collapses() > 0 && on_collapse()) break;
     exact_.begin_iteration();
     if (rec_.result().steps + rec_.result().rejected > s_.max_steps)
       throw NumericalError("more than " + std::to_string(s_.max_steps) +
@@ -313,7 +364,7 @@ void RowRun::record(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& d
 void RowRun::update_peaks(const Eigen::VectorXd& y0, const Eigen::VectorXd& y1,
                           const Eigen::VectorXd& dy0, const Eigen::VectorXd& dy1, double h) {
   if (fork_armed_ && !fork_) fork_if_near_contact(y0, y1, h);
-  rec_.peaks_over_step(y0, y1, dy0, dy1, h);
+  rec_.peaks_over_step(y0, y1, dy0, dy1, t_, h);
   const bool pounding = dyn_.pounding();
   for (int i = 0; i < ns_; ++i) {
     if (!dyn_.active[i]) continue;

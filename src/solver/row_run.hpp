@@ -35,6 +35,9 @@ class RowRun {
   const std::shared_ptr<RowRun>& fork() const { return fork_; }
   // Whether the fork was armed (every site open by more than kForkMargin at the start).
   bool fork_armed() const { return fork_armed_; }
+  // A free run that collapsed before its pounding run forked: the pounding run (which stops at
+  // the first collapse) must be solved on its own.
+  bool needs_own_pounding_run() const { return own_pounding_run_; }
 
  private:
   enum class Located { none, retry, applied };
@@ -77,6 +80,11 @@ class RowRun {
   double next_stop();
   void accept(double hs, double en, double t_stop);
   bool separated() const;
+  // After collapses: a run with contacts stops (true); a run without holds each collapsed
+  // building still and keeps its energy balance of the first collapse; true when all collapsed.
+  bool on_collapse();
+  void check_failure(int dof, double t);
+  EnergyBalance energy_now() const;
   void finish();
   void update_peaks(const Eigen::VectorXd& y0, const Eigen::VectorXd& y1,
                     const Eigen::VectorXd& dy0, const Eigen::VectorXd& dy1, double h);
@@ -111,6 +119,10 @@ class RowRun {
   const RowProblem* fork_to_ = nullptr;
   bool fork_armed_ = false;
   std::shared_ptr<RowRun> fork_;
+  bool own_pounding_run_ = false;
+  // The energy balance at a free run's first collapse (held buildings leave the balance).
+  bool energy_held_ = false;
+  EnergyBalance held_energy_;
 
   // Integration state: time, next step and largest step [s], record spacing [s], the fixed
   // grid's and the record's last points passed, the state y and its derivative k1, the trial

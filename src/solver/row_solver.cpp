@@ -21,7 +21,9 @@ RunPair solve_free_and_pounding(const RowProblem& p, const IntegratorSettings& s
   RunPair out;
   out.free = fs.run();
   if (pounding.laws.empty()) {
-    out.pounding = out.free;  // the same problem
+    out.pounding = out.free;                 // the same problem
+  } else if (fs.needs_own_pounding_run()) {  // the free run collapsed before the fork
+    out.pounding = RowRun(pounding, s).run();
   } else if (fs.fork()) {
     out.pounding = fs.fork()->advance();
   } else if (fs.fork_armed()) {  // no site came near touching: the runs are one

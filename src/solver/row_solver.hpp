@@ -7,6 +7,7 @@
 // stereomechanical model the velocity) is discontinuous. Steps also end on every sample of the
 // ground-motion record, where ag(t) has kinks. Kernel only: no files, no printing.
 #include <Eigen/Dense>
+#include <limits>
 #include <vector>
 
 #include "contact/contact_law.hpp"
@@ -31,6 +32,11 @@ struct RowProblem {
   bool stop_after_separation = false;
   /// Propagators shared with the other runs of this row (null: kept for this run only).
   ExactStepCache* exact_cache = nullptr;
+  /// Collapse (issue 23): a building whose storey drift ratio passes this, or one of whose
+  /// storeys fails (StoreyLaw::failed) under P-Delta, has collapsed. A run with contacts stops at
+  /// the first collapse; a run without holds the building still and goes on (RowResult::collapse).
+  /// Infinite: no check [-].
+  double collapse_drift_ratio = std::numeric_limits<double>::infinity();
 };
 
 /// Integrates the problem. Throws NumericalError on a non-finite state, step-size underflow or

@@ -50,13 +50,81 @@ RunRecorder::RunRecorder(const AssembledRow& row, const std::vector<RowStorey>& 
   for (const auto& s : row.sites) site_dofs_.emplace_back(s.dof_left, s.dof_right);
 }
 
+void RunRecorder::set_collapse(const std::vector<RowStorey>& storeys, double ratio) {
+  check_collapse_ = std::isfinite(ratio);
+  if (!check_collapse_) return;
+  collapse_drift_.assign(n_, 0.0);
+  last_drift_.assign(n_, 0.0);
+  building_.assign(n_, 0);
+  storey_no_.assign(n_, 1);
+  nb_ = 0;
+  for (int i = 0; i < n_; ++i) {
+    collapse_drift_[i] = ratio * storeys[i].p.h;
+    building_[i] = storeys[i].building;
+    storey_no_[i] = below_[i] >= 0 ? storey_no_[below_[i]] + 1 : 1;
+    nb_ = std::max(nb_, building_[i] + 1);
+  }
+}
+
 void RunRecorder::start(const Eigen::VectorXd& u0) {
+  r_.collapse.assign(check_collapse_ ? nb_ : 0, BuildingCollapse{});
+  r_.stopped = false;
+  new_collapses_ = 0;
+  held_.assign(n_, 0);
+  any_held_ = false;
+  for (int k = 0; k < n_ && check_collapse_; ++k)
+    last_drift_[k] = below_[k] >= 0 ? u0(k) - u0(below_[k]) : u0(k);
   r_.peak_disp.setZero(n_);
   r_.peak_drift.setZero(n_);
   r_.peak_abs_accel.setZero(n_);
   r_.sites.assign(ns_, SiteResult{});
   for (int s = 0; s < ns_ && !contacts_; ++s)
     r_.sites[s].peak_approach = u0(site_dofs_[s].first) - u0(site_dofs_[s].second);
+}
+
+void RunRecorder::collapse(int b, int storey, double t, CollapseCause cause) {
+  if (r_.collapse.empty() || r_.collapse[b].collapsed) return;
+  r_.collapse[b] = {true, t, storey, cause};
+  ++new_collapses_;
+}
+
+void RunRecorder::hold(int b) {
+  for (int k = 0; k < n_; ++k)
+    if (building_[k] == b) held_[k] = 1;
+  any_held_ = true;
+}
+
+void RunRecorder::sampled_collapse(int k, double d, double t, double h) {
+  const int b = building_[k];
+  if (collapsed(b)) return;
+  // |drift| passes the limit between the last sample d0 and d, linear between them.
+  const double d0 = last_drift_[k], lim = d > 0.0 ? collapse_drift_[k] : -collapse_drift_[k];
+  double th = 1.0;
+  if ((d - lim) * (d0 - lim) < 0.0) th = (lim - d0) / (d - d0);
+  collapse(b, storey_no_[k], t - h + th * h, CollapseCause::drift);
+}
+
+void RunRecorder::step_collapse(int k, const QuinticHermite& d, double t0, double h) {
+  const int b = building_[k];
+  if (collapsed(b)) return;
+  // The first theta in (0, 1] where |d(theta)| passes the limit (|d(0)| is below it: the peak
+  // was): a scan, then bisection.
+  const double lim = collapse_drift_[k];
+  auto over = [&](double th) { return std::fabs(d.at(th)) > lim; };
+  double lo = 0.0, hi = 1.0;
+  constexpr int kScan = 64;
+  for (int i = 1; i <= kScan; ++i) {
+    if (over(double(i) / kScan)) {
+      hi = double(i) / kScan;
+      break;
+    }
+    lo = double(i) / kScan;
+  }
+  for (int it = 0; it < 50; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    (over(mid) ? hi : lo) = mid;
+  }
+  collapse(b, storey_no_[k], t0 + hi * h, CollapseCause::drift);
 }
 
 void RunRecorder::history(double t, const Eigen::VectorXd& u, const Eigen::VectorXd& a_rel,

@@ -24,6 +24,9 @@ class RunRecorder {
   RunRecorder(const AssembledRow& row, const std::vector<RowStorey>& storeys, bool contacts,
               bool history);
 
+  /// Collapse (issue 23): a building whose storey drift passes ratio h (h = StoreyParameters::h
+  /// of each storey) has collapsed; infinite ratio: no check. Call before start().
+  void set_collapse(const std::vector<RowStorey>& storeys, double ratio);
   /// Zero peaks and sites; the free run's approach starts at the initial u_L - u_R [m].
   void start(const Eigen::VectorXd& u0);
   /// A free run forked into a run with contacts (solve_free_and_pounding): its sites start
@@ -37,28 +40,55 @@ class RunRecorder {
   const RowResult& result() const { return r_; }
 
   // --- Floors ------------------------------------------------------------------------------
-  /// Peak absolute accelerations from the relative ones a_rel [m/s^2] and the ground's ag.
+  /// Peak absolute accelerations from the relative ones a_rel [m/s^2] and the ground's ag
+  /// (held buildings excepted).
   void accel_peaks(const double* a_rel, double ag) {
     for (int i = 0; i < n_; ++i) {
+      if (any_held_ && held_[i]) continue;
       const double a = a_rel[i] + ag;
       r_.peak_abs_accel(i) = std::max(r_.peak_abs_accel(i), std::fabs(a));
     }
   }
   /// Peak displacements and storey drifts [m] and absolute accelerations (from the relative
-  /// ones a_rel and the ground's ag [m/s^2]) sampled at the end of a step.
-  void sampled_peaks(const Eigen::VectorXd& u, const double* a_rel, double ag) {
+  /// ones a_rel and the ground's ag [m/s^2]) sampled at the end t [s] of a step of h [s]; a
+  /// storey past its collapse drift collapses its building at the time its drift, linear over
+  /// the step, passed it.
+  void sampled_peaks(const Eigen::VectorXd& u, const double* a_rel, double ag, double t, double h) {
     for (int k = 0; k < n_; ++k) {
+      if (any_held_ && held_[k]) continue;
       const int b = below_[k];
-      const double a = a_rel[k] + ag;
+      const double a = a_rel[k] + ag, d = b >= 0 ? u(k) - u(b) : u(k);
       r_.peak_disp(k) = std::max(r_.peak_disp(k), std::fabs(u(k)));
-      r_.peak_drift(k) = std::max(r_.peak_drift(k), std::fabs(b >= 0 ? u(k) - u(b) : u(k)));
+      r_.peak_drift(k) = std::max(r_.peak_drift(k), std::fabs(d));
       r_.peak_abs_accel(k) = std::max(r_.peak_abs_accel(k), std::fabs(a));
+      if (check_collapse_) {
+        if (std::fabs(d) > collapse_drift_[k]) sampled_collapse(k, d, t, h);
+        last_drift_[k] = d;
+      }
     }
   }
-  /// Peak displacements and storey drifts over a step of length h [s] from the quintic Hermite
-  /// interpolant of y = [u; v] and dy = [v; u''] at both ends (sixth-order accurate).
+  /// Peak displacements and storey drifts over the step from t0 of length h [s] from the
+  /// quintic Hermite interpolant of y = [u; v] and dy = [v; u''] at both ends (sixth-order
+  /// accurate); a storey past its collapse drift collapses its building where the interpolant
+  /// passes it.
   void peaks_over_step(const Eigen::VectorXd& y0, const Eigen::VectorXd& y1,
-                       const Eigen::VectorXd& dy0, const Eigen::VectorXd& dy1, double h);
+                       const Eigen::VectorXd& dy0, const Eigen::VectorXd& dy1, double t0, double h);
+
+  // --- Collapse ------------------------------------------------------------------------------
+  /// Building b collapsed at storey (1-based) at time t [s], unless it had before.
+  void collapse(int b, int storey, double t, CollapseCause cause);
+  /// Collapses recorded since the last call (and forgets them).
+  int take_new_collapses() {
+    const int n = new_collapses_;
+    new_collapses_ = 0;
+    return n;
+  }
+  bool collapsed(int b) const { return !r_.collapse.empty() && r_.collapse[b].collapsed; }
+  int buildings() const { return nb_; }
+  /// From now on building b's DOFs hold still: no peak changes there (a free run's collapsed
+  /// building).
+  void hold(int b);
+  bool held(int dof) const { return any_held_ && held_[dof]; }
 
   // --- Contact sites -------------------------------------------------------------------------
   /// A contact phase starts at site s at time t [s].
@@ -101,6 +131,11 @@ class RunRecorder {
 
  private:
   [[noreturn]] static void throw_non_finite(double t, const char* what);
+  // Collapse at the step end t of a step of h at storey k whose drift went from last_drift_[k]
+  // to d (linear between).
+  void sampled_collapse(int k, double d, double t, double h);
+  // Collapse inside a step from t0 of h at storey k, d the quintic of its drift.
+  void step_collapse(int k, const QuinticHermite& d, double t0, double h);
   // QuinticHermite::absmax_bound() of every floor's displacement (out[i]) and storey drift
   // (out[n + i]) over a step (run_recorder.cpp).
   static void peak_bounds(int n, const double* u0, const double* u1, const double* v0,
@@ -113,13 +148,21 @@ class RunRecorder {
   std::vector<double> weight_;  // per DOF: 1 where its storey stands on a floor, 0 on the ground
   std::vector<double> bounds_;  // scratch of peaks_over_step (peak_bounds)
   std::vector<std::pair<int, int>> site_dofs_;  // per site: left and right floor DOF
+  // Collapse: per DOF its storey's collapse drift [m] (infinite: none), building, storey number
+  // within it, and the drift at the last sample [m]; the buildings held still.
+  bool check_collapse_ = false;
+  int nb_ = 0, new_collapses_ = 0;
+  std::vector<double> collapse_drift_, last_drift_;
+  std::vector<int> building_, storey_no_;
+  bool any_held_ = false;
+  std::vector<char> held_;
   RowResult r_;
 };
 
 // Defined here so that the solvers inline it into their steps.
 inline void RunRecorder::peaks_over_step(const Eigen::VectorXd& y0, const Eigen::VectorXd& y1,
                                          const Eigen::VectorXd& dy0, const Eigen::VectorXd& dy1,
-                                         double h) {
+                                         double t0, double h) {
   // Displacement and drift extrema inside the step from the quintic Hermite interpolant of the
   // displacements, velocities and accelerations at both ends (sixth-order accurate: exact steps
   // of h_max = T_min / 20 leave the peaks within 1e-8 of the motion between them).
@@ -137,6 +180,7 @@ inline void RunRecorder::peaks_over_step(const Eigen::VectorXd& y0, const Eigen:
     const int b = below_[i];
     if (b < 0) {  // a first storey: its drift is the floor's displacement
       r_.peak_drift(i) = r_.peak_disp(i);
+      if (check_collapse_ && r_.peak_drift(i) > collapse_drift_[i]) step_collapse(i, c, t0, h);
       continue;
     }
     if (!drift) continue;
@@ -148,6 +192,7 @@ inline void RunRecorder::peaks_over_step(const Eigen::VectorXd& y0, const Eigen:
     d.c0 -= h2 * dy0(n + b);
     d.c1 -= h2 * dy1(n + b);
     r_.peak_drift(i) = d.refine_peak(r_.peak_drift(i));
+    if (check_collapse_ && r_.peak_drift(i) > collapse_drift_[i]) step_collapse(i, d, t0, h);
   }
 }
 
