@@ -1,6 +1,7 @@
 // pound campaign: the Monte Carlo campaign over MPI ranks (mpirun -np N pound campaign ...).
 #include <mpi.h>
 #include <sys/stat.h>
+#include <sysexits.h>
 
 #include <cmath>
 #include <cstdio>
@@ -15,6 +16,21 @@
 
 namespace pound::app {
 namespace {
+
+// The exit status of `pound campaign`, for scripts and job chains (README, docs/campaign.md,
+// slurm/README.md).
+enum CampaignExit : int {
+  kFinished = 0,           ///< RUN.h5 complete (or already complete), every sample ok
+  kBadInput = 2,           ///< bad input, or a file that cannot be written for another reason
+  kFailedSamples = 4,      ///< RUN.h5 complete, some samples failed (their messages are in it)
+  kStopped = EX_TEMPFAIL,  ///< 75: stopped early (signal, full disk), journal kept: resume
+};
+
+const char* const kExitStatusHelp =
+    "\nExit status: 0 finished (RUN.h5 complete, or already complete); 2 bad input, or a file\n"
+    "that cannot be written (read-only, no permission: the journal is kept); 4 finished with\n"
+    "failed samples (their messages are in RUN.h5); 75 (EX_TEMPFAIL) stopped early by\n"
+    "SIGTERM, SIGUSR1, SIGINT or a full disk, the journal kept: run again with --resume.\n";
 
 bool exists(const std::string& p) {
   struct stat s;
@@ -158,12 +174,12 @@ int run_campaign(int argc, const char* const* argv) {
   int bad = error.empty() ? 0 : 1, any_bad = 0;
   MPI_Allreduce(&bad, &any_bad, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
   if (any_bad || help) {
-    if (rank == 0 && help) std::cout << opt.help_text();
+    if (rank == 0 && help) std::cout << opt.help_text() << kExitStatusHelp;
     if (rank == 0 && !help)
       std::cerr << "pound campaign: error: "
                 << (error.empty() ? "a rank failed to read the study" : error) << "\n";
     MPI_Finalize();
-    return help ? 0 : 2;
+    return help ? kFinished : kBadInput;
   }
   const std::string out = opt.get_string("out");
   if (rank == 0) error = check_output(out, opt.flag("resume"), opt.flag("force"), &complete);
@@ -173,7 +189,7 @@ int run_campaign(int argc, const char* const* argv) {
     if (rank == 0 && state[0]) std::cerr << "pound campaign: error: " << error << "\n";
     if (rank == 0 && state[1]) std::cerr << "campaign: " << out << " is already complete\n";
     MPI_Finalize();
-    return state[0] ? 2 : 0;
+    return state[0] ? kBadInput : kFinished;
   }
   if (rank == 0) {
     std::fprintf(stderr,
@@ -207,9 +223,8 @@ int run_campaign(int argc, const char* const* argv) {
   } catch (const std::exception& e) {
     if (rank == 0) std::cerr << "pound campaign: error: " << e.what() << "\n";
     MPI_Finalize();
-    return 2;
+    return kBadInput;
   }
-  int code = 0;
   if (rank == 0) {
     if (sum.interrupted && !sum.stop_reason.empty()) {
       std::fprintf(stderr,
@@ -231,7 +246,9 @@ int run_campaign(int argc, const char* const* argv) {
                    sum.done, sum.failed, out.c_str(), sum.peak_rss_mb);
     }
   }
-  if (!sum.interrupted && sum.failed > 0) code = 4;
+  // Every rank returns the same status (the summary is shared): a stop before the end is
+  // 75 whatever failed so far, since the run is not finished.
+  const int code = sum.interrupted ? kStopped : sum.failed > 0 ? kFailedSamples : kFinished;
   MPI_Finalize();
   return code;
 }

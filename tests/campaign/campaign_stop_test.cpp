@@ -127,7 +127,7 @@ TEST(CampaignStop, SigtermWhileTheRankStartsStopsCleanlyAndResumes) {
     int status = 0;
     ::waitpid(pid, &status, 0);
     ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << WTERMSIG(status);
-    EXPECT_EQ(WEXITSTATUS(status), 0) << slurp(log);
+    EXPECT_EQ(WEXITSTATUS(status), 75) << slurp(log);  // stopped, resumable (EX_TEMPFAIL)
     EXPECT_NE(slurp(log).find("campaign: interrupted after"), std::string::npos) << slurp(log);
     EXPECT_TRUE(fs::exists(cut + ".journal"));
     expect_no_result(cut);
@@ -170,7 +170,7 @@ TEST(CampaignStop, AFullDiskStopsTheJournalWithTheReasonAndTheResumeGivesTheWhol
   const std::string d = dir() + "/full-journal", ref = dir() + "/full-ref.h5";
   ASSERT_EQ(run(pound("--samples 160 --out " + ref), dir() + "/ref.log"), 0);
   run_on_a_full_disk(d, 40, 160);
-  EXPECT_EQ(slurp(d + "/first.status"), "0\n");  // as a SIGTERM stop
+  EXPECT_EQ(slurp(d + "/first.status"), "75\n");  // as a SIGTERM stop
   const std::string msg = slurp(d + "/first.log");
   for (const std::string& part : std::vector<std::string>{
            d + "/disk/run.h5.journal: cannot write the campaign journal (No space left on device)",
@@ -189,7 +189,7 @@ TEST(CampaignStop, AFullDiskAtTheResultFileKeepsTheJournalAndTheResumeWritesIt) 
   ASSERT_EQ(run(pound("--samples 24 --out " + ref), dir() + "/ref.log"), 0);
   ASSERT_GT(fs::file_size(ref), 16384u);
   run_on_a_full_disk(d, 32, 24);
-  EXPECT_EQ(slurp(d + "/first.status"), "0\n");
+  EXPECT_EQ(slurp(d + "/first.status"), "75\n");
   const std::string msg = slurp(d + "/first.log");
   for (const std::string part :
        {"campaign: stopped after 24 of 24 samples (0 failed): ", "cannot write the HDF5 file",
@@ -202,7 +202,7 @@ TEST(CampaignStop, AFullDiskAtTheResultFileKeepsTheJournalAndTheResumeWritesIt) 
 
 // A journal that cannot be written for another reason than space would fail again on every
 // resume: the job must end with an error (exit 2, which the Slurm scripts pass on) instead of
-// a stop that says "free some space" and exits 0 (which they turn into 75, "submit again").
+// a stop that says "free some space" and exits 75 ("submit again").
 // Here a journal left by a full disk is resumed on the same tmpfs remounted read-only
 // (EROFS, which a run as root meets too); the journal stays whole, and the resume once the
 // file system is writable again gives the uninterrupted file.
@@ -221,7 +221,7 @@ TEST(CampaignStop, AReadOnlyJournalIsAnErrorAndStaysForALaterResume) {
              "/disk || exit 92\n" + cmd + " --resume 2>" + d + "/second.log; echo $? >" + d +
              "/second.status\n" + "cp " + d + "/disk/run.h5 " + d + "/run.h5\n");
   if (HasFatalFailure()) return;
-  ASSERT_EQ(slurp(d + "/first.status"), "0\n") << slurp(d + "/first.log");  // the full disk
+  ASSERT_EQ(slurp(d + "/first.status"), "75\n") << slurp(d + "/first.log");  // the full disk
   EXPECT_EQ(slurp(d + "/ro.status"), "2\n") << slurp(d + "/ro.log");
   const std::string msg = slurp(d + "/ro.log");
   const std::string want = "pound campaign: error: " + d +
