@@ -1,5 +1,5 @@
 // Issue 13: what one sample costs the campaign master. Rank 0 runs the real master loop
-// (src/campaign/mpi_campaign.cpp: receive a message of outcomes, append it to the journal and
+// (src/campaign/campaign_master.cpp: receive a message of outcomes, append it to the journal and
 // flush, book each outcome, hand out the next batch) in schedule-only mode, while every other
 // rank answers each sample at once with a ready-made outcome of the study (the real record
 // size), so the master is driven as fast as it can take outcomes. For each batch size it
