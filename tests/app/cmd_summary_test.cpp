@@ -16,8 +16,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// The files of this test file, apart from the other command tests of tests/app.
 const std::string& dir() {
-  return pound::test::process_scratch_dir().path();
+  static const std::string d = pound::test::process_scratch_subdir("summary");
+  return d;
 }
 
 int sh(const std::string& cmd) {
