@@ -21,6 +21,7 @@
 #include "campaign/journal.hpp"
 #include "campaign/mpi_campaign.hpp"
 #include "campaign/sample.hpp"
+#include "contact/registry.hpp"
 #include "io/options.hpp"
 
 namespace {
@@ -61,7 +62,7 @@ int main(int argc, char** argv) {
   int n_lumped = 0, n_sears = 0;
   if (rank == 0) {
     for (long id = 0; id < 48; ++id) {
-      const bool sears = runner.draw(id).model == "sears";
+      const bool sears = is_sears_model(runner.draw(id).model);
       const double c0 = cpu_seconds();
       runner.run(id);
       (sears ? t_sears : t_lumped) += cpu_seconds() - c0;
