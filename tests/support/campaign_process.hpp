@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "scratch_dir.hpp"
+#include "shell.hpp"
 
 namespace pound::test {
 
@@ -30,11 +31,6 @@ inline const std::string& campaign_dir() {
 /// `pound campaign` of the smoke study, quiet, with these further arguments.
 inline std::string campaign_command(const std::string& args) {
   return std::string(POUND_BINARY) + " campaign --config " + kSmokeStudy + " --quiet " + args;
-}
-
-inline std::string slurp(const std::string& path) {
-  std::ifstream in(path);
-  return std::string((std::istreambuf_iterator<char>(in)), {});
 }
 
 /// Runs `cmd` through sh with stderr to `log` (sh -c 'exec CMD 2>LOG'). Returns the wait status.
