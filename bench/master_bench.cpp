@@ -1,5 +1,5 @@
 // Issue 13: what one sample costs the campaign master. Rank 0 runs the real master loop
-// (src/campaign/mpi_campaign.cpp: receive a message of outcomes, append it to the journal and
+// (src/campaign/campaign_master.cpp: receive a message of outcomes, append it to the journal and
 // flush, book each outcome, hand out the next batch) in schedule-only mode, while every other
 // rank answers each sample at once with a ready-made outcome of the study (the real record
 // size), so the master is driven as fast as it can take outcomes. For each batch size it
@@ -21,6 +21,7 @@
 #include "campaign/journal.hpp"
 #include "campaign/mpi_campaign.hpp"
 #include "campaign/sample.hpp"
+#include "contact/registry.hpp"
 #include "io/options.hpp"
 
 namespace {
@@ -61,7 +62,7 @@ int main(int argc, char** argv) {
   int n_lumped = 0, n_sears = 0;
   if (rank == 0) {
     for (long id = 0; id < 48; ++id) {
-      const bool sears = runner.draw(id).model == "sears";
+      const bool sears = is_sears_model(runner.draw(id).model);
       const double c0 = cpu_seconds();
       runner.run(id);
       (sears ? t_sears : t_lumped) += cpu_seconds() - c0;

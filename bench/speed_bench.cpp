@@ -29,6 +29,7 @@
 
 #include "campaign/campaign_study.hpp"
 #include "campaign/sample.hpp"
+#include "contact/registry.hpp"
 #include "io/options.hpp"
 #include "motion/simqke.hpp"
 #include "motion/spectral_variability.hpp"
@@ -298,7 +299,7 @@ void inelastic_case(const std::string& src, long samples) {
     const Timing tf = time_it([&] { of = run_f.run(id); }, 1);
     const Timing tm = time_it([&] { gen.generate(run_i.draw(id).motion_seed, 0); }, 3);
     const std::string model = run_i.draw(id).model;
-    Sum& sum = sums[model == "sears" ? 0 : 1];
+    Sum& sum = sums[is_sears_model(model) ? 0 : 1];
     ++sum.n;
     sum.inel += ti.cpu_s;
     sum.el += te.cpu_s;
@@ -387,7 +388,7 @@ void samples_case(const std::string& src, long samples, int repeat, const std::s
                     : gen.generate(d.motion_seed, 0, var.ln_factor(d.spectral_epsilon));
           },
           repeat);
-      Sum& m = sums[d.model == "sears" ? 0 : 1];
+      Sum& m = sums[is_sears_model(d.model) ? 0 : 1];
       ++m.n;
       m.sample += ts.cpu_s;
       m.motion += tm.cpu_s;
@@ -559,7 +560,7 @@ int main(int argc, char** argv) {
     t_cf.cpu_s += b.cpu_s;
     t_cf.wall_s += b.wall_s;
     const std::string model = run_e.draw(id).model;
-    if (model == "sears") {
+    if (is_sears_model(model)) {
       ++models_sears;
       cpu_sears += a.cpu_s;
       max_sears = std::max(max_sears, a.cpu_s);

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "campaign/campaign_study.hpp"
+#include "contact/registry.hpp"
 #include "core/error.hpp"
 #include "fuzz_support.hpp"
 #include "io/options.hpp"
@@ -68,7 +69,7 @@ std::string with_args(std::string ini, std::initializer_list<const char*> args) 
 void resolve_simulate(const Options& o) {
   const BuildingRow row = row_from_options(o);
   integrator_from_options(o);
-  if (o.get_string("contact.model") == "sears")
+  if (is_sears_model(o.get_string("contact.model")))
     sears_row_from_options(o, row);
   else
     contact_from_options(o, row);

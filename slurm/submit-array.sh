@@ -6,9 +6,12 @@
 # e.g.  slurm/submit-array.sh --ntasks=32 --time=02:00:00 -- 16 studies/fragility-default.ini \
 #           frag.h5 --samples 400000
 #
-# Prints "ARRAYJOBID MERGEJOBID" on stdout. Running the same command again after some chunks
-# stopped early (time limit) or failed resumes them: finished chunks end at once, the others
-# continue from their journals, and a new merge job follows.
+# Prints "ARRAYJOBID MERGEJOBID" on stdout. Each chunk job exits with pound campaign's status
+# (0 complete, 4 complete with failed samples, 75 stopped early with its journal kept, else an
+# error); the merge runs only when every chunk exited 0 (afterok), otherwise Slurm cancels it.
+# Running the same command again after some chunks stopped early (time limit) or failed
+# resumes them: finished chunks end at once (exit 0), the others continue from their journals,
+# and a new merge job follows.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 
@@ -18,7 +21,7 @@ if [[ " $* " == *" -- "* ]]; then
   shift
 fi
 if [[ $# -lt 3 ]]; then
-  sed -n '2,11p' "$0" >&2
+  sed -n '2,14p' "$0" >&2
   exit 2
 fi
 chunks=$1

@@ -8,7 +8,8 @@
 # used or changed), submits the real scripts on a small study and checks:
 #   1. campaign.sbatch (srun --mpi=pmix) runs a campaign to completion (the reference);
 #   2. a campaign.sbatch job with a time limit shorter than the campaign (--time=1 with
-#      --signal=B:USR1@58) is stopped by Slurm's signal, keeps its journal and exits 75
+#      --signal=B:USR1@58) is stopped by Slurm's signal, keeps its journal and exits 75, the
+#      exit status of pound campaign itself, which the script passes on
 #      (Slurm may send the signal in the job's first second: the script passes it on once
 #      the campaign reports its start, so the outcome does not depend on the machine's speed);
 #      campaign-mpirun.sbatch resumes it and is stopped again with
@@ -275,9 +276,11 @@ expect_job "$b" FAILED 75:0 "$J/cut-1.out"
 excerpt "$J/cut-1.out"
 grep -q "received SIGUSR1" "$J/cut-1.out" && grep -q "campaign: interrupted after" "$J/cut-1.out" \
   || { show_log "$J/cut-1.out"; die "job $b did not stop on SIGUSR1"; }
+grep -q "the campaign stopped early (exit status 75)" "$J/cut-1.out" \
+  || { show_log "$J/cut-1.out"; die "job $b: pound campaign itself did not exit 75"; }
 grep -q "DUE TO TIME LIMIT" "$J/cut-1.out" && { show_log "$J/cut-1.out"; die "job $b reached its time limit"; }
 [[ -f "$cut.journal" && ! -e "$cut" ]] || die "job $b: expected the journal and no result file"
-ok "job $b stopped on Slurm's SIGUSR1 before its time limit: $(grep -o 'interrupted after [0-9]* of [0-9]* samples' "$J/cut-1.out"), exit 75, journal kept (RunTime $(job_field "$b" RunTime))"
+ok "job $b stopped on Slurm's SIGUSR1 before its time limit: $(grep -o 'interrupted after [0-9]* of [0-9]* samples' "$J/cut-1.out"), pound campaign and the job exit 75, journal kept (RunTime $(job_field "$b" RunTime))"
 
 c=$(submit --nodes=1 --ntasks-per-node=2 --time=10 -o "$J/cut-2.out" \
   slurm/campaign-mpirun.sbatch "$study" "$cut" --samples "$samples")
@@ -297,7 +300,9 @@ excerpt "$J/cut-2.out"
 grep -q "found .* resuming" "$J/cut-2.out" && grep -q "(resuming)" "$J/cut-2.out" \
   && grep -q "received SIGUSR1" "$J/cut-2.out" && grep -q "campaign: interrupted after" "$J/cut-2.out" \
   || { show_log "$J/cut-2.out"; die "job $c did not resume and stop on SIGUSR1"; }
-ok "job $c (mpirun) resumed the journal and stopped on scancel --signal=USR1 --batch: $(grep -o 'interrupted after [0-9]* of [0-9]* samples' "$J/cut-2.out"), exit 75"
+grep -q "the campaign stopped early (exit status 75)" "$J/cut-2.out" \
+  || { show_log "$J/cut-2.out"; die "job $c: pound campaign (under mpirun) did not exit 75"; }
+ok "job $c (mpirun) resumed the journal and stopped on scancel --signal=USR1 --batch: $(grep -o 'interrupted after [0-9]* of [0-9]* samples' "$J/cut-2.out"), pound campaign and the job exit 75"
 
 done2=$(grep -o 'interrupted after [0-9]*' "$J/cut-2.out" | grep -o '[0-9]*$')
 jinfo=$("$PY" "$parts_py" journal "$cut.journal") || die "journal of the stopped campaign: $jinfo"

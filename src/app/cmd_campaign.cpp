@@ -1,12 +1,14 @@
 // pound campaign: the Monte Carlo campaign over MPI ranks (mpirun -np N pound campaign ...).
 #include <mpi.h>
 #include <sys/stat.h>
+#include <sysexits.h>
 
 #include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "app/commands.hpp"
 #include "campaign/campaign_study.hpp"
@@ -16,12 +18,26 @@
 namespace pound::app {
 namespace {
 
+// The exit status of `pound campaign`, for scripts and job chains (README, docs/campaign.md,
+// slurm/README.md).
+enum CampaignExit : int {
+  kFinished = 0,           ///< RUN.h5 complete (or already complete), every sample ok
+  kBadInput = 2,           ///< bad input, or a file that cannot be written for another reason
+  kFailedSamples = 4,      ///< RUN.h5 complete, some samples failed (their messages are in it)
+  kStopped = EX_TEMPFAIL,  ///< 75: stopped early (signal, full disk), journal kept: resume
+};
+
+const char* const kExitStatusHelp =
+    "\nExit status: 0 finished (RUN.h5 complete, or already complete); 2 bad input, or a file\n"
+    "that cannot be written (read-only, no permission: the journal is kept); 4 finished with\n"
+    "failed samples (their messages are in RUN.h5); 75 (EX_TEMPFAIL) stopped early by\n"
+    "SIGTERM, SIGUSR1, SIGINT or a full disk, the journal kept: run again with --resume.\n";
+
 bool exists(const std::string& p) {
   struct stat s;
   return ::stat(p.c_str(), &s) == 0;
 }
 
-// Checks of the output file made by rank 0 before anything runs. Returns "" or an error.
 // "A<sep>B" of two whole numbers (--sample-range LO:HI, --chunk K/C); {-1, -1} when the text
 // has no separator or a part is not a whole number, which the callers' range checks reject
 // with the message saying what is valid.
@@ -41,6 +57,8 @@ std::pair<long, long> whole_number_pair(const Options& opt, const std::string& k
   return {static_cast<long>(a), static_cast<long>(b)};
 }
 
+// Checks of the output file made by rank 0 before anything runs. Returns "" or an error;
+// *complete when --resume finds RUN.h5 complete already.
 std::string check_output(const std::string& out, bool resume, bool force, bool* complete) {
   const std::string journal = out + ".journal";
   *complete = false;
@@ -91,16 +109,8 @@ void announce_start(const std::string& path) {
     std::fprintf(stderr, "campaign: warning: cannot create the started file %s\n", path.c_str());
 }
 
-}  // namespace
-
-int run_campaign(int argc, const char* const* argv) {
-  // Before MPI start-up: a stop request that comes while the ranks start (srun passing on
-  // Slurm's signal in the job's first second) is kept, and honoured once the campaign runs.
-  install_stop_handlers();
-  MPI_Init(nullptr, nullptr);
-  int rank = 0, size = 1;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  MPI_Comm_size(MPI_COMM_WORLD, &size);
+// Every option of pound campaign: the study's keys and the run's own.
+std::vector<OptionSpec> campaign_command_specs() {
   auto specs = campaign_option_specs();
   specs.push_back({"out", "", "", "result file (HDF5); its journal is OUT.journal"});
   specs.push_back({"samples", "-", "", "number of samples (overrides campaign.samples)"});
@@ -116,56 +126,129 @@ int run_campaign(int argc, const char* const* argv) {
   specs.push_back({"started-file", "", "",
                    "FILE that rank 0 creates once every rank runs and honours stop signals (job "
                    "scripts wait for it before passing a signal on)"});
+  return specs;
+}
+
+// --sample-range LO:HI or --chunk K/C: the ids this run simulates.
+void read_sample_range(const Options& opt, CampaignStudy& study) {
+  if (opt.given("sample-range")) {
+    const auto [lo, hi] = whole_number_pair(opt, "sample-range", ':');
+    if (!(lo >= 0 && hi > lo && hi <= study.samples))
+      throw opt.invalid("sample-range", "valid: LO:HI with 0 <= LO < HI <= " +
+                                            std::to_string(study.samples) + " (the sample count)");
+    study.range_lo = lo;
+    study.range_hi = hi;
+  }
+  if (opt.given("chunk")) {
+    if (opt.given("sample-range")) throw opt.invalid("chunk", "give --chunk or --sample-range");
+    const auto [k, c] = whole_number_pair(opt, "chunk", '/');
+    if (!(c >= 1 && c <= study.samples && k >= 0 && k < c))
+      throw opt.invalid("chunk", "valid: K/C with C chunks, 1 <= C <= samples, 0 <= K < C");
+    study.range_lo = k * study.samples / c;
+    study.range_hi = (k + 1) * study.samples / c;
+  }
+}
+
+// The study of a parsed command line (not --help): --out, --samples, --seed, the study keys
+// and the sample range. Throws InputError naming the key.
+CampaignStudy read_study(const Options& opt) {
+  if (!opt.given("out")) throw InputError("command line: --out RUN.h5 is required");
+  const long samples = opt.given("samples") ? opt.get_int("samples") : 0;
+  if (opt.given("samples") && samples < 1) throw opt.invalid("samples", "valid: >= 1");
+  const long seed = opt.given("seed") ? opt.get_int("seed") : -1;
+  if (opt.given("seed") && seed < 0) throw opt.invalid("seed", "valid: >= 0");
+  CampaignStudy study = campaign_from_options(opt, samples, seed);
+  read_sample_range(opt, study);
+  return study;
+}
+
+// Rank 0, before the run: the sample count, ranks, seed, range and the resolved study.
+void echo_start(const CampaignStudy& study, const Options& opt, int size) {
+  std::fprintf(stderr, "campaign: %ld samples on %d rank%s, seed %llu, %zu sampled parameter%s%s\n",
+               study.samples, size, size == 1 ? "" : "s",
+               static_cast<unsigned long long>(study.seed), study.parameters.size(),
+               study.parameters.size() == 1 ? "" : "s", opt.flag("resume") ? " (resuming)" : "");
+  if (opt.given("chunk"))
+    std::fprintf(stderr, "campaign: chunk %s = samples [%ld, %ld) of %ld\n",
+                 opt.get_string("chunk").c_str(), study.range_lo, study.range_hi, study.samples);
+  else if (opt.given("sample-range"))
+    std::fprintf(stderr, "campaign: samples [%ld, %ld) of %ld\n", study.range_lo, study.range_hi,
+                 study.samples);
+  std::fprintf(stderr, "campaign: resolved study:\n");
+  const std::string& text = study.resolved;
+  std::size_t p = 0;
+  while (p < text.size()) {
+    const auto e = text.find('\n', p);
+    std::fprintf(stderr, "  %s\n", text.substr(p, e - p).c_str());
+    p = e == std::string::npos ? text.size() : e + 1;
+  }
+}
+
+// Rank 0, after the run: how it ended, and how to resume a stopped one.
+void report_end(const CampaignSummary& sum, const std::string& out, const std::string& resume) {
+  if (sum.interrupted && !sum.stop_reason.empty()) {
+    std::fprintf(stderr,
+                 "campaign: stopped after %ld of %ld samples (%ld failed): %s. The journal "
+                 "%s.journal keeps them; free some space (or raise the file size limit) and "
+                 "resume with: %s --resume\n",
+                 sum.done, sum.total, sum.failed, sum.stop_reason.c_str(), out.c_str(),
+                 resume.c_str());
+  } else if (sum.interrupted) {
+    std::fprintf(stderr,
+                 "campaign: interrupted after %ld of %ld samples (%ld failed); the journal "
+                 "%s.journal keeps them. Resume with: %s --resume\n",
+                 sum.done, sum.total, sum.failed, out.c_str(), resume.c_str());
+  } else {
+    std::fprintf(stderr,
+                 "campaign: done: %ld samples, %ld failed, written to %s (peak memory per "
+                 "rank %.1f MB)\n",
+                 sum.done, sum.failed, out.c_str(), sum.peak_rss_mb);
+  }
+}
+
+// Every rank returns the same status (the summary is shared): a stop before the end is 75
+// whatever failed so far, since the run is not finished.
+int exit_status(const CampaignSummary& sum) {
+  return sum.interrupted ? kStopped : sum.failed > 0 ? kFailedSamples : kFinished;
+}
+
+}  // namespace
+
+int run_campaign(int argc, const char* const* argv) {
+  // Before MPI start-up: a stop request that comes while the ranks start (srun passing on
+  // Slurm's signal in the job's first second) is kept, and honoured once the campaign runs.
+  install_stop_handlers();
+  MPI_Init(nullptr, nullptr);
+  int rank = 0, size = 1;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  MPI_Comm_size(MPI_COMM_WORLD, &size);
   Options opt("campaign",
               "Monte Carlo campaign: samples of buildings in a row with and without pounding, "
               "spread over MPI ranks (mpirun -np N pound campaign ...).",
-              specs);
+              campaign_command_specs());
   // Everything is checked on every rank before any rank simulates; rank 0 reports.
   std::string error;
   CampaignStudy study;
-  bool complete = false, help = false;
+  bool help = false;
   try {
     opt.parse(argc, argv);
     help = opt.help_requested();
-    if (!help) {
-      if (!opt.given("out")) throw InputError("command line: --out RUN.h5 is required");
-      const long samples = opt.given("samples") ? opt.get_int("samples") : 0;
-      if (opt.given("samples") && samples < 1) throw opt.invalid("samples", "valid: >= 1");
-      const long seed = opt.given("seed") ? opt.get_int("seed") : -1;
-      if (opt.given("seed") && seed < 0) throw opt.invalid("seed", "valid: >= 0");
-      study = campaign_from_options(opt, samples, seed);
-      if (opt.given("sample-range")) {
-        const auto [lo, hi] = whole_number_pair(opt, "sample-range", ':');
-        if (!(lo >= 0 && hi > lo && hi <= study.samples))
-          throw opt.invalid("sample-range",
-                            "valid: LO:HI with 0 <= LO < HI <= " + std::to_string(study.samples) +
-                                " (the sample count)");
-        study.range_lo = lo;
-        study.range_hi = hi;
-      }
-      if (opt.given("chunk")) {
-        if (opt.given("sample-range")) throw opt.invalid("chunk", "give --chunk or --sample-range");
-        const auto [k, c] = whole_number_pair(opt, "chunk", '/');
-        if (!(c >= 1 && c <= study.samples && k >= 0 && k < c))
-          throw opt.invalid("chunk", "valid: K/C with C chunks, 1 <= C <= samples, 0 <= K < C");
-        study.range_lo = k * study.samples / c;
-        study.range_hi = (k + 1) * study.samples / c;
-      }
-    }
+    if (!help) study = read_study(opt);
   } catch (const std::exception& e) {
     error = e.what();
   }
   int bad = error.empty() ? 0 : 1, any_bad = 0;
   MPI_Allreduce(&bad, &any_bad, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
   if (any_bad || help) {
-    if (rank == 0 && help) std::cout << opt.help_text();
+    if (rank == 0 && help) std::cout << opt.help_text() << kExitStatusHelp;
     if (rank == 0 && !help)
       std::cerr << "pound campaign: error: "
                 << (error.empty() ? "a rank failed to read the study" : error) << "\n";
     MPI_Finalize();
-    return help ? 0 : 2;
+    return help ? kFinished : kBadInput;
   }
   const std::string out = opt.get_string("out");
+  bool complete = false;
   if (rank == 0) error = check_output(out, opt.flag("resume"), opt.flag("force"), &complete);
   int state[2] = {error.empty() ? 0 : 1, complete ? 1 : 0};
   MPI_Bcast(state, 2, MPI_INT, 0, MPI_COMM_WORLD);
@@ -173,29 +256,9 @@ int run_campaign(int argc, const char* const* argv) {
     if (rank == 0 && state[0]) std::cerr << "pound campaign: error: " << error << "\n";
     if (rank == 0 && state[1]) std::cerr << "campaign: " << out << " is already complete\n";
     MPI_Finalize();
-    return state[0] ? 2 : 0;
+    return state[0] ? kBadInput : kFinished;
   }
-  if (rank == 0) {
-    std::fprintf(stderr,
-                 "campaign: %ld samples on %d rank%s, seed %llu, %zu sampled parameter%s%s\n",
-                 study.samples, size, size == 1 ? "" : "s",
-                 static_cast<unsigned long long>(study.seed), study.parameters.size(),
-                 study.parameters.size() == 1 ? "" : "s", opt.flag("resume") ? " (resuming)" : "");
-    if (opt.given("chunk"))
-      std::fprintf(stderr, "campaign: chunk %s = samples [%ld, %ld) of %ld\n",
-                   opt.get_string("chunk").c_str(), study.range_lo, study.range_hi, study.samples);
-    else if (opt.given("sample-range"))
-      std::fprintf(stderr, "campaign: samples [%ld, %ld) of %ld\n", study.range_lo, study.range_hi,
-                   study.samples);
-    std::fprintf(stderr, "campaign: resolved study:\n");
-    std::string text = study.resolved;
-    std::size_t p = 0;
-    while (p < text.size()) {
-      const auto e = text.find('\n', p);
-      std::fprintf(stderr, "  %s\n", text.substr(p, e - p).c_str());
-      p = e == std::string::npos ? text.size() : e + 1;
-    }
-  }
+  if (rank == 0) echo_start(study, opt, size);
   if (rank == 0 && opt.given("started-file")) announce_start(opt.get_string("started-file"));
   CampaignRunOptions ro;
   ro.out = out;
@@ -207,31 +270,10 @@ int run_campaign(int argc, const char* const* argv) {
   } catch (const std::exception& e) {
     if (rank == 0) std::cerr << "pound campaign: error: " << e.what() << "\n";
     MPI_Finalize();
-    return 2;
+    return kBadInput;
   }
-  int code = 0;
-  if (rank == 0) {
-    if (sum.interrupted && !sum.stop_reason.empty()) {
-      std::fprintf(stderr,
-                   "campaign: stopped after %ld of %ld samples (%ld failed): %s. The journal "
-                   "%s.journal keeps them; free some space (or raise the file size limit) and "
-                   "resume with: %s --resume\n",
-                   sum.done, sum.total, sum.failed, sum.stop_reason.c_str(), out.c_str(),
-                   resume_command(argc, argv, size).c_str());
-    } else if (sum.interrupted) {
-      std::fprintf(
-          stderr,
-          "campaign: interrupted after %ld of %ld samples (%ld failed); the journal %s.journal "
-          "keeps them. Resume with: %s --resume\n",
-          sum.done, sum.total, sum.failed, out.c_str(), resume_command(argc, argv, size).c_str());
-    } else {
-      std::fprintf(stderr,
-                   "campaign: done: %ld samples, %ld failed, written to %s (peak memory per "
-                   "rank %.1f MB)\n",
-                   sum.done, sum.failed, out.c_str(), sum.peak_rss_mb);
-    }
-  }
-  if (!sum.interrupted && sum.failed > 0) code = 4;
+  if (rank == 0) report_end(sum, out, resume_command(argc, argv, size));
+  const int code = exit_status(sum);
   MPI_Finalize();
   return code;
 }

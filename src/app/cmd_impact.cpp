@@ -16,7 +16,7 @@ namespace {
 
 std::vector<OptionSpec> impact_specs() {
   return {
-      {"model", "", "hc-linear", "contact model: " + contact_model_names() + ", sears"},
+      {"model", "", "hc-linear", "contact model: " + every_contact_model_name()},
       {"e", "-", "0.65", "coefficient of restitution, in (0, 1]"},
       {"k", "N/m or N/m^1.5", "", "contact stiffness (N/m linear laws, N/m^1.5 Hertz laws)"},
       {"m1", "kg", "1", "mass of body 1 (moving towards body 2)"},
@@ -74,7 +74,7 @@ int run_impact(int argc, const char* const* argv) {
   spec.m1 = opt.get_positive("m1");
   spec.m2 = opt.get_positive("m2");
   spec.v0 = opt.get_positive("v0");
-  if (model == "sears") {
+  if (is_sears_model(model)) {
     // Damped Sears model: two free bars (docs/sears.md).
     const auto s = sears::sears_impact_spec_from(opt, spec.m1, spec.m2, spec.v0);
     print(sears::simulate_sears_impact(s), opt.flag("json"));

@@ -11,4 +11,6 @@ int run_fragility(int argc, const char* const* argv);
 int run_summary(int argc, const char* const* argv);
 int run_risk(int argc, const char* const* argv);
 int run_hysteresis(int argc, const char* const* argv);
+/// pound motion generate (argv[0] "generate"), called by run_motion.
+int run_motion_generate(int argc, const char* const* argv);
 }  // namespace pound::app

@@ -84,12 +84,26 @@ std::vector<OptionSpec> campaign_option_specs() {
   return s;
 }
 
-CampaignStudy campaign_from_options(const Options& opt, long samples_override, long seed_override) {
-  CampaignStudy st;
-  st.row = row_from_options(opt);
-  st.integrator = integrator_from_options(opt);
-  st.extra_time = opt.get_nonnegative("simulation.extra_time");
+namespace {
 
+// campaign.batch: "auto" (0) or a whole number from 1 to 10^6.
+int read_batch(const Options& opt) {
+  const std::string b = opt.get_string("campaign.batch");
+  std::size_t used = 0;
+  long v = 0;
+  try {
+    v = b == "auto" ? 0 : std::stol(b, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (b != "auto" && (used != b.size() || v < 1 || v > 1000000))
+    throw opt.invalid("campaign.batch", "valid: auto or a whole number from 1 to 10^6");
+  return static_cast<int>(v);
+}
+
+// [campaign]: the sample count and range, the seed, the sampling method and the batch.
+void read_sampling(const Options& opt, long samples_override, long seed_override,
+                   CampaignStudy& st) {
   st.samples = samples_override > 0 ? samples_override : opt.get_int("campaign.samples");
   if (st.samples < 1) throw opt.invalid("campaign.samples", "valid: a whole number >= 1");
   st.range_lo = 0;
@@ -108,31 +122,20 @@ CampaignStudy campaign_from_options(const Options& opt, long samples_override, l
     st.sampling = SamplingMethod::monte_carlo;
   else
     throw opt.invalid("campaign.sampling", "valid: lhs or mc");
-  {
-    const std::string b = opt.get_string("campaign.batch");
-    std::size_t used = 0;
-    long v = 0;
-    try {
-      v = b == "auto" ? 0 : std::stol(b, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (b != "auto" && (used != b.size() || v < 1 || v > 1000000))
-      throw opt.invalid("campaign.batch", "valid: auto or a whole number from 1 to 10^6");
-    st.batch = static_cast<int>(v);
-  }
+  st.batch = read_batch(opt);
+}
 
-  // Sampled parameters, in a fixed (sorted) order (sampled_parameters.hpp).
-  st.parameters = read_sampled_parameters(opt, st.row);
-
-  // The contact model: fixed keys, with sampled ones checked for what each model needs.
-  bool uses_sears = opt.get_string("contact.model") == "sears";
+// The contact model: the fixed keys, checked for what the models in use need (the fixed
+// contact.model, or the labels of a sampled model).
+void read_contact(const Options& opt, CampaignStudy& st) {
+  const std::string fixed = opt.get_string("contact.model");
+  bool uses_sears = is_sears_model(fixed);
   bool uses_lumped = !uses_sears;
   for (const auto& p : st.parameters)
-    if (p.key == "model") {
+    if (p.is_contact_model()) {
       uses_sears = uses_lumped = false;
       for (const auto& l : p.distribution.labels())
-        (l == "sears" ? uses_sears : uses_lumped) = true;
+        (is_sears_model(l) ? uses_sears : uses_lumped) = true;
     }
   if (uses_sears) {
     st.has_sears = true;
@@ -140,91 +143,94 @@ CampaignStudy campaign_from_options(const Options& opt, long samples_override, l
   }
   bool k_sampled = false;
   for (const auto& p : st.parameters) k_sampled |= p.spec->sets_contact_k;
-  st.contact.model = opt.get_string("contact.model");
-  if (uses_lumped && !k_sampled && st.contact.model != "sears") {
+  st.contact.model = fixed;
+  if (uses_lumped && !k_sampled && !is_sears_model(fixed)) {
     st.contact = contact_from_options(opt, st.row);
-  } else {
-    // The sampled k (or the Sears model) replaces the stiffness per sample.
-    if (st.contact.model != "sears")
-      find_contact_model(st.contact.model, opt.where("contact.model"));
-    st.contact.params.e = opt.get_double("contact.e");
-    if (!(st.contact.params.e > 0 && st.contact.params.e <= 1))
-      throw opt.invalid("contact.e", "valid: e in (0, 1]");
-    st.contact.params.v0_min = opt.get_positive("contact.v0_min");
-    st.contact.params.xi_relation = opt.get_string("contact.xi_relation");
-    if (uses_lumped && !k_sampled)
-      throw InputError(opt.where("contact.k") +
-                       ": missing; the lumped models need contact.k, "
-                       "contact.k_factor or a sampled sample.k / sample.k_factor");
+    return;
   }
+  // The sampled k (or the Sears model) replaces the stiffness per sample.
+  if (!is_sears_model(fixed)) find_contact_model(fixed, opt.where("contact.model"));
+  st.contact.params.e = opt.get_double("contact.e");
+  if (!(st.contact.params.e > 0 && st.contact.params.e <= 1))
+    throw opt.invalid("contact.e", "valid: e in (0, 1]");
+  st.contact.params.v0_min = opt.get_positive("contact.v0_min");
+  st.contact.params.xi_relation = opt.get_string("contact.xi_relation");
+  if (uses_lumped && !k_sampled)
+    throw InputError(opt.where("contact.k") +
+                     ": missing; the lumped models need contact.k, "
+                     "contact.k_factor or a sampled sample.k / sample.k_factor");
+}
 
-  // Ground motion.
-  const std::string src = opt.get_string("motion.source");
-  if (src == "generated") {
-    st.source = MotionSource::generated;
-    // A record, or how to read or process one, named for a campaign of generated motions would
-    // be ignored without a word (motion_file_spec and process_record use these keys for records
-    // only).
-    for (const char* key :
-         {"motion.file", "motion.records", "motion.format", "motion.units", "motion.dt",
-          "motion.scale", "motion.baseline", "motion.check_pga", "motion.duration"})
-      if (opt.given(key))
-        throw InputError(opt.where(key) +
-                         ": not used: motion.source is 'generated' (every sample generates its "
-                         "own motion, set by the generator.* keys); set motion.source = records "
-                         "to simulate record files");
-    const Options gen = opt.section("generator", generator_specs());
-    if (!gen.given("spectrum"))
-      throw InputError(opt.where("generator.spectrum") +
-                       ": missing; generated motions need a target spectrum: ec8, nzs1170, "
-                       "asce7, japan or table");
-    st.spectrum = std::shared_ptr<const DesignSpectrum>(make_design_spectrum(gen));
-    st.motion_duration = gen.get_positive("duration");
-    st.generator.dt = gen.get_positive("dt");
-    if (!(st.motion_duration > 20 * st.generator.dt))
-      throw gen.invalid("duration", "valid: longer than 20 time steps");
-    const std::string env = gen.get_string("envelope");
-    if (env == "jennings")
-      st.generator.envelope.shape = EnvelopeShape::jennings;
-    else if (env == "saragoni-hart")
-      st.generator.envelope.shape = EnvelopeShape::saragoni_hart;
-    else
-      throw gen.invalid("envelope", "valid: jennings or saragoni-hart");
-    st.generator.max_iterations = static_cast<int>(gen.get_int("iterations"));
-    if (st.generator.max_iterations < 0) throw gen.invalid("iterations", "valid: >= 0");
-    st.variability = variability_from_options(gen, '_');
-  } else if (src == "records") {
-    st.source = MotionSource::records;
-    std::vector<std::string> files;
-    if (opt.given("motion.records") && opt.given("motion.file"))
-      throw InputError(opt.where("motion.file") +
-                       ": not used beside motion.records; give the records in one of them");
-    if (opt.given("motion.records")) {
-      std::string list = opt.get_string("motion.records");
-      std::replace(list.begin(), list.end(), ',', ' ');
-      std::istringstream in(list);
-      std::string f;
-      while (in >> f) files.push_back(f);
-    } else if (opt.given("motion.file")) {
-      files.push_back(opt.get_string("motion.file"));
-    }
-    if (files.empty())
-      throw InputError(opt.where("motion.records") + ": missing; give record files");
-    const auto& dir = opt.config_path();
-    const auto slash = dir.rfind('/');
-    for (const auto& f : files) {
-      const std::string path =
-          (f[0] == '/' || slash == std::string::npos || !opt.given("motion.records") ||
-           opt.where("motion.records").rfind("command line", 0) == 0)
-              ? f
-              : dir.substr(0, slash + 1) + f;
-      st.records.push_back(process_record(opt, read_motion(motion_file_spec(opt, path))));
-    }
-  } else {
-    throw opt.invalid("motion.source", "valid: generated or records");
+// motion.source = generated: the target spectrum and the generator ([generator]).
+void read_generated_motions(const Options& opt, CampaignStudy& st) {
+  st.source = MotionSource::generated;
+  // A record, or how to read or process one, named for a campaign of generated motions would
+  // be ignored without a word (motion_file_spec and process_record use these keys for records
+  // only).
+  for (const char* key :
+       {"motion.file", "motion.records", "motion.format", "motion.units", "motion.dt",
+        "motion.scale", "motion.baseline", "motion.check_pga", "motion.duration"})
+    if (opt.given(key))
+      throw InputError(opt.where(key) +
+                       ": not used: motion.source is 'generated' (every sample generates its "
+                       "own motion, set by the generator.* keys); set motion.source = records "
+                       "to simulate record files");
+  const Options gen = opt.section("generator", generator_specs());
+  if (!gen.given("spectrum"))
+    throw InputError(opt.where("generator.spectrum") +
+                     ": missing; generated motions need a target spectrum: ec8, nzs1170, "
+                     "asce7, japan or table");
+  st.spectrum = std::shared_ptr<const DesignSpectrum>(make_design_spectrum(gen));
+  st.motion_duration = gen.get_positive("duration");
+  st.generator.dt = gen.get_positive("dt");
+  if (!(st.motion_duration > 20 * st.generator.dt))
+    throw gen.invalid("duration", "valid: longer than 20 time steps");
+  const std::string env = gen.get_string("envelope");
+  if (env == "jennings")
+    st.generator.envelope.shape = EnvelopeShape::jennings;
+  else if (env == "saragoni-hart")
+    st.generator.envelope.shape = EnvelopeShape::saragoni_hart;
+  else
+    throw gen.invalid("envelope", "valid: jennings or saragoni-hart");
+  st.generator.max_iterations = static_cast<int>(gen.get_int("iterations"));
+  if (st.generator.max_iterations < 0) throw gen.invalid("iterations", "valid: >= 0");
+  st.variability = variability_from_options(gen, '_');
+}
+
+// motion.source = records: every record file (motion.records, or motion.file for one), read
+// and processed as pound simulate does (a relative path of the study file is taken from its
+// folder).
+void read_records(const Options& opt, CampaignStudy& st) {
+  st.source = MotionSource::records;
+  std::vector<std::string> files;
+  if (opt.given("motion.records") && opt.given("motion.file"))
+    throw InputError(opt.where("motion.file") +
+                     ": not used beside motion.records; give the records in one of them");
+  if (opt.given("motion.records")) {
+    std::string list = opt.get_string("motion.records");
+    std::replace(list.begin(), list.end(), ',', ' ');
+    std::istringstream in(list);
+    std::string f;
+    while (in >> f) files.push_back(f);
+  } else if (opt.given("motion.file")) {
+    files.push_back(opt.get_string("motion.file"));
   }
+  if (files.empty()) throw InputError(opt.where("motion.records") + ": missing; give record files");
+  const auto& dir = opt.config_path();
+  const auto slash = dir.rfind('/');
+  for (const auto& f : files) {
+    const std::string path =
+        (f[0] == '/' || slash == std::string::npos || !opt.given("motion.records") ||
+         opt.where("motion.records").rfind("command line", 0) == 0)
+            ? f
+            : dir.substr(0, slash + 1) + f;
+    st.records.push_back(process_record(opt, read_motion(motion_file_spec(opt, path))));
+  }
+}
 
-  // Intensity.
+// [intensity]: the measure, the building whose T1 defines Sa(T1), and the stripes or the
+// sampled scale factor.
+void read_intensity(const Options& opt, CampaignStudy& st) {
   const std::string im = opt.get_string("intensity.measure");
   if (im == "pga")
     st.measure = IntensityMeasure::pga;
@@ -258,6 +264,27 @@ CampaignStudy campaign_from_options(const Options& opt, long samples_override, l
     st.scale = Distribution::parse(opt.get_string("intensity.scale"), opt.where("intensity.scale"));
     if (!(st.scale.lower() > 0)) throw opt.invalid("intensity.scale", "scale factors must be > 0");
   }
+}
+
+}  // namespace
+
+CampaignStudy campaign_from_options(const Options& opt, long samples_override, long seed_override) {
+  CampaignStudy st;
+  st.row = row_from_options(opt);
+  st.integrator = integrator_from_options(opt);
+  st.extra_time = opt.get_nonnegative("simulation.extra_time");
+  read_sampling(opt, samples_override, seed_override, st);
+  // Sampled parameters, in a fixed (sorted) order (sampled_parameters.hpp).
+  st.parameters = read_sampled_parameters(opt, st.row);
+  read_contact(opt, st);
+  const std::string src = opt.get_string("motion.source");
+  if (src == "generated")
+    read_generated_motions(opt, st);
+  else if (src == "records")
+    read_records(opt, st);
+  else
+    throw opt.invalid("motion.source", "valid: generated or records");
+  read_intensity(opt, st);
   // The study as resolved; run-control options (output, resume, ...) are not part of it, the
   // sample count and seed are stored on their own.
   st.resolved =

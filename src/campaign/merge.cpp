@@ -71,19 +71,22 @@ herr_t copy_attribute(hid_t src, const char* name, const H5A_info_t*, void* dst_
   return w < 0 ? -1 : 0;
 }
 
-}  // namespace
-
-void merge_campaign_parts(const std::vector<std::string>& paths, const std::string& out) {
-  if (paths.empty()) throw InputError("merge: no part files given");
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+// The parts, open, closed when this goes out of scope (error paths included).
+struct OpenParts {
   std::vector<Part> parts;
-  struct Closer {
-    std::vector<Part>& p;
-    ~Closer() {
-      for (auto& x : p)
-        if (x.file >= 0) H5Fclose(x.file);
-    }
-  } closer{parts};
+  OpenParts() = default;
+  OpenParts(const OpenParts&) = delete;
+  OpenParts& operator=(const OpenParts&) = delete;
+  ~OpenParts() {
+    for (auto& x : parts)
+      if (x.file >= 0) H5Fclose(x.file);
+  }
+};
+
+// Opens every part, reads its sample range and checks that all come from the same campaign
+// (study, seed and sample count). Returns the sample count as stored (-1 when absent).
+double open_parts(const std::vector<std::string>& paths, OpenParts& open) {
+  std::vector<Part>& parts = open.parts;
   std::string study, seed;
   double samples = -1;
   for (const auto& path : paths) {
@@ -117,6 +120,12 @@ void merge_campaign_parts(const std::vector<std::string>& paths, const std::stri
                        parts.front().path + ")");
     }
   }
+  return samples;
+}
+
+// Sorts the parts by range and checks that they cover 0..samples-1 exactly once. Returns the
+// sample count.
+hsize_t check_ranges(std::vector<Part>& parts, double samples) {
   std::sort(parts.begin(), parts.end(), [](const Part& x, const Part& y) { return x.lo < y.lo; });
   long next = 0;
   for (const auto& p : parts) {
@@ -136,70 +145,101 @@ void merge_campaign_parts(const std::vector<std::string>& paths, const std::stri
                      " but the campaign has " + shown + " samples" +
                      (whole ? "" : " (attribute samples; valid: one whole number from 1 to 1e15)"));
   }
+  return static_cast<hsize_t>(samples);
+}
+
+// One dataset of the joined file: its type, shape and attributes from the first part.
+struct JoinedDataset {
+  std::string name;  ///< e.g. /response/peak_force
+  hid_t type;        ///< the first part's type (owned by the caller)
+  int rank;
+  std::vector<hsize_t> dims;  ///< dims[0] = the campaign's sample count
+  hid_t id;                   ///< the joined dataset (owned by the caller)
+};
+
+// Copies part p's rows of the dataset into their place [p.lo, p.hi) of the joined one.
+void copy_rows(const Part& p, const Part& first, const JoinedDataset& d, const std::string& out) {
+  auto bad = [&](const std::string& what) {
+    return InputError(p.path + ": " + d.name + " " + what);
+  };
+  const Id dp{H5Dopen2(p.file, d.name.c_str(), H5P_DEFAULT), H5Dclose};
+  if (dp.id < 0) throw InputError(p.path + ": dataset " + d.name + " is missing");
+  const Id sp{H5Dget_space(dp.id), H5Sclose};
+  std::vector<hsize_t> pd(static_cast<std::size_t>(d.rank));
+  if (H5Sget_simple_extent_ndims(sp.id) != d.rank)
+    throw bad("has another number of dimensions than in " + first.path);
+  H5Sget_simple_extent_dims(sp.id, pd.data(), nullptr);
+  for (int k = 1; k < d.rank; ++k)
+    if (pd[k] != d.dims[k]) throw bad("has another shape than in " + first.path);
+  if (static_cast<long>(pd[0]) != p.hi - p.lo)
+    throw InputError(p.path + ": " + d.name + " has " + std::to_string(pd[0]) +
+                     " rows, its sample_range says " + std::to_string(p.hi - p.lo));
+  // A damaged part may declare more rows than it stores (found by fuzz_campaign_file); a
+  // compressed one stores fewer bytes than it holds (h5::declared_values_problem).
+  const hssize_t npts = H5Sget_simple_extent_npoints(sp.id);
+  const Id ptype{H5Dget_type(dp.id), H5Tclose};
+  if (npts < 0) throw bad("has no readable shape (a damaged file)");
+  if (const std::string why = h5::declared_values_problem(
+          dp.id, static_cast<hsize_t>(npts), H5Tget_size(ptype.id), H5Tget_size(d.type));
+      !why.empty())
+    throw bad(why + " (a damaged file)");
+  std::vector<char> buf(static_cast<std::size_t>(npts) * H5Tget_size(d.type));
+  if (H5Dread(dp.id, d.type, H5S_ALL, H5S_ALL, H5P_DEFAULT, buf.data()) < 0)
+    throw bad("cannot be read as in " + first.path);
+  const Id fs{H5Dget_space(d.id), H5Sclose};
+  std::vector<hsize_t> start(static_cast<std::size_t>(d.rank), 0);
+  start[0] = static_cast<hsize_t>(p.lo);
+  H5Sselect_hyperslab(fs.id, H5S_SELECT_SET, start.data(), nullptr, pd.data(), nullptr);
+  const Id ms{H5Screate_simple(d.rank, pd.data(), nullptr), H5Sclose};
+  const herr_t w = H5Dwrite(d.id, d.type, ms.id, fs.id, H5P_DEFAULT, buf.data());
+  if (H5Tis_variable_str(d.type) > 0 || H5Tget_class(d.type) == H5T_VLEN)
+    H5Dvlen_reclaim(d.type, ms.id, H5P_DEFAULT, buf.data());
+  if (w < 0) throw InputError(out + ": writing " + d.name + " failed");
+}
+
+// Creates dataset `name` of the joined file `f` (`total` rows, as in the first part) and copies
+// every part's rows into it.
+void join_dataset(hid_t f, const std::vector<Part>& parts, const std::string& group,
+                  const std::string& name, hsize_t total, const std::string& out) {
+  const Part& first = parts.front();
+  auto bad = [&](const std::string& what) {
+    return InputError(first.path + ": " + name + " " + what);
+  };
+  const Id d0{H5Dopen2(first.file, name.c_str(), H5P_DEFAULT), H5Dclose};
+  if (d0.id < 0) throw bad("is not a dataset");
+  const Id type{H5Dget_type(d0.id), H5Tclose};
+  const Id s0{H5Dget_space(d0.id), H5Sclose};
+  const int rank = H5Sget_simple_extent_ndims(s0.id);
+  if (rank < 1 || rank > 3 || H5Tget_size(type.id) == 0)
+    throw bad("is not a table of rows (1 to 3 dimensions)");
+  std::vector<hsize_t> dims(static_cast<std::size_t>(rank));
+  H5Sget_simple_extent_dims(s0.id, dims.data(), nullptr);
+  dims[0] = total;
+  h5::ensure_group(f, group);
+  const Id space{H5Screate_simple(rank, dims.data(), nullptr), H5Sclose};
+  const Id d{H5Dcreate2(f, name.c_str(), type.id, space.id, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+             H5Dclose};
+  if (d.id < 0) throw bad("cannot be copied");
+  H5Aiterate2(d0.id, H5_INDEX_NAME, H5_ITER_NATIVE, nullptr, copy_attribute,
+              const_cast<hid_t*>(&d.id));
+  const JoinedDataset joined{name, type.id, rank, dims, d.id};
+  for (const auto& p : parts) copy_rows(p, first, joined, out);
+}
+
+}  // namespace
+
+void merge_campaign_parts(const std::vector<std::string>& paths, const std::string& out) {
+  if (paths.empty()) throw InputError("merge: no part files given");
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  OpenParts open;
+  const double samples = open_parts(paths, open);
+  std::vector<Part>& parts = open.parts;
+  const hsize_t total = check_ranges(parts, samples);
 
   h5::File f(out);
-  const hsize_t total = static_cast<hsize_t>(samples);
-  for (const char* group : {"/samples", "/response", "/run"}) {
-    for (const auto& member : h5::group_members(parts.front().file, group)) {
-      const std::string name = std::string(group) + "/" + member;
-      auto bad = [&](const Part& p, const std::string& what) {
-        return InputError(p.path + ": " + name + " " + what);
-      };
-      const Id d0{H5Dopen2(parts.front().file, name.c_str(), H5P_DEFAULT), H5Dclose};
-      if (d0.id < 0) throw bad(parts.front(), "is not a dataset");
-      const Id type{H5Dget_type(d0.id), H5Tclose};
-      const Id s0{H5Dget_space(d0.id), H5Sclose};
-      const int rank = H5Sget_simple_extent_ndims(s0.id);
-      if (rank < 1 || rank > 3 || H5Tget_size(type.id) == 0)
-        throw bad(parts.front(), "is not a table of rows (1 to 3 dimensions)");
-      std::vector<hsize_t> dims(static_cast<std::size_t>(rank));
-      H5Sget_simple_extent_dims(s0.id, dims.data(), nullptr);
-      dims[0] = total;
-      h5::ensure_group(f.id(), group);
-      const Id space{H5Screate_simple(rank, dims.data(), nullptr), H5Sclose};
-      const Id d{H5Dcreate2(f.id(), name.c_str(), type.id, space.id, H5P_DEFAULT, H5P_DEFAULT,
-                            H5P_DEFAULT),
-                 H5Dclose};
-      if (d.id < 0) throw bad(parts.front(), "cannot be copied");
-      H5Aiterate2(d0.id, H5_INDEX_NAME, H5_ITER_NATIVE, nullptr, copy_attribute,
-                  const_cast<hid_t*>(&d.id));
-      for (const auto& p : parts) {
-        const Id dp{H5Dopen2(p.file, name.c_str(), H5P_DEFAULT), H5Dclose};
-        if (dp.id < 0) throw InputError(p.path + ": dataset " + name + " is missing");
-        const Id sp{H5Dget_space(dp.id), H5Sclose};
-        std::vector<hsize_t> pd(static_cast<std::size_t>(rank));
-        if (H5Sget_simple_extent_ndims(sp.id) != rank)
-          throw bad(p, "has another number of dimensions than in " + parts.front().path);
-        H5Sget_simple_extent_dims(sp.id, pd.data(), nullptr);
-        for (int k = 1; k < rank; ++k)
-          if (pd[k] != dims[k]) throw bad(p, "has another shape than in " + parts.front().path);
-        if (static_cast<long>(pd[0]) != p.hi - p.lo)
-          throw InputError(p.path + ": " + name + " has " + std::to_string(pd[0]) +
-                           " rows, its sample_range says " + std::to_string(p.hi - p.lo));
-        // A damaged part may declare more rows than it stores (found by fuzz_campaign_file);
-        // a compressed one stores fewer bytes than it holds (h5::declared_values_problem).
-        const hssize_t npts = H5Sget_simple_extent_npoints(sp.id);
-        const Id ptype{H5Dget_type(dp.id), H5Tclose};
-        if (npts < 0) throw bad(p, "has no readable shape (a damaged file)");
-        if (const std::string why = h5::declared_values_problem(
-                dp.id, static_cast<hsize_t>(npts), H5Tget_size(ptype.id), H5Tget_size(type.id));
-            !why.empty())
-          throw bad(p, why + " (a damaged file)");
-        std::vector<char> buf(static_cast<std::size_t>(npts) * H5Tget_size(type.id));
-        if (H5Dread(dp.id, type.id, H5S_ALL, H5S_ALL, H5P_DEFAULT, buf.data()) < 0)
-          throw bad(p, "cannot be read as in " + parts.front().path);
-        const Id fs{H5Dget_space(d.id), H5Sclose};
-        std::vector<hsize_t> start(static_cast<std::size_t>(rank), 0);
-        start[0] = static_cast<hsize_t>(p.lo);
-        H5Sselect_hyperslab(fs.id, H5S_SELECT_SET, start.data(), nullptr, pd.data(), nullptr);
-        const Id ms{H5Screate_simple(rank, pd.data(), nullptr), H5Sclose};
-        const herr_t w = H5Dwrite(d.id, type.id, ms.id, fs.id, H5P_DEFAULT, buf.data());
-        if (H5Tis_variable_str(type.id) > 0 || H5Tget_class(type.id) == H5T_VLEN)
-          H5Dvlen_reclaim(type.id, ms.id, H5P_DEFAULT, buf.data());
-        if (w < 0) throw InputError(out + ": writing " + name + " failed");
-      }
-    }
-  }
+  for (const char* group : {"/samples", "/response", "/run"})
+    for (const auto& member : h5::group_members(parts.front().file, group))
+      join_dataset(f.id(), parts, group, std::string(group) + "/" + member, total, out);
   // Root attributes of the first part, with the merged range.
   {
     Id root{H5Gopen2(f.id(), "/", H5P_DEFAULT), H5Gclose};

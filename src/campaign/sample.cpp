@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "campaign/floor_arrays.hpp"
+#include "contact/registry.hpp"
 #include "core/error.hpp"
 #include "motion/motion_processing.hpp"
 #include "motion/response_spectrum.hpp"
@@ -42,7 +43,7 @@ SampleDraw SampleRunner::draw(long id) {
     const double u = uniform("sample." + p.key);
     if (p.is_label()) {
       const std::size_t i = p.distribution.index(u);
-      if (p.key == "model") d.model = p.distribution.labels()[i];
+      if (p.is_contact_model()) d.model = p.distribution.labels()[i];
       d.values.push_back(static_cast<double>(i));
     } else {
       d.values.push_back(p.distribution.value(u));
@@ -115,7 +116,7 @@ SampleOutcome SampleRunner::run(const SampleDraw& d) {
     RowSimulationOptions so;
     so.extra_time = st_.extra_time;
     RowSimulation sim;
-    if (d.model == "sears") {
+    if (is_sears_model(d.model)) {
       sim = sears::simulate_sears_row(row, g, sm.sears, so).base;
     } else {
       sim = simulate_row(row, g, sm.contact, st_.integrator, so);

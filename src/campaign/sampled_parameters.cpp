@@ -20,9 +20,9 @@ constexpr ValidRange kNonnegative{true};
 void check_model(const SampledParameter& p, const BuildingRow&, const Options& smp) {
   if (p.distribution.kind() != DistributionKind::discrete)
     throw smp.invalid(
-        p.key, "valid: discrete(name: weight, ...) with names from " + contact_model_names());
+        p.key, "valid: discrete(name: weight, ...) with names from " + every_contact_model_name());
   for (const auto& l : p.distribution.labels())
-    if (l != "sears") find_contact_model(l, smp.where(p.key));
+    if (!is_sears_model(l)) find_contact_model(l, smp.where(p.key));
 }
 
 void check_has_yield_shears(const SampledParameter& p, const BuildingRow& row, const Options& smp) {
@@ -85,7 +85,7 @@ const std::vector<SampledParameterSpec>& sampled_parameter_table() {
          for (auto& b : m.row.buildings) b.damping_ratio = v;
        },
        nullptr},
-      {"model",
+      {kSampledContactModelKey,
        "",
        "contact model: discrete(name: weight, ...)",
        SampleStage::label,

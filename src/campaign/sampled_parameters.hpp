@@ -43,6 +43,10 @@ struct ValidRange {
 
 struct SampledParameterSpec;
 
+/// The [sample] key of the sampled contact model (model-form uncertainty), whose labels are
+/// contact model names: `sample.model = discrete(sears: 1, hc-linear: 1)`.
+inline constexpr char kSampledContactModelKey[] = "model";
+
 /// One sampled parameter of a study: its key as written under [sample] and its distribution.
 struct SampledParameter {
   std::string key;  ///< e, k, k_factor, gap, damping, model, chi, D, building2.mass_scale, ...
@@ -50,6 +54,8 @@ struct SampledParameter {
   const SampledParameterSpec* spec = nullptr;  ///< its entry of the table
   int building = -1;                           ///< 0-based building of a '#' key, else -1
   bool is_label() const;                       ///< values are labels (stored as their index)
+  /// The sampled contact model (kSampledContactModelKey): its labels are model names.
+  bool is_contact_model() const { return key == kSampledContactModelKey; }
 };
 
 /// One entry of the table.

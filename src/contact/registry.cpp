@@ -45,11 +45,15 @@ std::string contact_model_names() {
   return s;
 }
 
+std::string every_contact_model_name() {
+  return contact_model_names() + ", " + kSearsModelName;
+}
+
 const ContactModelInfo& find_contact_model(const std::string& name, const std::string& where) {
   for (const auto& m : contact_models())
     if (m.name == name) return m;
   throw InputError(where + ": unknown contact model '" + name +
-                   "'; valid: " + contact_model_names() + ", sears");
+                   "'; valid: " + every_contact_model_name());
 }
 
 }  // namespace pound

@@ -248,8 +248,9 @@ void check_hazard_measure(const CampaignData& c, const HazardCurve& h) {
                      " s; valid: a period within 1 %");
 }
 
-RiskReport analyse_risk(const CampaignData& c, const HazardCurve& h, const RiskSettings& s,
-                        const std::vector<BuildingMode>& modes, const FragilitySettings& limits) {
+namespace {
+
+void check_risk_inputs(const CampaignData& c, const RiskSettings& s) {
   if (!c.has_approach())
     throw InputError(c.path +
                      ": no dataset /response/approach_free; the file was written by a pound "
@@ -262,115 +263,119 @@ RiskReport analyse_risk(const CampaignData& c, const HazardCurve& h, const RiskS
   for (std::size_t i = 0; i < s.gaps.size(); ++i)
     if (!(s.gaps[i] >= 0 && std::isfinite(s.gaps[i])) || (i > 0 && !(s.gaps[i] > s.gaps[i - 1])))
       throw InputError("gaps: valid: increasing gaps >= 0 in m");
+}
 
-  RiskReport r;
-  r.samples = c.samples;
-  for (int st : c.status) r.failed += st != 0;
-  std::vector<std::size_t> used;
-  const ExceedanceDesign d = exceedance_design(c, &used);
-  r.used = used.size();
-  r.stripes = d.stripes();
-  if (used.empty()) throw InputError(c.path + ": no successful sample to fit");
+// The design intensity of the code rules and the median free-run displacements around it.
+struct DesignPoint {
+  GroupMedians medians;
+  double im = 0.0;        ///< [m/s^2]
+  bool in_range = false;  ///< inside the groups' intensities
+};
 
-  // Design intensity of the code rules.
-  r.design_im_given = s.design_im > 0;
-  r.design_im = r.design_im_given ? s.design_im : h.im_at_rate(1.0 / kDesignReturnPeriod);
-  const GroupMedians medians = group_medians(c, used, d);
-  r.groups = medians.im.size();
-  const bool in_range = !medians.im.empty() && r.design_im >= medians.im.front() * (1 - 1e-9) &&
-                        r.design_im <= medians.im.back() * (1 + 1e-9);
-  if (r.design_im_given && !in_range)
-    throw InputError("design-im " + std::to_string(r.design_im / kGravity) +
-                     " g: outside the campaign's intensities " +
-                     std::to_string(medians.im.empty() ? 0.0 : medians.im.front() / kGravity) +
-                     " to " +
-                     std::to_string(medians.im.empty() ? 0.0 : medians.im.back() / kGravity) +
-                     " g; valid: an intensity inside them");
+// The gaps of a pair's table: the given ones, or gap_points from 0 to its largest approach.
+std::vector<double> gap_grid(const PairAnalysis& pa, const RiskSettings& s) {
+  std::vector<double> grid = s.gaps;
+  if (!grid.empty()) return grid;
+  const double top = pa.largest_approach();
+  const int n = std::max(2, s.gap_points);
+  for (int i = 0; i < n; ++i)
+    grid.push_back(std::isfinite(top) ? top * double(i) / double(n - 1) : 0.0);
+  grid.erase(std::unique(grid.begin(), grid.end()), grid.end());
+  return grid;
+}
 
-  const double im_lo = *std::min_element(d.im.begin(), d.im.end());
-  const double im_hi = *std::max_element(d.im.begin(), d.im.end());
-  const BootstrapResampler resampler(d, s.bootstrap);
-  const std::size_t npairs = c.approach_free.buildings;
-  for (std::size_t p = 0; p < npairs; ++p) {
-    const PairAnalysis pa(c, used, d, h, s, p);
-    PairRisk pr;
-    pr.pair = p;
-    std::vector<double> grid = s.gaps;
-    if (grid.empty()) {
-      const double top = pa.largest_approach();
-      const int n = std::max(2, s.gap_points);
-      for (int i = 0; i < n; ++i)
-        grid.push_back(std::isfinite(top) ? top * double(i) / double(n - 1) : 0.0);
-      grid.erase(std::unique(grid.begin(), grid.end()), grid.end());
+// Bootstrap: every replicate refits every gap and searches again; the bands go into pr.
+void bootstrap_bands(const PairAnalysis& pa, const std::vector<double>& grid,
+                     const BootstrapResampler& resampler, const RiskSettings& s, PairRisk& pr) {
+  std::vector<std::vector<double>> rep_prob(grid.size());
+  std::vector<double> rep_gap;
+  std::vector<std::size_t> rows;
+  for (int rep = 0; rep < s.bootstrap.replicates; ++rep) {
+    resampler.rows(rep, rows);
+    std::vector<double> q;
+    for (std::size_t i = 0; i < grid.size(); ++i) {
+      q.push_back(pa.estimate(grid[i], rows).probability);
+      rep_prob[i].push_back(q.back());
     }
-    std::vector<double> prob;
-    for (double g : grid) {
-      pr.grid.push_back(pa.estimate(g));
-      pr.grid.back().observed = observed_fractions(d, pa.outcomes(g));
-      prob.push_back(pr.grid.back().probability);
-    }
-    pr.gap_for_target = pa.gap_for_target(grid, prob, {}, &pr.target_status);
-
-    // Bootstrap: every replicate refits every gap and searches again.
-    std::vector<std::vector<double>> rep_prob(grid.size());
-    std::vector<double> rep_gap;
-    std::vector<std::size_t> rows;
-    for (int rep = 0; rep < s.bootstrap.replicates; ++rep) {
-      resampler.rows(rep, rows);
-      std::vector<double> q;
-      for (std::size_t i = 0; i < grid.size(); ++i) {
-        q.push_back(pa.estimate(grid[i], rows).probability);
-        rep_prob[i].push_back(q.back());
-      }
-      TargetStatus st;
-      rep_gap.push_back(pa.gap_for_target(grid, q, rows, &st));
-    }
-    pr.bootstrap_replicates = s.bootstrap.replicates;
-    for (std::size_t i = 0; i < grid.size(); ++i)
-      pr.grid[i].probability_band = percentile_interval(rep_prob[i], s.confidence);
-    pr.gap_band = percentile_interval(rep_gap, s.confidence);
-
-    // Code rules at the design intensity, from the median free-run peak displacements.
-    const std::size_t bl = p, br = p + 1;
-    if (!in_range) {
-      pr.rules_note = "the design intensity " + std::to_string(r.design_im / kGravity) +
-                      " g lies outside the campaign's intensities";
-    } else if (modes.size() <= br) {
-      pr.rules_note = "the study's buildings could not be read";
-    } else {
-      pr.rho = cqc_correlation(modes[bl].period_s, modes[bl].damping, modes[br].period_s,
-                               modes[br].damping);
-      const FloorArray& u = c.floor_array("peak_disp_free");
-      for (std::size_t l = 0; l < c.approach_free.floors && l < u.floors; ++l) {
-        const double ul = median_at(medians, r.design_im, bl, l);
-        const double ur = median_at(medians, r.design_im, br, l);
-        if (!std::isfinite(ul) || !std::isfinite(ur)) break;  // the lower building's roof
-        pr.median_left.push_back(ul);
-        pr.median_right.push_back(ur);
-      }
-      pr.rules_computed = !pr.median_left.empty();
-      if (!pr.rules_computed) pr.rules_note = "no median free-run displacements at that intensity";
-      for (const SeparationRule rule : kSeparationRules) {
-        if (!pr.rules_computed) break;
-        CodeRuleResult cr;
-        cr.rule = rule;
-        cr.gap = -1.0;
-        for (std::size_t l = 0; l < pr.median_left.size(); ++l) {
-          const double g = separation_gap(rule, pr.median_left[l], pr.median_right[l], pr.rho);
-          if (g > cr.gap) cr.gap = g, cr.level = int(l + 1);
-        }
-        cr.estimate = pa.estimate(cr.gap);
-        pr.rules.push_back(cr);
-      }
-    }
-    r.pairs.push_back(std::move(pr));
+    TargetStatus st;
+    rep_gap.push_back(pa.gap_for_target(grid, q, rows, &st));
   }
+  pr.bootstrap_replicates = s.bootstrap.replicates;
+  for (std::size_t i = 0; i < grid.size(); ++i)
+    pr.grid[i].probability_band = percentile_interval(rep_prob[i], s.confidence);
+  pr.gap_band = percentile_interval(rep_gap, s.confidence);
+}
 
-  // Damage limits with and without pounding (the campaign's own gaps): the fits of pound
-  // fragility, without its bootstrap.
+// Code rules at the design intensity, from the median free-run peak displacements.
+void code_rules(const PairAnalysis& pa, const CampaignData& c, const DesignPoint& design,
+                const std::vector<BuildingMode>& modes, PairRisk& pr) {
+  const std::size_t bl = pr.pair, br = pr.pair + 1;
+  if (!design.in_range) {
+    pr.rules_note = "the design intensity " + std::to_string(design.im / kGravity) +
+                    " g lies outside the campaign's intensities";
+    return;
+  }
+  if (modes.size() <= br) {
+    pr.rules_note = "the study's buildings could not be read";
+    return;
+  }
+  pr.rho =
+      cqc_correlation(modes[bl].period_s, modes[bl].damping, modes[br].period_s, modes[br].damping);
+  const FloorArray& u = c.floor_array("peak_disp_free");
+  for (std::size_t l = 0; l < c.approach_free.floors && l < u.floors; ++l) {
+    const double ul = median_at(design.medians, design.im, bl, l);
+    const double ur = median_at(design.medians, design.im, br, l);
+    if (!std::isfinite(ul) || !std::isfinite(ur)) break;  // the lower building's roof
+    pr.median_left.push_back(ul);
+    pr.median_right.push_back(ur);
+  }
+  pr.rules_computed = !pr.median_left.empty();
+  if (!pr.rules_computed) {
+    pr.rules_note = "no median free-run displacements at that intensity";
+    return;
+  }
+  for (const SeparationRule rule : kSeparationRules) {
+    CodeRuleResult cr;
+    cr.rule = rule;
+    cr.gap = -1.0;
+    for (std::size_t l = 0; l < pr.median_left.size(); ++l) {
+      const double g = separation_gap(rule, pr.median_left[l], pr.median_right[l], pr.rho);
+      if (g > cr.gap) cr.gap = g, cr.level = int(l + 1);
+    }
+    cr.estimate = pa.estimate(cr.gap);
+    pr.rules.push_back(cr);
+  }
+}
+
+// Pair p: the probability of pounding at every gap of its grid with bootstrap bands, the gap
+// for the target, and the code rules.
+PairRisk analyse_pair(const PairAnalysis& pa, std::size_t p, const CampaignData& c,
+                      const ExceedanceDesign& d, const RiskSettings& s,
+                      const BootstrapResampler& resampler, const DesignPoint& design,
+                      const std::vector<BuildingMode>& modes) {
+  PairRisk pr;
+  pr.pair = p;
+  const std::vector<double> grid = gap_grid(pa, s);
+  std::vector<double> prob;
+  for (double g : grid) {
+    pr.grid.push_back(pa.estimate(g));
+    pr.grid.back().observed = observed_fractions(d, pa.outcomes(g));
+    prob.push_back(pr.grid.back().probability);
+  }
+  pr.gap_for_target = pa.gap_for_target(grid, prob, {}, &pr.target_status);
+  bootstrap_bands(pa, grid, resampler, s, pr);
+  code_rules(pa, c, design, modes, pr);
+  return pr;
+}
+
+// Damage limits with and without pounding (the campaign's own gaps): the fits of pound
+// fragility, without its bootstrap.
+std::vector<DamageRisk> damage_risks(const CampaignData& c, const HazardCurve& h,
+                                     const FragilitySettings& limits, double im_lo, double im_hi) {
   FragilitySettings fs = limits;
   fs.bootstrap.replicates = 0;
   const FragilityReport fr = analyse_fragility(c, fs);
+  std::vector<DamageRisk> out;
   for (std::size_t k = 0; k < fr.curves.size(); ++k) {
     const FragilityCurve& pc = fr.curves[k];
     if (!pc.pounding) continue;
@@ -389,56 +394,53 @@ RiskReport analyse_risk(const CampaignData& c, const HazardCurve& h, const RiskS
     dr.ratio = dr.maf_pounding / dr.maf_free;
     dr.outside_pounding = outside_share(h, dr.pounding, dr.maf_pounding, im_lo, im_hi);
     dr.outside_free = outside_share(h, dr.free, dr.maf_free, im_lo, im_hi);
-    r.damage.push_back(dr);
+    out.push_back(dr);
   }
+  return out;
+}
 
-  // What could not be estimated.
-  const double per_group = double(r.used) / double(std::max<std::size_t>(1, r.groups));
-  if (per_group < 20)
-    r.notes.push_back("only " + std::to_string(r.used) + " successful samples in " +
-                      std::to_string(r.groups) + (r.stripes ? " stripes" : " intensity bins") +
-                      " (about " + std::to_string(int(std::lround(per_group))) +
-                      " each): most fits have no finite estimate and the bands are wide; run "
-                      "the campaign with more samples");
-  for (const auto& pr : r.pairs) {
-    const std::string pair = "pair " + std::to_string(pr.pair + 1) + ": ";
-    long finite = 0;
-    for (const auto& e : pr.grid) finite += e.fit.finite();
-    if (finite < long(pr.grid.size()))
-      r.notes.push_back(pair + std::to_string(pr.grid.size() - std::size_t(finite)) + " of " +
-                        std::to_string(pr.grid.size()) +
-                        " gaps have no finite pounding fragility (status in the table and "
-                        "risk_gaps.csv): there nu and the probability are not estimated");
-    if (pr.target_status == TargetStatus::no_estimate)
-      r.notes.push_back(pair +
-                        "the gap for the target is not estimated: no gap has a finite "
-                        "pounding fragility");
-    else if (pr.target_status == TargetStatus::not_reached)
-      r.notes.push_back(pair +
-                        "the gap for the target is not estimated: no gap with a finite "
-                        "fit has a probability at or below the target (the larger gaps are "
-                        "closed by too few samples to fit)");
-    else if (pr.target_status == TargetStatus::at_most)
-      r.notes.push_back(pair +
-                        "the smallest gap with a finite fit already meets the target: the "
-                        "gap for the target is at most that");
-    if (pr.gap_band.finite < pr.bootstrap_replicates)
-      r.notes.push_back(pair + "the band of the gap comes from the " +
-                        std::to_string(pr.gap_band.finite) + " of " +
-                        std::to_string(pr.bootstrap_replicates) +
-                        " bootstrap replicates in which the gap could be estimated");
-    if (!pr.rules_computed) r.notes.push_back(pair + "code rules not computed: " + pr.rules_note);
-    if (std::isfinite(pr.gap_for_target)) {
-      const double share =
-          PairAnalysis(c, used, d, h, s, pr.pair).estimate(pr.gap_for_target).outside_share;
-      if (share > 0.1)
-        r.notes.push_back(pair + std::to_string(int(std::lround(100 * share))) +
-                          " % of nu at the gap for the target comes from intensities outside the "
-                          "campaign's, where the fitted fragility is extrapolated");
-    }
+// One pair's notes on what could not be estimated.
+void add_pair_notes(const PairRisk& pr, const PairAnalysis& pa, std::vector<std::string>& notes) {
+  const std::string pair = "pair " + std::to_string(pr.pair + 1) + ": ";
+  long finite = 0;
+  for (const auto& e : pr.grid) finite += e.fit.finite();
+  if (finite < long(pr.grid.size()))
+    notes.push_back(pair + std::to_string(pr.grid.size() - std::size_t(finite)) + " of " +
+                    std::to_string(pr.grid.size()) +
+                    " gaps have no finite pounding fragility (status in the table and "
+                    "risk_gaps.csv): there nu and the probability are not estimated");
+  if (pr.target_status == TargetStatus::no_estimate)
+    notes.push_back(pair +
+                    "the gap for the target is not estimated: no gap has a finite "
+                    "pounding fragility");
+  else if (pr.target_status == TargetStatus::not_reached)
+    notes.push_back(pair +
+                    "the gap for the target is not estimated: no gap with a finite "
+                    "fit has a probability at or below the target (the larger gaps are "
+                    "closed by too few samples to fit)");
+  else if (pr.target_status == TargetStatus::at_most)
+    notes.push_back(pair +
+                    "the smallest gap with a finite fit already meets the target: the "
+                    "gap for the target is at most that");
+  if (pr.gap_band.finite < pr.bootstrap_replicates)
+    notes.push_back(pair + "the band of the gap comes from the " +
+                    std::to_string(pr.gap_band.finite) + " of " +
+                    std::to_string(pr.bootstrap_replicates) +
+                    " bootstrap replicates in which the gap could be estimated");
+  if (!pr.rules_computed) notes.push_back(pair + "code rules not computed: " + pr.rules_note);
+  if (std::isfinite(pr.gap_for_target)) {
+    const double share = pa.estimate(pr.gap_for_target).outside_share;
+    if (share > 0.1)
+      notes.push_back(pair + std::to_string(int(std::lround(100 * share))) +
+                      " % of nu at the gap for the target comes from intensities outside the "
+                      "campaign's, where the fitted fragility is extrapolated");
   }
+}
+
+// The damage limits whose nu comes by more than a quarter from extrapolated intensities.
+void add_damage_notes(const std::vector<DamageRisk>& damage, std::vector<std::string>& notes) {
   std::string outside;
-  for (const auto& dr : r.damage)
+  for (const auto& dr : damage)
     for (double share : {dr.outside_pounding, dr.outside_free})
       if (share > 0.25) {
         char limit[32];
@@ -448,11 +450,64 @@ RiskReport analyse_risk(const CampaignData& c, const HazardCurve& h, const RiskS
         break;
       }
   if (!outside.empty())
-    r.notes.push_back(
+    notes.push_back(
         "damage limits whose nu takes more than 25 % from intensities outside the "
         "campaign's (an extrapolated fit; a large beta puts weight on the frequent "
         "weak motions): " +
         outside);
+}
+
+}  // namespace
+
+RiskReport analyse_risk(const CampaignData& c, const HazardCurve& h, const RiskSettings& s,
+                        const std::vector<BuildingMode>& modes, const FragilitySettings& limits) {
+  check_risk_inputs(c, s);
+  RiskReport r;
+  r.samples = c.samples;
+  for (int st : c.status) r.failed += st != 0;
+  std::vector<std::size_t> used;
+  const ExceedanceDesign d = exceedance_design(c, &used);
+  r.used = used.size();
+  r.stripes = d.stripes();
+  if (used.empty()) throw InputError(c.path + ": no successful sample to fit");
+
+  // Design intensity of the code rules.
+  r.design_im_given = s.design_im > 0;
+  r.design_im = r.design_im_given ? s.design_im : h.im_at_rate(1.0 / kDesignReturnPeriod);
+  DesignPoint design;
+  design.medians = group_medians(c, used, d);
+  design.im = r.design_im;
+  const std::vector<double>& group_im = design.medians.im;
+  r.groups = group_im.size();
+  design.in_range = !group_im.empty() && r.design_im >= group_im.front() * (1 - 1e-9) &&
+                    r.design_im <= group_im.back() * (1 + 1e-9);
+  if (r.design_im_given && !design.in_range)
+    throw InputError("design-im " + std::to_string(r.design_im / kGravity) +
+                     " g: outside the campaign's intensities " +
+                     std::to_string(group_im.empty() ? 0.0 : group_im.front() / kGravity) + " to " +
+                     std::to_string(group_im.empty() ? 0.0 : group_im.back() / kGravity) +
+                     " g; valid: an intensity inside them");
+
+  const double im_lo = *std::min_element(d.im.begin(), d.im.end());
+  const double im_hi = *std::max_element(d.im.begin(), d.im.end());
+  const BootstrapResampler resampler(d, s.bootstrap);
+  const std::size_t npairs = c.approach_free.buildings;
+  for (std::size_t p = 0; p < npairs; ++p)
+    r.pairs.push_back(
+        analyse_pair(PairAnalysis(c, used, d, h, s, p), p, c, d, s, resampler, design, modes));
+  r.damage = damage_risks(c, h, limits, im_lo, im_hi);
+
+  // What could not be estimated.
+  const double per_group = double(r.used) / double(std::max<std::size_t>(1, r.groups));
+  if (per_group < 20)
+    r.notes.push_back("only " + std::to_string(r.used) + " successful samples in " +
+                      std::to_string(r.groups) + (r.stripes ? " stripes" : " intensity bins") +
+                      " (about " + std::to_string(int(std::lround(per_group))) +
+                      " each): most fits have no finite estimate and the bands are wide; run "
+                      "the campaign with more samples");
+  for (const auto& pr : r.pairs)
+    add_pair_notes(pr, PairAnalysis(c, used, d, h, s, pr.pair), r.notes);
+  add_damage_notes(r.damage, r.notes);
   return r;
 }
 

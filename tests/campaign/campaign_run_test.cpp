@@ -278,10 +278,12 @@ TEST(CampaignRun, SigtermStopsCleanlyAndTheRunResumes) {
   ASSERT_TRUE(fs::exists(started)) << "the campaign did not start within 120 s";
   const int status = signal_and_wait(pid, SIGTERM);
   ASSERT_TRUE(WIFEXITED(status));
-  EXPECT_EQ(WEXITSTATUS(status), 0);
   if (fs::exists(cut + ".journal")) {  // stopped before the end (the usual case)
+    EXPECT_EQ(WEXITSTATUS(status), 75) << "stopped early: EX_TEMPFAIL, resumable";
     EXPECT_FALSE(fs::exists(cut));
     ASSERT_EQ(sh(pound(n + " --out " + cut + " --resume")), 0);
+  } else {
+    EXPECT_EQ(WEXITSTATUS(status), 0) << "the run finished before the signal";
   }
   expect_same_numbers(ref, cut);
 }
@@ -445,6 +447,21 @@ TEST(CampaignRun, FailedSamplesAreListedUpToTwentyAndExitFour) {
   EXPECT_EQ(notice, 1);
   EXPECT_NE(done.find("60 samples, 30 failed"), std::string::npos) << done;
   EXPECT_TRUE(fs::exists(out));  // the samples that ran are kept, the failures marked
+}
+
+TEST(CampaignRun, HelpListsTheExitStatuses) {
+  // Scripts and job chains read how a run ended from its status (issue 24): --help says which.
+  const std::string help = dir() + "/help.txt";
+  ASSERT_EQ(sh(pound("--help") + " >" + help), 0);
+  std::ifstream in(help);
+  const std::string text((std::istreambuf_iterator<char>(in)), {});
+  for (const char* part :
+       {"Exit status: 0 finished (RUN.h5 complete, or already complete); 2 bad input",
+        "4 finished with\nfailed samples",
+        "75 (EX_TEMPFAIL) stopped early by\nSIGTERM, SIGUSR1, "
+        "SIGINT or a full disk, the journal kept: run again "
+        "with --resume.\n"})
+    EXPECT_NE(text.find(part), std::string::npos) << part << " in:\n" << text;
 }
 
 }  // namespace

@@ -193,5 +193,30 @@ TEST(SampledParameters, BadValuesNameTheKeyAndWhatIsValid) {
             std::string::npos);
 }
 
+TEST(SampledParameters, TheSampledContactModelTakesEveryModelNameTheDampedSearsModelIncluded) {
+  // Not discrete: the names it may take, the damped Sears model's last (it was left out).
+  const std::string m = error_of({"--sample.model", "uniform(0, 1)"});
+  EXPECT_NE(m.find("--sample.model = 'uniform(0, 1)'"), std::string::npos) << m;
+  EXPECT_NE(m.find("valid: discrete(name: weight, ...) with names from stereomechanical, lve, "
+                   "mlve, nlve, hertzdamp, hertzdamp-ye, kelvin-ye, hc-linear, hc-hertz, sears"),
+            std::string::npos)
+      << m;
+  // A name that is no model lists the same names.
+  EXPECT_NE(error_of({"--sample.model", "discrete(hc-linear: 1, sear: 1)"})
+                .find("unknown contact model 'sear'; valid: stereomechanical, lve, mlve, nlve, "
+                      "hertzdamp, hertzdamp-ye, kelvin-ye, hc-linear, hc-hertz, sears"),
+            std::string::npos);
+  // The labels become each sample's model; only the sampled model parameter does that.
+  const CampaignStudy st = study({"--sample.model", "discrete(hc-linear: 1, lve: 1)"}, 16);
+  ASSERT_EQ(st.parameters.size(), 1u);
+  EXPECT_TRUE(st.parameters[0].is_contact_model());
+  SampleRunner r(st);
+  int lve = 0;
+  for (long id = 0; id < 16; ++id) lve += r.draw(id).model == "lve";
+  EXPECT_EQ(lve, 8);  // Latin hypercube: half of the 16 samples in each of the two strata
+  const CampaignStudy st2 = study({"--sample.e", "uniform(0.5, 0.8)"});
+  EXPECT_FALSE(st2.parameters[0].is_contact_model());
+}
+
 }  // namespace
 }  // namespace pound

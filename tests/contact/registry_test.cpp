@@ -27,6 +27,14 @@ TEST(ContactRegistry, UnknownNameListsValidOnes) {
   }
 }
 
+TEST(ContactRegistry, TheDampedSearsModelIsKnownByItsNameOnly) {
+  EXPECT_TRUE(is_sears_model("sears"));
+  for (const char* other : {"Sears", "sears ", "hc-linear", ""})
+    EXPECT_FALSE(is_sears_model(other));
+  EXPECT_EQ(every_contact_model_name(), contact_model_names() + ", sears");
+  EXPECT_THROW(find_contact_model(kSearsModelName, "t"), InputError);  // no lumped law
+}
+
 TEST(ContactLaws, LinearViscoelasticIsTensileNearSeparationAsPublished) {
   ContactParameters p;
   p.k = 1e6;

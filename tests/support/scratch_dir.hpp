@@ -41,4 +41,12 @@ inline const ScratchDir& process_scratch_dir() {
   return d;
 }
 
+/// process_scratch_dir()/name, made on first use: the files of one test file apart from those
+/// of the others compiled into the same test program (tests/app holds one per command).
+inline std::string process_scratch_subdir(const std::string& name) {
+  const std::string path = process_scratch_dir() / name;
+  std::filesystem::create_directories(path);
+  return path;
+}
+
 }  // namespace pound::test

@@ -35,9 +35,11 @@ std::string slurp(const std::string& path) {
 }
 
 // One fresh directory per test process: ctest runs the tests of this file in parallel
-// processes, which must not share stdout.txt and stderr.txt.
+// processes, which must not share stdout.txt and stderr.txt (a folder of its own beside the
+// other command tests of tests/app).
 fs::path temp_dir() {
-  return test::process_scratch_dir().path();
+  static const std::string d = test::process_scratch_subdir("motion");
+  return d;
 }
 
 CmdResult run(const std::string& args) {

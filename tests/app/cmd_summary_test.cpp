@@ -11,26 +11,21 @@
 #include <string>
 
 #include "../support/scratch_dir.hpp"
+#include "../support/shell.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 
+// The files of this test file, apart from the other command tests of tests/app.
 const std::string& dir() {
-  return pound::test::process_scratch_dir().path();
+  static const std::string d = pound::test::process_scratch_subdir("summary");
+  return d;
 }
 
+using pound::test::slurp;
 int sh(const std::string& cmd) {
-  ::setenv("ASAN_OPTIONS", "detect_leaks=0", 0);  // Open MPI's components leak at exit
-  const int s = std::system(cmd.c_str());
-  return WIFEXITED(s) ? WEXITSTATUS(s) : -1;
-}
-
-std::string slurp(const std::string& path) {
-  std::ifstream f(path, std::ios::binary);
-  std::stringstream s;
-  s << f.rdbuf();
-  return s.str();
+  return pound::test::run_command(cmd);
 }
 
 TEST(CmdSummary, StoredAndRecomputedStatisticsAgree) {

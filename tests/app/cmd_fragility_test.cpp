@@ -15,28 +15,21 @@
 #include <vector>
 
 #include "../support/scratch_dir.hpp"
+#include "../support/shell.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 
+// The files of this test file, apart from the other command tests of tests/app.
 const std::string& dir() {
-  return pound::test::process_scratch_dir().path();
+  static const std::string d = pound::test::process_scratch_subdir("fragility");
+  return d;
 }
 
+using pound::test::slurp;
 int sh(const std::string& cmd) {
-  // Open MPI's dynamically loaded components leak at exit, which LeakSanitizer would report in
-  // the sanitizer build; address and undefined-behaviour errors stay fatal.
-  ::setenv("ASAN_OPTIONS", "detect_leaks=0", 0);
-  const int s = std::system(cmd.c_str());
-  return WIFEXITED(s) ? WEXITSTATUS(s) : -1;
-}
-
-std::string slurp(const std::string& path) {
-  std::ifstream f(path, std::ios::binary);
-  std::stringstream s;
-  s << f.rdbuf();
-  return s.str();
+  return pound::test::run_command(cmd);
 }
 
 // A 40-sample campaign of the smoke study (four PGA stripes), made once.

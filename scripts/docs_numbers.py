@@ -1,0 +1,393 @@
+#!/usr/bin/python3
+"""Regenerates the numbers of docs/fragility.md ("Example") and docs/risk.md ("The default
+study") from runs of the default study, and prints each table in the Markdown form those pages
+use, so that a page's numbers never outlive the study (issue 24):
+
+    /usr/bin/python3 scripts/docs_numbers.py [--work DIR] [--ranks 2] [--reuse]
+
+Runs, with build/bin/pound, three campaigns of studies/fragility-default.ini into DIR (default
+results/docs-numbers/): the study as it is (default.h5), with --generator.variability none
+(no-variability.h5: every motion matched to the design spectrum, the study before issue 12),
+and that with elastic storeys (elastic.h5: --buildingN.hysteresis elastic), each on --ranks MPI
+ranks, and studies/campaign-smoke.ini with a sampled scale factor (smoke-continuous.h5, 200
+samples); then pound fragility on each and pound risk on the first (the example hazard curve).
+About a minute on two cores.
+--reuse keeps campaign and analysis files already in DIR (after a change of the study or the
+code, run without it). Paste each printed block over the table its heading names.
+"""
+import argparse
+import csv
+import os
+import subprocess
+import sys
+
+G = 9.80665  # m/s^2 per g, as src/motion/ground_motion.hpp
+ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+POUND = os.path.join(ROOT, "build", "bin", "pound")
+STUDY = os.path.join(ROOT, "studies", "fragility-default.ini")
+HAZARD = os.path.join(ROOT, "studies", "hazard-los-angeles-pga.csv")
+
+SMOKE = os.path.join(ROOT, "studies", "campaign-smoke.ini")
+
+# name: (study, campaign options, fragility options)
+CAMPAIGNS = {
+    "default": (STUDY, [], []),
+    "no-variability": (STUDY, ["--generator.variability", "none"], []),
+    "elastic": (STUDY, ["--generator.variability", "none", "--building1.hysteresis", "elastic",
+                        "--building2.hysteresis", "elastic"], []),
+    # The smoke study with a sampled scale factor instead of its stripes (its `levels` line
+    # left out: a study gives one or the other).
+    "smoke-continuous": (None, ["--intensity.scale", "lognormal(1,0.6,0.1,5)", "--samples", "200"],
+                         ["--drift-limits", "0.02", "--replicates", "300"]),
+}
+
+
+def run(cmd, out=None):
+    """Runs cmd (a list), stdout to the file `out` or returned; stops on failure."""
+    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    print("docs_numbers: " + " ".join(cmd), file=sys.stderr)
+    r = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env)
+    if r.returncode != 0:
+        sys.exit(f"docs_numbers: exit status {r.returncode}: {' '.join(cmd)}\n{r.stderr}")
+    if out:
+        with open(out, "w") as f:
+            f.write(r.stdout)
+    return r.stdout
+
+
+def make_runs(work, ranks, reuse):
+    os.makedirs(work, exist_ok=True)
+    mpi = ["mpirun", "-np", str(ranks), "--oversubscribe"]
+    if os.geteuid() == 0:
+        mpi.append("--allow-run-as-root")
+    smoke = os.path.join(work, "smoke-continuous.ini")
+    with open(SMOKE) as f, open(smoke, "w") as g:
+        g.write("".join(line for line in f if not line.lstrip().startswith("levels")))
+    for name, (study, extra, frag_extra) in CAMPAIGNS.items():
+        h5 = os.path.join(work, name + ".h5")
+        if not (reuse and os.path.exists(h5)):
+            run(mpi + [POUND, "campaign", "--config", study or smoke, "--out", h5, "--force",
+                       "--quiet"] + extra)
+        frag = os.path.join(work, name + "-fragility")
+        if not (reuse and os.path.exists(os.path.join(frag, "curves.csv"))):
+            run([POUND, "fragility", "--input", h5, "--out", frag] + frag_extra,
+                out=os.path.join(work, name + "-fragility.txt"))
+    risk = os.path.join(work, "default-risk")
+    if not (reuse and os.path.exists(os.path.join(risk, "risk_gaps.csv"))):
+        run([POUND, "risk", "--input", os.path.join(work, "default.h5"), "--hazard", HAZARD,
+             "--out", risk], out=os.path.join(work, "default-risk.txt"))
+
+
+def read_csv(path):
+    with open(path, newline="") as f:
+        return list(csv.DictReader(f))
+
+
+def curves(work, name):
+    """(building name, edp, limit, pounding) -> the row of curves.csv."""
+    out = {}
+    for r in read_csv(os.path.join(work, name + "-fragility", "curves.csv")):
+        out[(r["building_name"], r["edp"], float(r["limit"]), r["pounding"] == "true")] = r
+    return out
+
+
+def theta_g(row):
+    return float(row["theta_mps2"]) / G
+
+
+def headline(work):
+    """The shift block of pound fragility's output, as docs/fragility.md shows it."""
+    text = open(os.path.join(work, "default-fragility.txt")).read().splitlines()
+    lines = []
+    for line in text[1:]:
+        if not line.strip():
+            break
+        lines.append(line)
+    return "```\n" + "\n".join(lines) + "\n```"
+
+
+def headline_facts(work):
+    """The numbers the prose below the headline quotes."""
+    c = curves(work, "default")
+    finite = sum(r["status"] == "ok" for r in c.values())
+    drift = {b: [theta_g(c[(b, "drift", lim, True)]) for lim in (0.01, 0.02, 0.04)]
+             for b in ("5-storey", "3-storey")}
+    yield_g = [theta_g(c[(b, "ductility", 1.0, p)]) for b in ("5-storey", "3-storey")
+               for p in (True, False)]
+    return "\n".join([
+        f"- finite curves: {finite} of {len(c)}",
+        "- peak-drift limits 1/2/4 % with pounding [g]: 5-storey "
+        + ", ".join(f"{x:.2f}" for x in drift["5-storey"]) + "; 3-storey "
+        + ", ".join(f"{x:.2f}" for x in drift["3-storey"]),
+        f"- ductility 1 (yield), both buildings, with and without pounding: "
+        f"{min(yield_g):.2f}-{max(yield_g):.2f} g",
+    ])
+
+
+BETA_ROWS = [("5-storey", "drift", 0.01), ("5-storey", "drift", 0.02), ("5-storey", "drift", 0.04),
+             ("3-storey", "drift", 0.01), ("3-storey", "drift", 0.02), ("3-storey", "drift", 0.04),
+             ("5-storey", "ductility", 1.0), ("5-storey", "ductility", 2.0),
+             ("5-storey", "ductility", 4.0), ("3-storey", "ductility", 1.0),
+             ("3-storey", "ductility", 2.0), ("3-storey", "ductility", 4.0),
+             ("5-storey", "residual_drift", 0.002), ("3-storey", "residual_drift", 0.002)]
+
+
+def limit_text(edp, limit):
+    if edp in ("drift", "residual_drift"):
+        return f"{edp.replace('_', ' ')} {100 * limit:g} %"
+    return f"{edp} {limit:g}"
+
+
+def theta_beta(row):
+    if row is None:
+        return ""
+    if row["status"] != "ok":
+        return row["status"]
+    return f"{theta_g(row):.3f} / {float(row['beta']):.2f}"
+
+
+def betas_table(work):
+    before, after = curves(work, "no-variability"), curves(work, "default")
+    out = ["| building | EDP, limit | before: pounding | before: free | after: pounding | after: free |",
+           "|---|---|---|---|---|---|"]
+    for b, edp, lim in BETA_ROWS:
+        cells = [theta_beta(t.get((b, edp, lim, p))) for t in (before, after) for p in (True, False)]
+        out.append(f"| {b} | {limit_text(edp, lim)} | " + " | ".join(cells) + " |")
+    # The pounding force of the pair (listed under building 1).
+    force = [theta_beta(t.get(("5-storey", "force", 1e5, True))) for t in (before, after)]
+    out.append(f"| both | force 100 kN | {force[0]} | | {force[1]} | |")
+    return "\n".join(out)
+
+
+def elastic_table(work):
+    elastic, yielding = curves(work, "elastic"), curves(work, "no-variability")
+
+    def cell(c, b, lim, first):
+        pnd, free = c.get((b, "drift", lim, True)), c.get((b, "drift", lim, False))
+        text = [theta_g(r) if r and r["status"] == "ok" else None for r in (pnd, free)]
+        shown = [f"{x:.3f}" if x is not None else (r["status"] if r else "-")
+                 for x, r in zip(text, (pnd, free))]
+        s = f"{shown[0]} / {shown[1]}"
+        if None not in text:
+            s += f" ({'ratio ' if first else ''}{text[0] / text[1]:.2f})"
+        return s
+
+    out = ["| building | drift | elastic: pounding / free [g] | yielding: pounding / free [g] |",
+           "|---|---|---|---|"]
+    first = True
+    for b in ("5-storey", "3-storey"):
+        for lim in (0.01, 0.02, 0.04):
+            out.append(f"| {b} | {100 * lim:g} % | {cell(elastic, b, lim, first)} | "
+                       f"{cell(yielding, b, lim, False)} |")
+            first = False
+    return "\n".join(out)
+
+
+def span(values, fmt="{:.2f}"):
+    """'lo-hi' of a list of numbers ('lo to hi' when signed)."""
+    sep = " to " if "+" in fmt else "-"
+    return fmt.format(min(values)) + sep + fmt.format(max(values))
+
+
+def betas(c, edp, building=None):
+    return [float(r["beta"]) for (b, e, _, _), r in c.items()
+            if e == edp and r["status"] == "ok" and (building is None or b == building)]
+
+
+def shift_ratios(work, name, edp):
+    return [float(r["ratio"]) for r in read_csv(os.path.join(work, name + "-fragility", "shift.csv"))
+            if r["edp"] == edp and r["ratio"]]
+
+
+def prcc_top(work, name, building, response, n=3):
+    rows = [r for r in read_csv(os.path.join(work, name + "-fragility", "sensitivity.csv"))
+            if r["building_name"] == building and r["response"] == response]
+    rows.sort(key=lambda r: int(r["rank"]))
+    return ", ".join(f"{r['parameter']} {float(r['prcc']):+.2f}" for r in rows[:n])
+
+
+def betas_facts(work):
+    """The numbers the prose around the betas table quotes."""
+    before, after = curves(work, "no-variability"), curves(work, "default")
+    med = {}
+    for edp in ("drift", "ductility"):
+        med[edp] = [100 * (theta_g(after[k]) / theta_g(before[k]) - 1) for k in after
+                    if k[1] == edp and after[k]["status"] == "ok" and k in before
+                    and before[k]["status"] == "ok"]
+    out = []
+    for edp in ("drift", "ductility", "residual_drift"):
+        out.append(f"- {edp} betas, before: {span(betas(before, edp))} (5-storey "
+                   f"{span(betas(before, edp, '5-storey'))}, 3-storey "
+                   f"{span(betas(before, edp, '3-storey'))}); after: {span(betas(after, edp))} "
+                   f"(5-storey {span(betas(after, edp, '5-storey'))}, 3-storey "
+                   f"{span(betas(after, edp, '3-storey'))})")
+    for edp in ("drift", "ductility"):
+        out.append(f"- {edp} medians, after / before - 1: {span(med[edp], '{:+.0f}')} %")
+    for edp in ("drift", "ductility", "residual_drift"):
+        out.append(f"- shift ratios of {edp}: after {span(shift_ratios(work, 'default', edp))}, "
+                   f"before {span(shift_ratios(work, 'no-variability', edp))}")
+    for name, when in (("default", "after"), ("no-variability", "before")):
+        out.append(f"- 3-storey disp_amplification, largest |PRCC| {when}: "
+                   + prcc_top(work, name, "3-storey", "disp_amplification"))
+    return "\n".join(out)
+
+
+def elastic_facts(work):
+    elastic, yielding = curves(work, "elastic"), curves(work, "no-variability")
+    ok = lambda r: r is not None and r["status"] == "ok"
+    lower = [100 * (1 - theta_g(yielding[k]) / theta_g(elastic[k])) for k in elastic
+             if k[1] == "drift" and ok(elastic[k]) and ok(yielding.get(k))]
+    out = [f"- yielding lowers the drift limits' median PGA by {span(lower, '{:.0f}')} % "
+           "(the limits with a finite fit in both)"]
+    for name, c in (("elastic", elastic), ("yielding", yielding)):
+        p, f = c[("3-storey", "drift", 0.01, True)], c[("3-storey", "drift", 0.01, False)]
+        if ok(p) and ok(f):
+            out.append(f"- 3-storey, 1 % drift, {name}: reached at "
+                       f"{100 * (1 - theta_g(p) / theta_g(f)):.0f} % lower PGA with pounding")
+    return "\n".join(out)
+
+
+def pounding_facts(work):
+    """Where pounding shows in the default study: the storeys next to the contact."""
+    import h5py
+    import numpy as np
+    c = curves(work, "default")
+    out = []
+    for edp, lim in (("residual_drift", 0.002), ("ductility", 2.0)):
+        for b in ("5-storey", "3-storey"):
+            p, f = c[(b, edp, lim, True)], c[(b, edp, lim, False)]
+            out.append(f"- {b}, {limit_text(edp, lim)}: median PGA "
+                       f"{100 * (1 - theta_g(p) / theta_g(f)):.0f} % lower with pounding")
+    with h5py.File(os.path.join(work, "default.h5"), "r") as h:
+        im = h["/samples/im"][()] / G
+        band = (im > 0.3 - 1e-9) & (im < 0.6 + 1e-9)
+        for name, key in (("ductility", "ductility"), ("residual drift", "residual_drift")):
+            pnd = h[f"/response/{key}_pounding"][()][band]
+            free = h[f"/response/{key}_free"][()][band]
+            ratios = {(b, s): np.nanmedian(pnd[:, b, s]) / np.nanmedian(free[:, b, s])
+                      for b, floors in ((0, 5), (1, 3)) for s in range(floors)}
+            out.append(f"- {name}, 0.3-0.6 g ({int(band.sum())} samples), median with pounding / "
+                       f"median without: 5-storey storeys 1-5 "
+                       + ", ".join(f"{ratios[(0, s)]:.2f}" for s in range(5))
+                       + "; 3-storey storeys 1-3 " + ", ".join(f"{ratios[(1, s)]:.2f}" for s in range(3)))
+        n = len(im)
+        for run in ("pounding", "free"):
+            d = h[f"/response/ductility_{run}"][()][:, 0, :]
+            top = np.nanargmax(d, axis=1)
+            out.append(f"- 5-storey's largest ductility in its 4th or 5th storey, {run}: "
+                       f"{int(np.sum(top >= 3))} of {n} samples")
+    force = c[("5-storey", "force", 1e5, True)]
+    out.append(f"- peak pounding force 100 kN: median PGA {theta_g(force):.3f} g, beta "
+               f"{float(force['beta']):.2f}")
+    return "\n".join(out)
+
+
+def continuous_facts(work):
+    c = curves(work, "smoke-continuous")
+    p, f = c[("T0.75", "drift", 0.02, True)], c[("T0.75", "drift", 0.02, False)]
+    shift = [r for r in read_csv(os.path.join(work, "smoke-continuous-fragility", "shift.csv"))
+             if r["building_name"] == "T0.75" and r["edp"] == "drift"][0]
+    return (f"- T0.75 at 2 % drift: theta {theta_g(p):.3f} g with pounding against "
+            f"{theta_g(f):.3f} g without, ratio {float(shift['ratio']):.3f} "
+            f"[{float(shift['ratio_ci90_lo']):.3f}, {float(shift['ratio_ci90_hi']):.3f}]")
+
+
+def risk_block(work):
+    """The first two blocks of pound risk's table: the gap for the target and the code rules."""
+    text = open(os.path.join(work, "default-risk.txt")).read()
+    start = text.index("Gap needed for the target")
+    end = text.index("Pounding at each gap")
+    return "```\n" + text[start:end].rstrip("\n") + "\n```"
+
+
+def e2(x):
+    """1.37e-2 as docs/risk.md writes it."""
+    m, e = f"{x:.2e}".split("e")
+    return f"{m}e{int(e)}"
+
+
+def prob(x, p=None):
+    """A probability as docs/risk.md writes it: 4 decimals when the estimate p is below 0.01."""
+    return f"{x:.4f}" if (x if p is None else p) < 0.01 else f"{x:.3f}"
+
+
+# The grid points docs/risk.md shows: the first five above 0 and the seventh.
+RISK_GAP_ROWS = [1, 2, 3, 4, 5, 7]
+
+
+def risk_gaps_table(work):
+    rows = [r for r in read_csv(os.path.join(work, "default-risk", "risk_gaps.csv"))
+            if r["pair"] == "1"]
+    out = ["| gap [m] | samples pounding | theta [g] | beta | nu [1/yr] | P(50 years) |",
+           "|---|---|---|---|---|---|"]
+    for k in RISK_GAP_ROWS:
+        if k >= len(rows) or rows[k]["status"] != "ok":
+            continue
+        r = rows[k]
+        p, lo, hi = (float(r[x]) for x in ("probability", "probability_ci90_lo",
+                                            "probability_ci90_hi"))
+        out.append(f"| {float(r['gap_m']):.3f} | {r['pounding']} / {r['analyses']} | "
+                   f"{float(r['theta_mps2']) / G:.3f} | {float(r['beta']):.2f} | "
+                   f"{e2(float(r['maf_per_year']))} | {prob(p)} [{prob(lo, p)}, {prob(hi, p)}] |")
+    return "\n".join(out)
+
+
+def risk_damage_table(work):
+    rows = read_csv(os.path.join(work, "default-risk", "damage_maf.csv"))
+    by = {(r["building_name"], r["edp"], float(r["limit"])): r for r in rows}
+    groups = [("drift", "drift 1 % / 2 % / 4 %", (0.01, 0.02, 0.04)),
+              ("residual_drift", "residual drift 0.2 / 0.5 / 1 %", (0.002, 0.005, 0.01)),
+              ("ductility", "ductility 1 / 2 / 4", (1.0, 2.0, 4.0))]
+    out = ["| building | limit | nu with pounding | nu without | ratio |", "|---|---|---|---|---|"]
+    for b in ("5-storey", "3-storey"):
+        for edp, label, limits in groups:
+            rs = [by.get((b, edp, lim)) for lim in limits]
+            if None in rs:
+                continue
+
+            def col(key, fmt):
+                return " / ".join(fmt(float(r[key])) if r[key] else "-" for r in rs)
+
+            out.append(f"| {b} | {label} | {col('maf_pounding_per_year', e2)} | "
+                       f"{col('maf_free_per_year', e2)} | {col('ratio', lambda x: f'{x:.2f}')} |")
+    return "\n".join(out)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--work", default=os.path.join(ROOT, "results", "docs-numbers"))
+    ap.add_argument("--ranks", type=int, default=2)
+    ap.add_argument("--reuse", action="store_true")
+    a = ap.parse_args()
+    if not os.access(POUND, os.X_OK):
+        sys.exit(f"docs_numbers: {POUND} not found; build first (cmake --preset release && "
+                 "cmake --build --preset release)")
+    make_runs(a.work, a.ranks, a.reuse)
+    sections = [
+        ("docs/fragility.md, Example: the headline (pound fragility --input default.h5)",
+         headline(a.work)),
+        ("docs/fragility.md, Example: numbers the prose below the headline quotes",
+         headline_facts(a.work)),
+        ("docs/fragility.md, Example: the betas before and after issue 12", betas_table(a.work)),
+        ("docs/fragility.md, Example: numbers the prose around the betas table quotes",
+         betas_facts(a.work)),
+        ("docs/fragility.md, Example: how the curves moved from the elastic study",
+         elastic_table(a.work)),
+        ("docs/fragility.md, Example: numbers the prose below the elastic table quotes",
+         elastic_facts(a.work)),
+        ("docs/fragility.md, Example: where pounding shows (the default study)",
+         pounding_facts(a.work)),
+        ("docs/fragility.md, Example: the continuous-IM variant of the smoke study",
+         continuous_facts(a.work)),
+        ("docs/risk.md, The default study: pound risk's first blocks", risk_block(a.work)),
+        ("docs/risk.md, The default study: pounding in 50 years against the gap",
+         risk_gaps_table(a.work)),
+        ("docs/risk.md, The default study: damage limits", risk_damage_table(a.work)),
+    ]
+    for title, body in sections:
+        print(f"== {title}\n\n{body}\n")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
