@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "app/commands.hpp"
+#include "app/help.hpp"
 #include "app/table_number.hpp"
 #include "core/error.hpp"
 #include "fragility/campaign_reader.hpp"
@@ -236,11 +237,7 @@ int run_fragility(int argc, const char* const* argv) {
               "Lognormal fragility curves with and without pounding from a campaign result file "
               "(maximum likelihood, Baker 2015), bootstrap bands, rank sensitivity.",
               specs());
-  opt.parse(argc, argv);
-  if (opt.help_requested()) {
-    std::cout << opt.help_text();
-    return 0;
-  }
+  if (help_asked(opt, argc, argv)) return 0;
   if (!opt.given("input")) throw InputError("command line: --input RUN.h5 is required");
   const std::string input = opt.get_path("input");
   // Limits: the command line first, then the study's [fragility] section stored in the

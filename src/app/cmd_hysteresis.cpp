@@ -6,6 +6,7 @@
 #include <string>
 
 #include "app/commands.hpp"
+#include "app/help.hpp"
 #include "core/error.hpp"
 #include "hysteresis/drive.hpp"
 #include "hysteresis/registry.hpp"
@@ -60,11 +61,7 @@ int run_hysteresis(int argc, const char* const* argv) {
               "One storey driven through a drift history (one drift in m per line, from rest) "
               "by a storey law's incremental form; prints drift_m,shear_N per drift.",
               hysteresis_specs());
-  opt.parse(argc, argv);
-  if (opt.help_requested()) {
-    std::cout << opt.help_text();
-    return 0;
-  }
+  if (help_asked(opt, argc, argv)) return 0;
   const Building b = storey_of(opt);
   if (!opt.given("drifts"))
     throw InputError("command line: --drifts FILE is required (one storey drift in m per line)");

@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "app/commands.hpp"
+#include "app/help.hpp"
 #include "contact/registry.hpp"
 #include "io/json.hpp"
 #include "io/options.hpp"
@@ -64,11 +65,7 @@ int run_impact(int argc, const char* const* argv) {
   const auto sears_specs = sears::sears_impact_option_specs();
   specs.insert(specs.end(), sears_specs.begin(), sears_specs.end());
   Options opt("impact", "Two free bodies (no springs, no ground motion) colliding once.", specs);
-  opt.parse(argc, argv);
-  if (opt.help_requested()) {
-    std::cout << opt.help_text();
-    return 0;
-  }
+  if (help_asked(opt, argc, argv)) return 0;
   const std::string model = opt.get_string("model");
   FreeImpactSpec spec;
   spec.m1 = opt.get_positive("m1");

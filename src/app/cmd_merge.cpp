@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "app/commands.hpp"
+#include "app/help.hpp"
 #include "campaign/merge.hpp"
 #include "io/atomic_file.hpp"
 #include "io/options.hpp"
@@ -17,11 +18,7 @@ int run_merge(int argc, const char* const* argv) {
               {{"out", "", "", "merged result file (HDF5)"},
                {"parts", "", "", "the part files (comma or space separated), in any order"},
                {"force", "", "", "overwrite an existing output file", true}});
-  opt.parse(argc, argv);
-  if (opt.help_requested()) {
-    std::cout << opt.help_text();
-    return 0;
-  }
+  if (help_asked(opt, argc, argv)) return 0;
   if (!opt.given("out") || !opt.given("parts"))
     throw InputError("command line: --out MERGED.h5 and --parts 'A.h5,B.h5,...' are required");
   std::string list = opt.get_string("parts");

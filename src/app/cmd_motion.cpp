@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "app/commands.hpp"
+#include "app/help.hpp"
 #include "core/error.hpp"
 #include "io/json.hpp"
 #include "io/options.hpp"
@@ -73,13 +74,6 @@ void print_spectrum(const ResponseSpectrum& r, JsonWriter* json) {
                 sa_g[i]);
 }
 
-Options parse(const std::string& sub, const std::string& summary, std::vector<OptionSpec> specs,
-              int argc, const char* const* argv) {
-  Options o("motion " + sub, summary, std::move(specs));
-  o.parse(argc, argv);
-  return o;
-}
-
 // --- pound motion spectrum ------------------------------------------------------------------
 
 int run_spectrum(int argc, const char* const* argv) {
@@ -99,13 +93,9 @@ int run_spectrum(int argc, const char* const* argv) {
       {"substep", "-", "0.05", "largest step as a fraction of T (0: no sub-stepping)"},
   };
   for (auto& s : period_specs()) specs.push_back(s);
-  const Options o =
-      parse("spectrum", "Elastic response spectra of a record (Nigam & Jennings 1969).", specs,
-            argc, argv);
-  if (o.help_requested()) {
-    std::cout << o.help_text();
-    return 0;
-  }
+  Options o("motion spectrum", "Elastic response spectra of a record (Nigam & Jennings 1969).",
+            specs);
+  if (help_asked(o, argc, argv)) return 0;
   MotionFileSpec spec;
   spec.path = o.get_string("input");
   spec.format = parse_motion_format(o.get_string("format"), o.where("format"));
@@ -144,11 +134,8 @@ int run_spectrum(int argc, const char* const* argv) {
 int run_target(int argc, const char* const* argv) {
   std::vector<OptionSpec> specs = design_spectrum_option_specs();
   for (auto& s : period_specs()) specs.push_back(s);
-  const Options o = parse("target", "A design spectrum at a list of periods.", specs, argc, argv);
-  if (o.help_requested()) {
-    std::cout << o.help_text();
-    return 0;
-  }
+  Options o("motion target", "A design spectrum at a list of periods.", specs);
+  if (help_asked(o, argc, argv)) return 0;
   const auto target = make_design_spectrum(o);
   ResponseSpectrum r;
   r.damping = target->damping();

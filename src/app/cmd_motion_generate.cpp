@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "app/commands.hpp"
+#include "app/help.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
 #include "io/h5.hpp"
@@ -322,11 +323,7 @@ void print_table(const GeneratedMotions& g, const DesignSpectrum& target,
 int run_motion_generate(int argc, const char* const* argv) {
   Options o("motion generate", "Spectrum-compatible motions (Gasparini & Vanmarcke 1976).",
             generate_specs());
-  o.parse(argc, argv);
-  if (o.help_requested()) {
-    std::cout << o.help_text();
-    return 0;
-  }
+  if (help_asked(o, argc, argv)) return 0;
   const auto target = make_design_spectrum(o);
   const long count = o.get_int("count");
   if (count < 1 || count > 100000) throw o.invalid("count", "valid: 1 to 100000");

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "app/commands.hpp"
+#include "app/help.hpp"
 #include "app/table_number.hpp"
 #include "core/error.hpp"
 #include "fragility/campaign_reader.hpp"
@@ -238,11 +239,7 @@ int run_risk(int argc, const char* const* argv) {
               "Pounding risk at every gap from a campaign and a site's hazard curve: mean annual "
               "frequency, probability in T years, the gap for a target, code rules, damage limits.",
               specs());
-  opt.parse(argc, argv);
-  if (opt.help_requested()) {
-    std::cout << opt.help_text();
-    return 0;
-  }
+  if (help_asked(opt, argc, argv)) return 0;
   if (!opt.given("input") || !opt.given("hazard"))
     throw InputError("command line: --input RUN.h5 and --hazard HAZARD.csv are required");
   RiskSettings s;

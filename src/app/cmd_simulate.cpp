@@ -5,6 +5,8 @@
 #include <vector>
 
 #include "app/commands.hpp"
+#include "app/help.hpp"
+#include "contact/registry.hpp"
 #include "io/json.hpp"
 #include "io/options.hpp"
 #include "simulation/history_file.hpp"
@@ -28,23 +30,20 @@ void print_json(const RowSimulation& s, const BuildingRow& row,
     };
     const BuildingCollapse cp = collapse_of(s.collapse_pounding), cf = collapse_of(s.collapse_free);
     w.field("collapsed_pounding", cp.collapsed).field("collapsed_free", cf.collapsed);
-    w.key("collapse_time_s").begin_object();
-    for (const auto* c : {&cp, &cf}) {
-      w.key(c == &cp ? "pounding" : "free");
-      if (c->collapsed)
-        w.value(c->time);
-      else
-        w.null();
-    }
-    w.end_object().key("collapse_storey").begin_object();
-    for (const auto* c : {&cp, &cf}) {
-      w.key(c == &cp ? "pounding" : "free");
-      if (c->collapsed)
-        w.value(c->storey);
-      else
-        w.null();
-    }
-    w.end_object();
+    // {"pounding": value, "free": value}, null for a building standing in that run.
+    auto per_run = [&](const char* key, auto value) {
+      w.key(key).begin_object();
+      for (const auto* c : {&cp, &cf}) {
+        w.key(c == &cp ? "pounding" : "free");
+        if (c->collapsed)
+          w.value(value(*c));
+        else
+          w.null();
+      }
+      w.end_object();
+    };
+    per_run("collapse_time_s", [](const BuildingCollapse& c) { return c.time; });
+    per_run("collapse_storey", [](const BuildingCollapse& c) { return c.storey; });
     w.key("floors").begin_array();
     for (const auto& f : s.floors) {
       if (f.building != static_cast<int>(b)) continue;
@@ -225,18 +224,14 @@ int run_simulate(int argc, const char* const* argv) {
   specs.push_back({"histories", "", "", "write time histories to this HDF5 file"});
   Options opt("simulate",
               "Buildings in a row under a ground motion, run with and without pounding.", specs);
-  opt.parse(argc, argv);
-  if (opt.help_requested()) {
-    std::cout << opt.help_text();
-    return 0;
-  }
+  if (help_asked(opt, argc, argv)) return 0;
   // Everything is read and validated before anything is simulated or written.
   const BuildingRow row = row_from_options(opt);
-  const bool is_sears = opt.get_string("contact.model") == "sears";
+  const bool is_sears = is_sears_model(opt.get_string("contact.model"));
   ContactSpec contact;
   sears::SearsRowModel sears_model;
   if (is_sears) {
-    contact.model = "sears";
+    contact.model = kSearsModelName;
     sears_model = sears_row_from_options(opt, row);
   } else {
     contact = contact_from_options(opt, row);

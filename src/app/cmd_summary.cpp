@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "app/commands.hpp"
+#include "app/help.hpp"
 #include "app/table_number.hpp"
 #include "campaign/amplification_file.hpp"
 #include "core/error.hpp"
@@ -149,11 +150,7 @@ int run_summary(int argc, const char* const* argv) {
       {{"input", "", "", "campaign result file (HDF5) of 'pound campaign' or 'pound merge'"},
        {"floors", "", "", "one row per floor instead of the largest median", true},
        {"json", "", "", "print one JSON object instead of the tables", true}});
-  opt.parse(argc, argv);
-  if (opt.help_requested()) {
-    std::cout << opt.help_text();
-    return 0;
-  }
+  if (help_asked(opt, argc, argv)) return 0;
   if (!opt.given("input")) throw InputError("command line: --input RUN.h5 is required");
   const std::string input = opt.get_path("input");
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);

@@ -5,13 +5,12 @@
 #include <cstdio>
 #include <string>
 
+#include "core/format.hpp"
+
 namespace pound::app {
 
 inline std::string fmt(const char* f, double x) {
-  if (!std::isfinite(x)) return "-";
-  char b[64];
-  std::snprintf(b, sizeof b, f, x);
-  return b;
+  return std::isfinite(x) ? format_number(x, f) : "-";
 }
 
 }  // namespace pound::app

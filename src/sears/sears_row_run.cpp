@@ -359,19 +359,11 @@ bool SearsRowRun::on_collapse() {
     held_energy = energy_now();
     energy_held = true;
   }
-  bool all = true;
-  for (int b = 0; b < rec.buildings(); ++b) {
-    if (!rec.collapsed(b)) {
-      all = false;
-      continue;
-    }
-    rec.hold(b);
-    for (int i = 0; i < n; ++i)
-      if (rec.held(i) && std::find(held_dofs.begin(), held_dofs.end(), i) == held_dofs.end()) {
-        held_dofs.push_back(i);
-        v(i) = 0.0;
-        acc(i) = 0.0;
-      }
+  bool all = false;
+  for (int i : rec.hold_collapsed(all)) {
+    held_dofs.push_back(i);
+    v(i) = 0.0;
+    acc(i) = 0.0;
   }
   if (all) rec.result().stopped = true;
   return all;

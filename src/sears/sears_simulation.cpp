@@ -94,11 +94,7 @@ SearsRowSimulation simulate_sears_row(const BuildingRow& row, const GroundMotion
                                       const SearsRowModel& model, const RowSimulationOptions& opt) {
   SearsRowProblem p;
   p.row = &row;
-  p.motion = &motion;
-  p.t_end = motion.duration() + opt.extra_time;
-  p.record_history = opt.record_history;
-  p.track_energy = opt.track_energy;
-  p.collapse_drift_ratio = opt.collapse_drift_ratio;
+  opt.apply_to(p, motion);
   p.contacts = false;
   SearsRowResult free_run = solve_sears_row(p, model);
   RowResult free = std::move(free_run.row);

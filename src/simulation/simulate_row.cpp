@@ -71,11 +71,7 @@ RowSimulation simulate_row(const BuildingRow& row, const GroundMotion& motion,
   const auto laws = make_site_laws(contact, row, a);
   RowProblem p;
   p.row = &a;
-  p.motion = &motion;
-  p.t_end = motion.duration() + opt.extra_time;
-  p.record_history = opt.record_history;
-  p.track_energy = opt.track_energy;
-  p.collapse_drift_ratio = opt.collapse_drift_ratio;
+  opt.apply_to(p, motion);
   for (const auto& l : laws) p.laws.push_back(l.get());
   RunPair runs = solve_free_and_pounding(p, integ);  // without and with the contacts
   return summarize_runs(row, std::move(runs.free), std::move(runs.pounding));

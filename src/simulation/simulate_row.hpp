@@ -60,6 +60,17 @@ struct RowSimulationOptions {
   /// A building whose storey drift ratio passes this (or whose storey fails under P-Delta) has
   /// collapsed (RowProblem::collapse_drift_ratio); infinite: no check [-].
   double collapse_drift_ratio = std::numeric_limits<double>::infinity();
+
+  /// These settings in a run's problem (RowProblem, sears::SearsRowProblem) for `motion`:
+  /// the record and extra_time, histories, energy balance and collapse.
+  template <class Problem>
+  void apply_to(Problem& p, const GroundMotion& motion) const {
+    p.motion = &motion;
+    p.t_end = motion.duration() + extra_time;
+    p.record_history = record_history;
+    p.track_energy = track_energy;
+    p.collapse_drift_ratio = collapse_drift_ratio;
+  }
 };
 
 /// The response measures of physics.md section 4 from a free and a pounding run of the same

@@ -256,18 +256,10 @@ bool RowRun::on_collapse() {
     fork_armed_ = false;
     own_pounding_run_ = true;
   }
-  bool all = true;
-  for (int b = 0; b < rec_.buildings(); ++b) {
-    if (!rec_.collapsed(b)) {
-      all = false;
-      continue;
-    }
-    rec_.hold(b);
-    for (int i = 0; i < n_; ++i)
-      if (rec_.held(i) && !dyn_.held(i)) {
-        dyn_.hold(i);
-        y_(n_ + i) = 0.0;
-      }
+  bool all = false;
+  for (int i : rec_.hold_collapsed(all)) {
+    dyn_.hold(i);
+    y_(n_ + i) = 0.0;
   }
   exact_.disable();  // the propagators would move the held floors
   rhs(t_, y_, k1_);

@@ -88,10 +88,17 @@ void RunRecorder::collapse(int b, int storey, double t, CollapseCause cause) {
   ++new_collapses_;
 }
 
-void RunRecorder::hold(int b) {
+std::vector<int> RunRecorder::hold_collapsed(bool& all) {
+  std::vector<int> now;
+  all = true;
+  for (int b = 0; b < nb_; ++b) all = all && collapsed(b);
   for (int k = 0; k < n_; ++k)
-    if (building_[k] == b) held_[k] = 1;
-  any_held_ = true;
+    if (!held_[k] && collapsed(building_[k])) {
+      held_[k] = 1;
+      now.push_back(k);
+    }
+  any_held_ = any_held_ || !now.empty();
+  return now;
 }
 
 void RunRecorder::sampled_collapse(int k, double d, double t, double h) {

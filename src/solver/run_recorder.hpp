@@ -85,9 +85,10 @@ class RunRecorder {
   }
   bool collapsed(int b) const { return !r_.collapse.empty() && r_.collapse[b].collapsed; }
   int buildings() const { return nb_; }
-  /// From now on building b's DOFs hold still: no peak changes there (a free run's collapsed
-  /// building).
-  void hold(int b);
+  /// From now on every collapsed building's DOFs hold still (a free run's collapsed buildings):
+  /// no peak changes there. Returns the DOFs held by this call; `all` tells whether every
+  /// building has collapsed.
+  std::vector<int> hold_collapsed(bool& all);
   bool held(int dof) const { return any_held_ && held_[dof]; }
 
   // --- Contact sites -------------------------------------------------------------------------

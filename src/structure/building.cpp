@@ -6,19 +6,10 @@
 
 #include "core/constants.hpp"
 #include "core/error.hpp"
+#include "core/format.hpp"
 #include "hysteresis/registry.hpp"
 
 namespace pound {
-
-namespace {
-
-std::string number(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", x);
-  return buf;
-}
-
-}  // namespace
 
 void validate_gravity(const Building& b, const std::string& where) {
   const std::size_t n = b.masses.size();
@@ -35,9 +26,10 @@ void validate_gravity(const Building& b, const std::string& where) {
     if (!(b.stiffnesses[j] > P / h))
       throw InputError(where + ": storey " + std::to_string(j + 1) +
                        " cannot carry its gravity load with P-Delta: its stiffness " +
-                       number(b.stiffnesses[j]) + " N/m must exceed P / h = " + number(P / h) +
-                       " N/m (P = " + number(P) + " N of the floors at and above it, h = " +
-                       number(h) + " m); raise the stiffness or lower gravity_loads");
+                       format_number(b.stiffnesses[j]) + " N/m must exceed P / h = " +
+                       format_number(P / h) + " N/m (P = " + format_number(P) +
+                       " N of the floors at and above it, h = " + format_number(h) +
+                       " m); raise the stiffness or lower gravity_loads");
   }
   if (b.damping_stiffness == DampingStiffness::tangent) {
     if (b.damping != DampingKind::rayleigh)
@@ -175,29 +167,23 @@ BuildingMatrices assemble(const Building& b) {
   BuildingMatrices out;
   out.M = Eigen::MatrixXd::Zero(n, n);
   out.K = Eigen::MatrixXd::Zero(n, n);
+  // Storey j, a spring of stiffness k, joins floor j-1 (the ground for j = 0) and floor j.
+  auto add_storey = [](Eigen::MatrixXd& K, int j, double k) {
+    K(j, j) += k;
+    if (j > 0) {
+      K(j - 1, j - 1) += k;
+      K(j - 1, j) -= k;
+      K(j, j - 1) -= k;
+    }
+  };
   for (int j = 0; j < n; ++j) {
     out.M(j, j) = b.masses[j];
-    // Storey j joins floor j-1 (the ground for j = 0) and floor j.
-    const double k = b.stiffnesses[j];
-    out.K(j, j) += k;
-    if (j > 0) {
-      out.K(j - 1, j - 1) += k;
-      out.K(j - 1, j) -= k;
-      out.K(j, j - 1) -= k;
-    }
+    add_storey(out.K, j, b.stiffnesses[j]);
   }
   // P-Delta: storey j's shear gains -P_j d_j / h_j, a spring of stiffness -P_j / h_j between the
   // same floors (the geometric stiffness, Kg in the pattern of K).
   out.Kg = Eigen::MatrixXd::Zero(n, n);
-  for (int j = 0; j < n && b.p_delta; ++j) {
-    const double kg = b.geometric_stiffness(j);
-    out.Kg(j, j) += kg;
-    if (j > 0) {
-      out.Kg(j - 1, j - 1) += kg;
-      out.Kg(j - 1, j) -= kg;
-      out.Kg(j, j - 1) -= kg;
-    }
-  }
+  for (int j = 0; j < n && b.p_delta; ++j) add_storey(out.Kg, j, b.geometric_stiffness(j));
   out.C = Eigen::MatrixXd::Zero(n, n);
   out.periods = Eigen::VectorXd::Zero(n);
   bool has_stiffness = false;

@@ -6,6 +6,7 @@
 
 #include "contact/registry.hpp"
 #include "contact/restitution.hpp"
+#include "core/format.hpp"
 #include "hysteresis/registry.hpp"
 #include "motion/motion_processing.hpp"
 #include "motion/motion_reader.hpp"
@@ -16,9 +17,7 @@ namespace {
 
 // A default of StoreyParameters as the option's default text (one source for both).
 std::string default_text(double x) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%g", x);
-  return b;
+  return format_number(x, "%g");
 }
 
 }  // namespace
