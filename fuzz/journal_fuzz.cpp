@@ -74,8 +74,8 @@ extern "C" int LLVMFuzzerInitialize(int* argc, char*** argv) {
   fuzz::write_prepared(dir, "seeds/torn", std::string(1, '\0') + bytes.substr(0, bytes.size() - 9));
   fuzz::write_prepared(dir, "seeds/records", std::string(1, '\1') + bytes.substr(kHeaderBytes));
   fuzz::write_prepared(dir, "dict",
-                       fuzz::dict_entry("POUNDJ02") + fuzz::dict_entry("POUNDJ01") +
-                           fuzz::dict_entry(std::string(8, '\0')) +
+                       fuzz::dict_entry("POUNDJ03") + fuzz::dict_entry("POUNDJ02") +
+                           fuzz::dict_entry("POUNDJ01") + fuzz::dict_entry(std::string(8, '\0')) +
                            fuzz::dict_entry(std::string(8, '\xff')));
   std::exit(0);
 }

@@ -20,7 +20,7 @@ import sys
 
 import numpy as np
 
-MAGIC = b"POUNDJ03"  # src/campaign/journal.hpp: the layout this script reads
+MAGIC = b"POUNDJ04"  # src/campaign/journal.hpp: the layout this script reads
 HEADER_BYTES = 8 + 4 * 8
 FNV_OFFSET = np.uint64(14695981039346656037)
 FNV_PRIME = np.uint64(1099511628211)

@@ -273,6 +273,7 @@ CampaignStudy campaign_from_options(const Options& opt, long samples_override, l
   st.row = row_from_options(opt);
   st.integrator = integrator_from_options(opt);
   st.extra_time = opt.get_nonnegative("simulation.extra_time");
+  st.collapse_drift_ratio = opt.get_positive("simulation.collapse_drift_ratio");
   read_sampling(opt, samples_override, seed_override, st);
   // Sampled parameters, in a fixed (sorted) order (sampled_parameters.hpp).
   st.parameters = read_sampled_parameters(opt, st.row);

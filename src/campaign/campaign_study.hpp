@@ -32,6 +32,9 @@ struct CampaignStudy {
   bool has_sears = false;      ///< slabs given: the damped Sears model can be used
   sears::SearsRowModel sears;  ///< its fixed options (chi and D may be sampled)
   double extra_time = 0.0;     ///< free vibration after the record [s]
+  /// A building whose storey drift ratio passes this has collapsed ([simulation]
+  /// collapse_drift_ratio; RowSimulationOptions::collapse_drift_ratio) [-].
+  double collapse_drift_ratio = 0.1;
 
   // Sampling.
   long samples = 100;  ///< number of samples of the campaign [-]

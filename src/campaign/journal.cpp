@@ -6,6 +6,7 @@
 #include <cerrno>
 #include <cstring>
 
+#include "campaign/building_arrays.hpp"
 #include "campaign/floor_arrays.hpp"
 #include "core/error.hpp"
 #include "sampling/counter_rng.hpp"
@@ -13,7 +14,7 @@
 namespace pound {
 namespace {
 
-constexpr char kMagic[8] = {'P', 'O', 'U', 'N', 'D', 'J', '0', '3'};
+constexpr char kMagic[8] = {'P', 'O', 'U', 'N', 'D', 'J', '0', '4'};
 // Journals of earlier formats: recognised to say so (their records are laid out differently).
 struct OldFormat {
   char magic[8];
@@ -23,6 +24,7 @@ constexpr OldFormat kOldFormats[] = {
     {{'P', 'O', 'U', 'N', 'D', 'J', '0', '1'},
      "the residual drift, ductility, hysteretic energy and free-run approach"},
     {{'P', 'O', 'U', 'N', 'D', 'J', '0', '2'}, "the free-run approach of the facing floors"},
+    {{'P', 'O', 'U', 'N', 'D', 'J', '0', '3'}, "the collapse of each building"},
 };
 constexpr std::size_t kHeaderBytes = 8 + 4 * 8;
 
@@ -68,8 +70,10 @@ RecordLayout::RecordLayout(const CampaignStudy& st)
       levels(st.max_levels()) {}
 
 std::size_t RecordLayout::values() const {
-  // im, scale, parameters, the floor arrays, 3 contact arrays, wall seconds, rank
-  return 2 + parameters + floor_array_fields().size() * buildings * floors + 3 * pairs * levels + 2;
+  // im, scale, parameters, the floor arrays, the building arrays, 3 contact arrays, wall
+  // seconds, rank
+  return 2 + parameters + floor_array_fields().size() * buildings * floors +
+         building_array_fields().size() * buildings + 3 * pairs * levels + 2;
 }
 
 std::size_t RecordLayout::record_bytes() const {
@@ -93,6 +97,8 @@ std::vector<char> encode_record(const SampleOutcome& o, const RecordLayout& l) {
   put(b, o.scale);
   for (int i = 0; i < l.parameters; ++i) put(b, o.values.at(i));
   for (const auto& a : floor_array_fields())
+    for (double x : o.*a.member) put(b, x);
+  for (const auto& a : building_array_fields())
     for (double x : o.*a.member) put(b, x);
   for (const auto* v : {&o.peak_force, &o.impacts, &o.approach_free})
     for (double x : *v) put(b, x);
@@ -129,6 +135,11 @@ bool decode_record(const char* bytes, const RecordLayout& l, SampleOutcome& o) {
   for (const auto& a : floor_array_fields()) {
     std::vector<double>& v = o.*a.member;
     v.resize(bf);
+    for (auto& x : v) x = get<double>(p);
+  }
+  for (const auto& a : building_array_fields()) {
+    std::vector<double>& v = o.*a.member;
+    v.resize(static_cast<std::size_t>(l.buildings));
     for (auto& x : v) x = get<double>(p);
   }
   for (auto* v : {&o.peak_force, &o.impacts, &o.approach_free}) {

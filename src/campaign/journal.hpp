@@ -7,13 +7,14 @@
 // the journal, skips the samples it holds and appends; the HDF5 result file is built from the
 // journal, in sample order, when every sample is done.
 //
-// Layout (little-endian, native doubles): header = "POUNDJ03", study hash (u64), values per
+// Layout (little-endian, native doubles): header = "POUNDJ04", study hash (u64), values per
 // record (u64), message bytes (u64), samples (u64); record = id (i64), status (i64),
 // values (f64 x values: im, scale, the sampled parameters, the per-floor arrays of
-// floor_arrays.hpp in its order, peak force, impacts, free-run approach (each pairs x levels),
-// wall seconds, rank), message (bytes, NUL padded), FNV-1a checksum of the preceding bytes of
-// the record (u64). Journals of the earlier formats "POUNDJ01" (six per-floor arrays, no
-// approach) and "POUNDJ02" (no approach) are refused with a message saying so.
+// floor_arrays.hpp in its order, the per-building arrays of building_arrays.hpp in its order,
+// peak force, impacts, free-run approach (each pairs x levels), wall seconds, rank), message
+// (bytes, NUL padded), FNV-1a checksum of the preceding bytes of the record (u64). Journals of
+// the earlier formats "POUNDJ01" (six per-floor arrays, no approach), "POUNDJ02" (no approach)
+// and "POUNDJ03" (no collapse arrays) are refused with a message saying so.
 #include <cstdint>
 #include <cstdio>
 #include <functional>

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "campaign/amplification_file.hpp"
+#include "campaign/building_arrays.hpp"
 #include "campaign/floor_arrays.hpp"
 #include "campaign/journal.hpp"
 #include "core/error.hpp"
@@ -113,6 +114,11 @@ void write_result_file(const std::string& path, const CampaignStudy& st,
     for (const auto& a : fields)
       floors.push_back(std::make_unique<RowDataset>(fid, std::string("/response/") + a.name, n, nb,
                                                     nf, H5T_NATIVE_DOUBLE, a.unit));
+    const auto& bfields = building_array_fields();
+    std::vector<std::unique_ptr<RowDataset>> per_building;
+    for (const auto& a : bfields)
+      per_building.push_back(std::make_unique<RowDataset>(fid, std::string("/response/") + a.name,
+                                                          n, nb, 0, H5T_NATIVE_DOUBLE, a.unit));
     RowDataset force(fid, "/response/peak_force", n, np, nl, H5T_NATIVE_DOUBLE, "N");
     RowDataset impacts(fid, "/response/impacts", n, np, nl, H5T_NATIVE_DOUBLE, "-");
     RowDataset approach(fid, "/response/approach_free", n, np, nl, H5T_NATIVE_DOUBLE, "m");
@@ -145,6 +151,8 @@ void write_result_file(const std::string& path, const CampaignStudy& st,
       }
       for (std::size_t i = 0; i < fields.size(); ++i)
         floors[i]->write(r, (o.*fields[i].member).data());
+      for (std::size_t i = 0; i < bfields.size(); ++i)
+        per_building[i]->write(r, (o.*bfields[i].member).data());
       force.write(r, o.peak_force.data());
       impacts.write(r, o.impacts.data());
       approach.write(r, o.approach_free.data());

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "campaign/building_arrays.hpp"
 #include "campaign/floor_arrays.hpp"
 #include "contact/registry.hpp"
 #include "core/error.hpp"
@@ -82,6 +83,8 @@ SampleOutcome SampleRunner::run(const SampleDraw& d) {
   const int nb = st_.buildings(), nf = st_.max_floors(), np = st_.pairs(), nl = st_.max_levels();
   for (const auto& a : floor_array_fields())
     (out.*a.member).assign(static_cast<std::size_t>(nb * nf), kNaN);
+  for (const auto& a : building_array_fields())
+    (out.*a.member).assign(static_cast<std::size_t>(nb), kNaN);
   out.peak_force.assign(static_cast<std::size_t>(np * nl), kNaN);
   out.impacts.assign(static_cast<std::size_t>(np * nl), kNaN);
   out.approach_free.assign(static_cast<std::size_t>(np * nl), kNaN);
@@ -115,6 +118,7 @@ SampleOutcome SampleRunner::run(const SampleDraw& d) {
 
     RowSimulationOptions so;
     so.extra_time = st_.extra_time;
+    so.collapse_drift_ratio = st_.collapse_drift_ratio;
     RowSimulation sim;
     if (is_sears_model(d.model)) {
       sim = sears::simulate_sears_row(row, g, sm.sears, so).base;
@@ -128,6 +132,8 @@ SampleOutcome SampleRunner::run(const SampleDraw& d) {
           !std::isfinite(f.disp_free))
         throw NumericalError("non-finite peak response");
     }
+    for (const auto& a : building_array_fields())
+      for (int b = 0; b < nb; ++b) (out.*a.member)[static_cast<std::size_t>(b)] = a.source(sim, b);
     for (const auto& s : sim.sites) {
       const std::size_t i = static_cast<std::size_t>(s.pair * nl + s.floor - 1);
       out.peak_force[i] = s.peak_force;
@@ -146,6 +152,8 @@ SampleOutcome SampleRunner::run(const SampleDraw& d) {
   if (out.status != SampleStatus::ok) {
     // A failed sample carries no response numbers.
     for (const auto& a : floor_array_fields()) (out.*a.member).assign((out.*a.member).size(), kNaN);
+    for (const auto& a : building_array_fields())
+      (out.*a.member).assign((out.*a.member).size(), kNaN);
     for (auto* v : {&out.peak_force, &out.impacts, &out.approach_free}) v->assign(v->size(), kNaN);
   }
   out.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -52,6 +52,10 @@ struct SampleOutcome {
   std::vector<double> ductility_pounding, ductility_free;
   /// Hysteretic energy dissipated by the storey below the floor [J].
   std::vector<double> hysteretic_energy_pounding, hysteretic_energy_free;
+  /// Per building (building_arrays.hpp): collapsed (1) or standing (0) in each run, and when
+  /// [s] (NaN while standing); NaN for a failed sample.
+  std::vector<double> collapsed_pounding, collapsed_free;
+  std::vector<double> collapse_time_pounding, collapse_time_free;
   std::vector<double> peak_force;  ///< [N]
   /// Contact phases started in the pounding run, as doubles [-]: every phase, so > 0 exactly
   /// when the faces touched (the damped Sears model's raw count, SiteResult::impacts, not its

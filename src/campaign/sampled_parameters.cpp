@@ -37,6 +37,23 @@ void check_has_yield_shears(const SampledParameter& p, const BuildingRow& row, c
                    ".hysteresis (" + inelastic + ")");
 }
 
+// The IMK parameters act only on an imk building.
+void check_is_imk(const SampledParameter& p, const BuildingRow& row, const Options& smp) {
+  const Building& b = row.buildings[static_cast<std::size_t>(p.building)];
+  if (b.hysteresis == "imk") return;
+  const std::string name = "building" + std::to_string(p.building + 1);
+  throw InputError(smp.where(p.key) + ": " + name + ".hysteresis is '" + b.hysteresis +
+                   "'; the deteriorating storey's parameters are sampled only with " + name +
+                   ".hysteresis = imk");
+}
+
+// Sets one IMK parameter of every storey of building b.
+template <std::vector<double> Building::*member>
+void set_every_storey(SampleModel& m, int b, double v) {
+  Building& bd = m.row.buildings[static_cast<std::size_t>(b)];
+  (bd.*member).assign(bd.masses.size(), v);
+}
+
 // Scales every entry of v by f.
 void scale(std::vector<double>& v, double f) {
   for (double& x : v) x *= f;
@@ -117,6 +134,18 @@ const std::vector<SampledParameterSpec>& sampled_parameter_table() {
        SampleStage::direct, kPositive,
        [](S& m, int b, double v) { scale(building(m, b).yield_shears, v); },
        check_has_yield_shears},
+      // Modelling uncertainty of the deteriorating storeys (issue 23; docs/hysteresis.md).
+      {"building#.plastic_drift_ratio", "-",
+       "imk: theta_p of every storey of the building, yield to cap (distribution)",
+       SampleStage::direct, kPositive, set_every_storey<&Building::plastic_drift_ratio>,
+       check_is_imk},
+      {"building#.post_cap_drift_ratio", "-",
+       "imk: theta_pc of every storey of the building, cap to zero strength (distribution)",
+       SampleStage::direct, kPositive, set_every_storey<&Building::post_cap_drift_ratio>,
+       check_is_imk},
+      {"building#.energy_capacity", "-",
+       "imk: lambda of every storey of the building, E_t = lambda Fy uy (distribution)",
+       SampleStage::direct, kPositive, set_every_storey<&Building::energy_capacity>, check_is_imk},
       {"hardening",
        "-",
        "post-yield stiffness ratio b = k_post / k0 of every storey of every building, in [0, 1) "

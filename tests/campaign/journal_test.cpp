@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "../support/scratch_dir.hpp"
+#include "campaign/building_arrays.hpp"
 #include "campaign/floor_arrays.hpp"
 #include "core/error.hpp"
 #include "io/options.hpp"
@@ -67,6 +68,11 @@ SampleOutcome outcome(const CampaignStudy& st, long id) {
   o.ductility_free[0] = std::nan("");      // a building without yield_shears
   o.hysteretic_energy_pounding[2] = -0.0;  // sign of zero kept
   o.residual_drift_free[3] = 4.9e-324;     // denormal kept
+  // The per-building collapse arrays: a flag, a time, NaN where standing.
+  o.collapsed_pounding = {id % 2 ? 1.0 : 0.0, 0.0};
+  o.collapsed_free = {1.0, std::nan("")};
+  o.collapse_time_pounding = {id % 2 ? 3.25 + id : std::nan(""), std::nan("")};
+  o.collapse_time_free = {2.5 + 0.125 * id, std::nan("")};
   o.peak_force.assign(pl, 1000.0 * id);
   o.impacts.assign(pl, 3.0);
   o.approach_free.assign(pl, 0.0125 + 0.001 * id);
@@ -76,10 +82,11 @@ SampleOutcome outcome(const CampaignStudy& st, long id) {
 TEST(Journal, RecordsRoundTripAndATornTailIsDropped) {
   const CampaignStudy st = tiny_study();
   const RecordLayout layout(st);
-  // im, scale, e, 12 per-floor arrays of 2 x 2, peak force, impacts and approach of 1 x 1,
-  // wall, rank.
+  // im, scale, e, 12 per-floor arrays of 2 x 2, 4 per-building arrays of 2, peak force,
+  // impacts and approach of 1 x 1, wall, rank.
   EXPECT_EQ(floor_array_fields().size(), 12u);
-  EXPECT_EQ(layout.values(), 2u + 1u + 12u * 2u * 2u + 3u * 1u * 1u + 2u);
+  EXPECT_EQ(building_array_fields().size(), 4u);
+  EXPECT_EQ(layout.values(), 2u + 1u + 12u * 2u * 2u + 4u * 2u + 3u * 1u * 1u + 2u);
   const std::string path = test::process_scratch_dir() / "journal";
   {
     JournalWriter w(path, st, false);
@@ -111,6 +118,14 @@ TEST(Journal, RecordsRoundTripAndATornTailIsDropped) {
           << a.name << " of sample " << id;
     }
   }
+  for (long id : {0L, 1L, 2L})
+    for (const auto& a : building_array_fields()) {
+      const SampleOutcome want = outcome(st, id);
+      const auto &w = want.*a.member, &g = got[std::size_t(id)].*a.member;
+      ASSERT_EQ(g.size(), 2u) << a.name;
+      EXPECT_EQ(std::memcmp(g.data(), w.data(), w.size() * sizeof(double)), 0)
+          << a.name << " of sample " << id;
+    }
   EXPECT_TRUE(std::signbit(got[1].hysteretic_energy_pounding[2]));
   EXPECT_EQ(got[1].residual_drift_free[3], 4.9e-324);
   EXPECT_EQ(end, static_cast<long>(40 + 3 * layout.record_bytes()));
@@ -125,12 +140,12 @@ TEST(Journal, RecordsRoundTripAndATornTailIsDropped) {
 }
 
 TEST(Journal, AJournalOfTheOldFormatSaysSo) {
-  // A journal written before the residual drift, ductility and energy arrays (POUNDJ01) or
-  // before the free-run approach (POUNDJ02) has shorter records: it is refused with one line
-  // saying why and what to do.
+  // A journal written before the residual drift, ductility and energy arrays (POUNDJ01),
+  // before the free-run approach (POUNDJ02) or before the collapse arrays (POUNDJ03) has shorter
+  // records: it is refused with one line saying why and what to do.
   const CampaignStudy st = tiny_study();
   const std::string path = test::process_scratch_dir() / "journal-old";
-  for (const char* magic : {"POUNDJ01", "POUNDJ02"})
+  for (const char* magic : {"POUNDJ01", "POUNDJ02", "POUNDJ03"})
     for (const bool append : {false, true}) {
       { JournalWriter w(path, st, false); }
       {

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "../support/scratch_dir.hpp"
+#include "campaign/building_arrays.hpp"
 #include "campaign/floor_arrays.hpp"
 #include "campaign/journal.hpp"
 #include "core/error.hpp"
@@ -96,6 +97,7 @@ SampleOutcome canned(const CampaignStudy& st, long id) {
   o.values.assign(st.parameters.size(), 0.5);
   const std::size_t bf = st.buildings() * st.max_floors(), pl = st.pairs() * st.max_levels();
   for (const auto& a : floor_array_fields()) (o.*a.member).assign(bf, 0.01 * double(id));
+  for (const auto& a : building_array_fields()) (o.*a.member).assign(st.buildings(), 0.0);
   o.peak_force.assign(pl, 1.0);
   o.impacts.assign(pl, 1.0);
   o.approach_free.assign(pl, 0.0);
