@@ -60,6 +60,7 @@ std::vector<double> limits(const Options& o, const std::string& key) {
 
 // A limit for people: drift ratios in %, ductility as a number, the others in their SI unit.
 std::string limit_text(Edp e, double x) {
+  if (e == Edp::collapse) return "-";
   if (e == Edp::drift || e == Edp::residual_drift) return fmt("%.3g %%", 100 * x);
   if (e == Edp::ductility) return fmt("%.4g", x);
   return fmt("%.4g ", x) + unit_of(e);
@@ -83,21 +84,17 @@ std::string bound_text(const LognormalFit& fit) {
   return fmt("%.3g", lo) + "-" + fmt("%.3g", hi);
 }
 
-void print_text(const CampaignData& c, const FragilityReport& r,
-                const std::vector<std::string>& files) {
-  const std::string im = c.intensity_measure == "sa" ? "Sa(T1)" : "PGA";
-  std::printf(
-      "Shift of the median capacity by pounding: theta_pounding / theta_free (%s, 90 %% bootstrap "
-      "band)\n",
-      im.c_str());
+// The shifts of one model ("" pooled) with the medians of their two curves.
+void print_shifts(const CampaignData& c, const FragilityReport& r, const std::string& model) {
   const int we = edp_width(r);
   std::printf("  %-12s %-*s %-10s %8s  %-17s %12s %12s\n", "building", we, "edp", "limit", "ratio",
               "band", "pounding [g]", "free [g]");
   for (std::size_t k = 0, j = 0; k < r.shifts.size(); ++k) {
     const auto& s = r.shifts[k];
+    if (s.model != model) continue;
     while (j < r.curves.size() &&
-           !(r.curves[j].building == s.building && r.curves[j].edp == s.edp &&
-             r.curves[j].limit == s.limit && r.curves[j].pounding))
+           !(r.curves[j].model == s.model && r.curves[j].building == s.building &&
+             r.curves[j].edp == s.edp && r.curves[j].limit == s.limit && r.curves[j].pounding))
       ++j;
     const auto& p = r.curves[j].fit;
     const auto& f = r.curves[j + 1].fit;
@@ -108,6 +105,28 @@ void print_text(const CampaignData& c, const FragilityReport& r,
                 p.finite() ? fmt("%.4f", p.theta / kGravity).c_str() : to_string(p.status),
                 f.finite() ? fmt("%.4f", f.theta / kGravity).c_str() : to_string(f.status));
   }
+}
+
+void print_text(const CampaignData& c, const FragilityReport& r,
+                const std::vector<std::string>& files) {
+  const std::string im = c.intensity_measure == "sa" ? "Sa(T1)" : "PGA";
+  std::printf(
+      "Shift of the median capacity by pounding: theta_pounding / theta_free (%s, 90 %% bootstrap "
+      "band)\n",
+      im.c_str());
+  const int we = edp_width(r);
+  print_shifts(c, r, "");
+  if (r.collapse)
+    std::printf(
+        "  (collapse: the building collapsed in the run; a collapsed building counts as "
+        "exceeding every other limit)\n");
+  for (const auto& m : r.models) {
+    std::printf(
+        "\nThe same for the analyses of contact model %s alone (the study samples the "
+        "model)\n",
+        m.c_str());
+    print_shifts(c, r, m);
+  }
   std::printf(
       "\nCurves: P(EDP > limit | %s = x) = Phi(ln(x / theta) / beta), maximum likelihood "
       "(Baker 2015)\n",
@@ -116,6 +135,7 @@ void print_text(const CampaignData& c, const FragilityReport& r,
               "limit", "pound", "status", "theta [g]", "90 % band [g]", "beta", "90 % band",
               "exceed");
   for (const auto& k : r.curves) {
+    if (!k.model.empty()) continue;  // the models' curves: curves.csv and --json
     long n = 0, z = 0;
     for (const auto& o : k.observed) n += o.n, z += o.z;
     const bool f = k.fit.finite();
@@ -129,8 +149,10 @@ void print_text(const CampaignData& c, const FragilityReport& r,
         f ? fmt("%.3f", k.fit.beta).c_str() : "-", f ? fmt("%.3f", k.beta_ci.lo).c_str() : "-",
         f ? fmt("%.3f", k.beta_ci.hi).c_str() : "-", z, n);
   }
+  if (!r.models.empty())
+    std::printf("  (the curves of each contact model alone: curves.csv and --json)\n");
   for (const auto& k : r.curves)
-    if (k.left_out)
+    if (k.left_out && k.model.empty())
       std::printf("  (%s %s %s, %s: %zu analyses left out, their value is not finite%s)\n",
                   c.building_names[k.building].c_str(), to_string(k.edp),
                   limit_text(k.edp, k.limit).c_str(), k.pounding ? "pounding" : "no pounding",
@@ -175,9 +197,16 @@ void print_json(const CampaignData& c, const FragilityReport& r, const Fragility
   w.key("building_names").begin_array();
   for (const auto& n : c.building_names) w.value(n);
   w.end_array();
+  w.field("collapse", r.collapse);
+  w.key("models").begin_array();
+  for (const auto& m : r.models) w.value(m);
+  w.end_array();
   w.key("shift").begin_array();
   for (const auto& s : r.shifts) {
-    w.begin_object().field("building", long(s.building)).field("edp", to_string(s.edp));
+    w.begin_object()
+        .field("model", s.model.empty() ? std::string("all") : s.model)
+        .field("building", long(s.building))
+        .field("edp", to_string(s.edp));
     w.field("limit", s.limit).field("theta_ratio", s.ratio);
     interval(w, "theta_ratio_ci90", s.ci.lo, s.ci.hi, std::isfinite(s.ratio));
     w.end_object();
@@ -188,7 +217,10 @@ void print_json(const CampaignData& c, const FragilityReport& r, const Fragility
     const bool f = k.fit.finite();
     long n = 0, z = 0;
     for (const auto& o : k.observed) n += o.n, z += o.z;
-    w.begin_object().field("building", long(k.building)).field("edp", to_string(k.edp));
+    w.begin_object()
+        .field("model", k.model.empty() ? std::string("all") : k.model)
+        .field("building", long(k.building))
+        .field("edp", to_string(k.edp));
     w.field("limit", k.limit)
         .field("pounding", k.pounding)
         .field("status", to_string(k.fit.status));

@@ -54,9 +54,34 @@ std::string pair_name(const CampaignData& c, std::size_t p) {
 }
 
 std::string limit_text(Edp e, double x) {
+  if (e == Edp::collapse) return "-";
   if (e == Edp::drift || e == Edp::residual_drift) return fmt("%.3g %%", 100 * x);
   if (e == Edp::ductility) return fmt("%.4g", x);
   return fmt("%.4g ", x) + unit_of(e);
+}
+
+// Collapse per building, pooled and per sampled contact model (issue 23).
+void print_collapse(const CampaignData& c, const RiskReport& r, const RiskSettings& s) {
+  if (r.collapse.empty()) return;
+  const std::string T = fmt("%g", s.years);
+  std::printf(
+      "\nCollapse: mean annual frequency and probability in %s years with and without pounding%s\n",
+      T.c_str(),
+      r.design_im_given ? ", collapse margin ratio CMR = median collapse intensity / design-im "
+                          "(FEMA P695)"
+                        : " (--design-im MCE gives the collapse margin ratio)");
+  std::printf("  %-12s %-10s %12s %12s %8s %10s %10s %8s %8s\n", "building", "model", "nu pounding",
+              "nu free", "ratio", ("P" + T + " pound").c_str(), ("P" + T + " free").c_str(),
+              "CMR pnd", "CMR free");
+  for (const auto& k : r.collapse)
+    std::printf(
+        "  %-12s %-10s %12s %12s %8s %10s %10s %8s %8s\n", c.building_names[k.building].c_str(),
+        k.model.empty() ? "all" : k.model.c_str(),
+        k.pounding.finite() ? fmt("%.3e", k.maf_pounding).c_str() : to_string(k.pounding.status),
+        k.free.finite() ? fmt("%.3e", k.maf_free).c_str() : to_string(k.free.status),
+        fmt("%.3f", k.ratio).c_str(), fmt("%.5f", k.probability_pounding).c_str(),
+        fmt("%.5f", k.probability_free).c_str(), fmt("%.2f", k.cmr_pounding).c_str(),
+        fmt("%.2f", k.cmr_free).c_str());
 }
 
 void print_text(const CampaignData& c, const HazardCurve& h, const RiskReport& r,
@@ -139,15 +164,17 @@ void print_text(const CampaignData& c, const HazardCurve& h, const RiskReport& r
               "nu pounding", "nu free", "ratio", ("P" + T + " pound").c_str(),
               ("P" + T + " free").c_str());
   for (const auto& d : r.damage)
-    std::printf(
-        "  %-12s %-15s %-10s %12s %12s %8s %12s %12s\n", c.building_names[d.building].c_str(),
-        to_string(d.edp), limit_text(d.edp, d.limit).c_str(),
-        d.pounding.finite() ? fmt("%.3e", d.maf_pounding).c_str() : to_string(d.pounding.status),
-        d.edp == Edp::force ? "-"
-        : d.free.finite()   ? fmt("%.3e", d.maf_free).c_str()
-                            : to_string(d.free.status),
-        fmt("%.3f", d.ratio).c_str(), fmt("%.4f", -std::expm1(-d.maf_pounding * s.years)).c_str(),
-        fmt("%.4f", -std::expm1(-d.maf_free * s.years)).c_str());
+    if (d.model.empty())
+      std::printf(
+          "  %-12s %-15s %-10s %12s %12s %8s %12s %12s\n", c.building_names[d.building].c_str(),
+          to_string(d.edp), limit_text(d.edp, d.limit).c_str(),
+          d.pounding.finite() ? fmt("%.3e", d.maf_pounding).c_str() : to_string(d.pounding.status),
+          d.edp == Edp::force ? "-"
+          : d.free.finite()   ? fmt("%.3e", d.maf_free).c_str()
+                              : to_string(d.free.status),
+          fmt("%.3f", d.ratio).c_str(), fmt("%.4f", -std::expm1(-d.maf_pounding * s.years)).c_str(),
+          fmt("%.4f", -std::expm1(-d.maf_free * s.years)).c_str());
+  print_collapse(c, r, s);
   if (!r.notes.empty()) {
     std::printf("\nWhat could not be estimated:\n");
     for (const auto& n : r.notes) std::printf("  - %s\n", n.c_str());
@@ -212,6 +239,7 @@ void print_json(const CampaignData& c, const HazardCurve& h, const RiskReport& r
   w.key("damage").begin_array();
   for (const auto& d : r.damage)
     w.begin_object()
+        .field("model", d.model.empty() ? std::string("all") : d.model)
         .field("building", long(d.building))
         .field("edp", to_string(d.edp))
         .field("limit", d.limit)
@@ -220,6 +248,24 @@ void print_json(const CampaignData& c, const HazardCurve& h, const RiskReport& r
         .field("maf_pounding", d.maf_pounding)
         .field("maf_free", d.maf_free)
         .field("ratio", d.ratio)
+        .end_object();
+  w.end_array();
+  w.key("collapse").begin_array();
+  for (const auto& k : r.collapse)
+    w.begin_object()
+        .field("model", k.model.empty() ? std::string("all") : k.model)
+        .field("building", long(k.building))
+        .field("status_pounding", to_string(k.pounding.status))
+        .field("status_free", to_string(k.free.status))
+        .field("theta_pounding", k.pounding.finite() ? k.pounding.theta : NAN)
+        .field("theta_free", k.free.finite() ? k.free.theta : NAN)
+        .field("maf_pounding", k.maf_pounding)
+        .field("maf_free", k.maf_free)
+        .field("ratio", k.ratio)
+        .field("probability_pounding", k.probability_pounding)
+        .field("probability_free", k.probability_free)
+        .field("cmr_pounding", k.cmr_pounding)
+        .field("cmr_free", k.cmr_free)
         .end_object();
   w.end_array();
   w.key("notes").begin_array();

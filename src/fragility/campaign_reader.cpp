@@ -2,10 +2,13 @@
 
 #include <hdf5.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
+#include "campaign/building_arrays.hpp"
 #include "campaign/floor_arrays.hpp"
+#include "campaign/sampled_parameters.hpp"
 #include "core/error.hpp"
 #include "io/h5.hpp"
 #include "io/options.hpp"
@@ -110,6 +113,13 @@ double FloorArray::max_over_floors(std::size_t s, std::size_t b) const {
   return m;
 }
 
+std::vector<std::string> CampaignData::models() const {
+  std::vector<std::string> out;
+  for (const auto& m : model)
+    if (std::find(out.begin(), out.end(), m) == out.end()) out.push_back(m);
+  return out;
+}
+
 const FloorArray& CampaignData::floor_array(const std::string& name) const {
   const auto it = floor_arrays.find(name);
   if (it == floor_arrays.end())
@@ -152,6 +162,19 @@ CampaignData read_campaign(const std::string& path) {
   }
   if (c.floor_arrays.empty())
     throw r.missing(std::string("/response/") + floor_array_fields().front().name);
+  for (const auto& field : building_array_fields()) {
+    const std::string p = std::string("/response/") + field.name;
+    if (!r.exists(p)) continue;
+    std::vector<hsize_t> d;
+    std::vector<double> v = r.doubles(p, &d);
+    if (d.size() != 2 || d[0] != c.samples || d[1] != c.buildings)
+      throw r.missing(p + " of shape [samples, buildings]");
+    c.building_arrays.emplace(field.name, std::move(v));
+  }
+  if (r.exists("/samples/" + std::string(kSampledContactModelKey)))
+    c.model = h5::read_strings(r.id(), "/samples/" + std::string(kSampledContactModelKey), path);
+  if (!c.model.empty() && c.model.size() != c.samples)
+    throw r.missing("/samples/model of one label per sample");
   c.peak_force = floor_array(r, "/response/peak_force", c.samples);
   c.impacts = floor_array(r, "/response/impacts", c.samples);
   if (r.exists("/response/approach_free"))

@@ -64,6 +64,23 @@ struct CampaignData {
   FloorArray approach_free;
   bool has_approach() const { return approach_free.samples == samples && samples > 0; }
 
+  /// The per-building arrays of campaign/building_arrays.hpp the file holds
+  /// ([samples][buildings]: collapsed_pounding, collapse_time_free, ...); a file written before
+  /// they existed lacks them.
+  std::map<std::string, std::vector<double>> building_arrays;
+  bool has_collapse() const {
+    return building_arrays.count("collapsed_pounding") && building_arrays.count("collapsed_free");
+  }
+  /// Whether building b collapsed in sample s (false without the arrays).
+  bool collapsed(std::size_t s, std::size_t b, bool pounding) const {
+    const auto it = building_arrays.find(pounding ? "collapsed_pounding" : "collapsed_free");
+    return it != building_arrays.end() && it->second[s * buildings + b] == 1.0;
+  }
+  /// Each sample's contact model when the study samples it (/samples/model), else empty.
+  std::vector<std::string> model;
+  /// The distinct models of `model`, in first-seen order (empty when not sampled).
+  std::vector<std::string> models() const;
+
   bool has(const std::string& name) const { return floor_arrays.count(name) > 0; }
   /// The per-floor array of that name; throws InputError naming the file and the missing
   /// dataset when the file does not hold it.

@@ -25,6 +25,7 @@ struct EdpInfo {
   const char* dataset;
 };
 constexpr EdpInfo kEdps[] = {
+    {Edp::collapse, "collapse", "-", ""},
     {Edp::drift, "drift", "-", "peak_drift"},
     {Edp::disp, "disp", "m", "peak_disp"},
     {Edp::accel, "accel", "m/s^2", "peak_accel"},
@@ -91,8 +92,6 @@ ExceedanceDesign exceedance_design(const CampaignData& c, std::vector<std::size_
     d.levels.push_back(count[l] ? sum[l] / double(count[l]) : c.levels[l]);
   return d;
 }
-
-namespace {}  // namespace
 
 // Observed fractions for the plots: the stripes, or about ten equal-count IM bins (geometric
 // mean IM of each bin) when the intensity is continuous.
@@ -194,6 +193,7 @@ std::string dataset_of(Edp e, bool pounding) {
 }
 
 double edp_value(const CampaignData& c, Edp e, bool pounding, std::size_t s, std::size_t b) {
+  if (e == Edp::collapse) return c.collapsed(s, b, pounding) ? 1.0 : 0.0;
   if (e != Edp::force) return c.floor_array(dataset_of(e, pounding)).max_over_floors(s, b);
   if (!pounding) return 0.0;
   double m = kNan;
@@ -206,70 +206,76 @@ double edp_value(const CampaignData& c, Edp e, bool pounding, std::size_t s, std
   return std::isfinite(m) ? m : 0.0;  // a building without a neighbour: no force
 }
 
-FragilityReport analyse_fragility(const CampaignData& c, const FragilitySettings& s) {
-  FragilityReport r;
-  r.samples = c.samples;
-  std::vector<std::size_t> used;
-  const ExceedanceDesign d = exceedance_design(c, &used);
-  r.used = used.size();
-  for (int st : c.status) r.failed += st != 0;
-  r.stripes = d.stripes();
-  if (used.empty()) throw InputError(c.path + ": no successful sample to fit");
+namespace {
 
-  // Every curve's outcomes, per used analysis.
-  std::vector<std::vector<char>> outcomes;
-  const std::pair<Edp, const std::vector<double>*> lists[] = {
-      {Edp::drift, &s.drift_limits},
-      {Edp::disp, &s.disp_limits},
-      {Edp::accel, &s.accel_limits},
-      {Edp::force, &s.force_limits},
-      {Edp::residual_drift, &s.residual_drift_limits},
-      {Edp::ductility, &s.ductility_limits}};
-  // A file without an EDP's datasets (written before they existed) is an error only when
-  // that EDP's curves are asked for.
-  for (const auto& [edp, limits] : lists)
-    if (!limits->empty() && edp != Edp::force)
-      for (const bool pounding : {true, false}) c.floor_array(dataset_of(edp, pounding));
+// One set of analyses fitted together: all of them, or one contact model's.
+struct AnalysisSet {
+  std::string model;              // "" for all
+  std::vector<std::size_t> used;  // their rows
+  ExceedanceDesign d;
+};
+
+// The curves' EDPs and limits, collapse first (the limit state that decides life safety).
+std::vector<std::pair<Edp, std::vector<double>>> curve_limits(const CampaignData& c,
+                                                              const FragilitySettings& s) {
+  std::vector<std::pair<Edp, std::vector<double>>> out;
+  if (s.collapse && c.has_collapse()) out.push_back({Edp::collapse, {1.0}});
+  out.push_back({Edp::drift, s.drift_limits});
+  out.push_back({Edp::disp, s.disp_limits});
+  out.push_back({Edp::accel, s.accel_limits});
+  out.push_back({Edp::force, s.force_limits});
+  out.push_back({Edp::residual_drift, s.residual_drift_limits});
+  out.push_back({Edp::ductility, s.ductility_limits});
+  return out;
+}
+
+// Outcome of analysis `row` for a curve: 1 exceeded (a collapsed building exceeds every limit),
+// 0 not, kLeftOut when the EDP is not finite.
+char outcome(const CampaignData& c, Edp edp, double limit, bool pounding, std::size_t row,
+             std::size_t b) {
+  if (c.collapsed(row, b, pounding)) return 1;
+  const double v = edp_value(c, edp, pounding, row, b);
+  return !std::isfinite(v) ? kLeftOut : v > limit ? 1 : 0;
+}
+
+// The curves of one set (without bands), appended to r, their outcomes to `outcomes`.
+void fit_set(const CampaignData& c, const FragilitySettings& s, const AnalysisSet& set,
+             FragilityReport& r, std::vector<std::vector<char>>& outcomes) {
   for (std::size_t b = 0; b < c.buildings; ++b)
-    for (const auto& [edp, limits] : lists)
-      for (double limit : *limits) {
+    for (const auto& [edp, limits] : curve_limits(c, s))
+      for (double limit : limits) {
         if (!(limit > 0))
           throw InputError(std::string(to_string(edp)) + " limit " + std::to_string(limit) +
                            ": limits must be > 0");
         for (const bool pounding : {true, false}) {
           if (edp == Edp::force && !pounding) continue;  // no force without pounding
           FragilityCurve fc;
+          fc.model = set.model;
           fc.building = b;
           fc.edp = edp;
           fc.limit = limit;
           fc.pounding = pounding;
-          // Outcomes: exceeds or not, or left out when the EDP is not finite.
-          std::vector<char> z(used.size());
-          for (std::size_t k = 0; k < used.size(); ++k) {
-            const double v = edp_value(c, edp, pounding, used[k], b);
-            z[k] = !std::isfinite(v) ? kLeftOut : v > limit ? 1 : 0;
+          std::vector<char> z(set.used.size());
+          for (std::size_t k = 0; k < set.used.size(); ++k) {
+            z[k] = outcome(c, edp, limit, pounding, set.used[k], b);
             fc.left_out += z[k] == kLeftOut;
           }
-          fc.fit = fit_lognormal(observations(d, z));
-          fc.observed = observed_fractions(d, z);
+          fc.fit = fit_lognormal(observations(set.d, z));
+          fc.observed = observed_fractions(set.d, z);
           r.curves.push_back(fc);
           outcomes.push_back(z);
         }
       }
+}
 
-  // IM grid of the bands: log-spaced over [min / 2, 2 max] of the analysed intensities.
-  const double lo = *std::min_element(d.im.begin(), d.im.end()) / 2;
-  const double hi = *std::max_element(d.im.begin(), d.im.end()) * 2;
-  for (std::size_t i = 0; i < s.grid_points; ++i)
-    r.grid.push_back(
-        lo * std::pow(hi / lo, double(i) / double(std::max<std::size_t>(1, s.grid_points - 1))));
-
-  const auto reps = bootstrap_fits(d, outcomes, s.bootstrap);
+// Bands of the curves [first, first + reps.size()) from their bootstrap fits, and their shifts.
+void add_bands_and_shifts(const FragilitySettings& s, std::size_t first,
+                          const std::vector<std::vector<LognormalFit>>& reps, FragilityReport& r) {
   const double zq = normal_quantile(0.5 * (1.0 + s.confidence));
-  for (std::size_t k = 0; k < r.curves.size(); ++k) {
-    FragilityCurve& fc = r.curves[k];
+  for (std::size_t j = 0; j < reps.size(); ++j) {
+    FragilityCurve& fc = r.curves[first + j];
     std::vector<double> th, be;
-    for (const auto& f : reps[k]) {
+    for (const auto& f : reps[j]) {
       th.push_back(f.finite() ? f.theta : kNan);
       be.push_back(f.finite() ? f.beta : kNan);
     }
@@ -286,30 +292,83 @@ FragilityReport analyse_fragility(const CampaignData& c, const FragilitySettings
     }
     for (double x : r.grid) {
       std::vector<double> p;
-      for (const auto& f : reps[k]) p.push_back(f.probability(x));
+      for (const auto& f : reps[j]) p.push_back(f.probability(x));
       const Interval iv = percentile_interval(p, s.confidence);
       fc.band_lo.push_back(iv.lo);
       fc.band_hi.push_back(iv.hi);
     }
   }
-
   // The shift: curves come in (pounding, free) pairs except force.
-  for (std::size_t k = 0; k + 1 < r.curves.size(); ++k) {
-    const FragilityCurve &p = r.curves[k], &f = r.curves[k + 1];
+  for (std::size_t j = 0; j + 1 < reps.size(); ++j) {
+    const FragilityCurve &p = r.curves[first + j], &f = r.curves[first + j + 1];
     if (!p.pounding || f.pounding || p.edp != f.edp || p.limit != f.limit ||
         p.building != f.building)
       continue;
-    FragilityShift sh{p.building, p.edp, p.limit, kNan, {}};
+    FragilityShift sh{p.model, p.building, p.edp, p.limit, kNan, {}};
     if (p.fit.finite() && f.fit.finite()) sh.ratio = p.fit.theta / f.fit.theta;
     std::vector<double> ratio;
-    for (std::size_t i = 0; i < reps[k].size(); ++i)
-      ratio.push_back(reps[k][i].finite() && reps[k + 1][i].finite()
-                          ? reps[k][i].theta / reps[k + 1][i].theta
+    for (std::size_t i = 0; i < reps[j].size(); ++i)
+      ratio.push_back(reps[j][i].finite() && reps[j + 1][i].finite()
+                          ? reps[j][i].theta / reps[j + 1][i].theta
                           : kNan);
     sh.ci = percentile_interval(ratio, s.confidence);
     r.shifts.push_back(sh);
   }
+}
 
+// The pooled set and, where the study samples the contact model, each model's.
+std::vector<AnalysisSet> analysis_sets(const CampaignData& c, const FragilitySettings& s,
+                                       const std::vector<std::size_t>& used,
+                                       const ExceedanceDesign& d) {
+  std::vector<AnalysisSet> sets{{"", used, d}};
+  const std::vector<std::string> models = c.models();
+  if (!s.per_model || models.size() < 2) return sets;
+  for (const auto& m : models) {
+    AnalysisSet set{m, {}, {}};
+    set.d.levels = d.levels;
+    for (std::size_t k = 0; k < used.size(); ++k)
+      if (c.model[used[k]] == m) {
+        set.used.push_back(used[k]);
+        set.d.im.push_back(d.im[k]);
+        set.d.stripe.push_back(d.stripe[k]);
+      }
+    if (!set.used.empty()) sets.push_back(std::move(set));
+  }
+  return sets;
+}
+
+}  // namespace
+
+FragilityReport analyse_fragility(const CampaignData& c, const FragilitySettings& s) {
+  FragilityReport r;
+  r.samples = c.samples;
+  std::vector<std::size_t> used;
+  const ExceedanceDesign d = exceedance_design(c, &used);
+  r.used = used.size();
+  for (int st : c.status) r.failed += st != 0;
+  r.stripes = d.stripes();
+  r.collapse = s.collapse && c.has_collapse();
+  if (used.empty()) throw InputError(c.path + ": no successful sample to fit");
+  // A file without an EDP's datasets (written before they existed) is an error only when
+  // that EDP's curves are asked for.
+  for (const auto& [edp, limits] : curve_limits(c, s))
+    if (!limits.empty() && edp != Edp::force && edp != Edp::collapse)
+      for (const bool pounding : {true, false}) c.floor_array(dataset_of(edp, pounding));
+
+  // IM grid of the bands: log-spaced over [min / 2, 2 max] of the analysed intensities.
+  const double lo = *std::min_element(d.im.begin(), d.im.end()) / 2;
+  const double hi = *std::max_element(d.im.begin(), d.im.end()) * 2;
+  for (std::size_t i = 0; i < s.grid_points; ++i)
+    r.grid.push_back(
+        lo * std::pow(hi / lo, double(i) / double(std::max<std::size_t>(1, s.grid_points - 1))));
+
+  for (const AnalysisSet& set : analysis_sets(c, s, used, d)) {
+    if (!set.model.empty()) r.models.push_back(set.model);
+    std::vector<std::vector<char>> outcomes;
+    const std::size_t first = r.curves.size();
+    fit_set(c, s, set, r, outcomes);
+    add_bands_and_shifts(s, first, bootstrap_fits(set.d, outcomes, s.bootstrap), r);
+  }
   rank_sensitivity(c, used, &r);
   r.unranked = c.text_parameters;
   return r;

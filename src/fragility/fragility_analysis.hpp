@@ -16,6 +16,7 @@ namespace pound {
 
 /// Engineering demand parameters, each the maximum over the building's floors (storeys).
 enum class Edp {
+  collapse,        ///< the building collapsed (issue 23): 1 or 0; its one "limit" is 1
   drift,           ///< peak inter-storey drift ratio [-]
   disp,            ///< peak floor displacement relative to the ground [m]
   accel,           ///< peak absolute floor acceleration [m/s^2]
@@ -36,12 +37,19 @@ struct FragilitySettings {
   std::vector<double> force_limits;                            ///< [N]; empty: no force curves
   std::vector<double> residual_drift_limits;  ///< [-] (ratio); empty: no residual drift curves
   std::vector<double> ductility_limits;       ///< [-]; empty: no ductility curves
-  BootstrapSettings bootstrap;                ///< replicates and seed
-  double confidence = 0.90;                   ///< of the bands [-]
-  std::size_t grid_points = 120;              ///< IM points of the curve bands [-]
+  /// Collapse curves (when the file holds the collapse arrays). Every other limit counts a
+  /// collapsed building as exceeded.
+  bool collapse = true;
+  /// Where the study samples the contact model: the curves and shifts of each model's
+  /// analyses beside the pooled ones.
+  bool per_model = true;
+  BootstrapSettings bootstrap;    ///< replicates and seed
+  double confidence = 0.90;       ///< of the bands [-]
+  std::size_t grid_points = 120;  ///< IM points of the curve bands [-]
 };
 
 struct FragilityCurve {
+  std::string model;         ///< the contact model of its analyses; "" for all (pooled)
   std::size_t building = 0;  ///< 0-based
   Edp edp = Edp::drift;
   double limit = 0.0;  ///< damage-state limit [unit_of(edp)]
@@ -59,6 +67,7 @@ struct FragilityCurve {
 
 /// The headline: median ratio theta_pounding / theta_free for one building, EDP and limit.
 struct FragilityShift {
+  std::string model;  ///< as FragilityCurve::model
   std::size_t building = 0;
   Edp edp = Edp::drift;
   double limit = 0.0;
@@ -78,8 +87,10 @@ struct FragilityReport {
   std::size_t samples = 0, failed = 0, used = 0;  ///< analyses in the file, failed, fitted
   bool stripes = true;                            ///< multiple stripes (else continuous IM)
   std::vector<double> grid;                       ///< IM grid of the bands [m/s^2]
-  std::vector<FragilityCurve> curves;
-  std::vector<FragilityShift> shifts;
+  std::vector<FragilityCurve> curves;             ///< the pooled curves first, then each model's
+  std::vector<FragilityShift> shifts;             ///< in the order of the curves
+  std::vector<std::string> models;          ///< the models with curves of their own (may be empty)
+  bool collapse = false;                    ///< collapse curves (the file holds collapse arrays)
   std::vector<SensitivityRow> sensitivity;  ///< ranked by |PRCC| within building and response
   std::vector<std::string> unranked;        ///< sampled labels left out (e.g. model)
 };
@@ -106,8 +117,8 @@ std::vector<Observation> observed_fractions(const ExceedanceDesign& d,
 /// the dataset of an EDP with limits (naming the file and the dataset).
 FragilityReport analyse_fragility(const CampaignData& c, const FragilitySettings& s);
 
-/// The EDP of sample s, building b (NaN where undefined). Throws InputError when the file
-/// lacks the EDP's dataset.
+/// The EDP of sample s, building b (NaN where undefined; the collapse flag for
+/// Edp::collapse). Throws InputError when the file lacks the EDP's dataset.
 double edp_value(const CampaignData& c, Edp e, bool pounding, std::size_t s, std::size_t b);
 
 }  // namespace pound

@@ -12,6 +12,11 @@
 namespace pound {
 namespace {
 
+// The model column: "all" for the pooled curves.
+std::string model_label(const std::string& m) {
+  return m.empty() ? "all" : m;
+}
+
 std::string curves_csv(const CampaignData& c, const FragilityReport& r) {
   std::string s =
       "building,building_name,edp,unit,limit,pounding,status,theta_mps2,beta,"
@@ -33,23 +38,23 @@ std::string curves_csv(const CampaignData& c, const FragilityReport& r) {
          std::to_string(n) + "," + std::to_string(z) + "," +
          csv_number(k.fit.bracketed() ? k.fit.theta_lo : NAN) + "," +
          csv_number(k.fit.bracketed() ? k.fit.theta_hi : NAN) + "," + std::to_string(k.left_out) +
-         "\n";
+         "," + model_label(k.model) + "\n";
   }
   return s;
 }
 
 std::string shift_csv(const CampaignData& c, const FragilityReport& r) {
-  std::string s = "building,building_name,edp,unit,limit,ratio,ratio_ci90_lo,ratio_ci90_hi\n";
+  std::string s = "building,building_name,edp,unit,limit,ratio,ratio_ci90_lo,ratio_ci90_hi,model\n";
   for (const auto& k : r.shifts)
     s += std::to_string(k.building) + "," + c.building_name(k.building) + "," + to_string(k.edp) +
          "," + unit_of(k.edp) + "," + csv_number(k.limit) + "," + csv_number(k.ratio) + "," +
-         csv_number(k.ci.lo) + "," + csv_number(k.ci.hi) + "\n";
+         csv_number(k.ci.lo) + "," + csv_number(k.ci.hi) + "," + model_label(k.model) + "\n";
   return s;
 }
 
 std::string observations_csv(const FragilityReport& r) {
   std::string s = std::string("building,edp,limit,") + (r.stripes ? "stripe" : "bin") +
-                  ",im_mps2,n,exceed_pounding,exceed_free\n";
+                  ",im_mps2,n,exceed_pounding,exceed_free,model\n";
   for (std::size_t k = 0; k < r.curves.size(); ++k) {
     const auto& p = r.curves[k];
     if (!p.pounding) continue;
@@ -58,7 +63,8 @@ std::string observations_csv(const FragilityReport& r) {
       s += std::to_string(p.building) + "," + to_string(p.edp) + "," + csv_number(p.limit) + "," +
            std::to_string(j) + "," + csv_number(p.observed[j].im) + "," +
            std::to_string(p.observed[j].n) + "," + std::to_string(p.observed[j].z) + "," +
-           (paired ? std::to_string(r.curves[k + 1].observed[j].z) : "") + "\n";
+           (paired ? std::to_string(r.curves[k + 1].observed[j].z) : "") + "," +
+           model_label(p.model) + "\n";
   }
   return s;
 }
@@ -106,6 +112,7 @@ void write_h5(const std::string& path, const CampaignData& c, const FragilityRep
       char g[48];
       std::snprintf(g, sizeof g, "/fragility/curve%03zu", k);
       h5::ensure_group(id, g);
+      h5::attribute(id, g, "model", model_label(cv.model));
       h5::attribute(id, g, "building", double(cv.building));
       h5::attribute(id, g, "edp", to_string(cv.edp));
       h5::attribute(id, g, "limit", cv.limit);

@@ -298,6 +298,44 @@ std::vector<double> read_numbers(hid_t file, const std::string& dataset, const s
   return v;
 }
 
+std::vector<std::string> read_strings(hid_t file, const std::string& dataset,
+                                      const std::string& path) {
+  if (H5Lexists(file, dataset.c_str(), H5P_DEFAULT) <= 0)
+    throw InputError(path + ": no " + dataset);
+  const hid_t ds = H5Dopen2(file, dataset.c_str(), H5P_DEFAULT);
+  if (ds < 0) throw InputError(path + ": " + dataset + " is not a dataset");
+  const hid_t sp = H5Dget_space(ds), type = H5Dget_type(ds);
+  hsize_t n = 0;
+  std::string error;
+  if (H5Sget_simple_extent_ndims(sp) != 1 || H5Tget_class(type) != H5T_STRING ||
+      H5Tis_variable_str(type) <= 0) {
+    error = path + ": " + dataset + " is not a list of labels (variable-length strings)";
+  } else {
+    H5Sget_simple_extent_dims(sp, &n, nullptr);
+    if (const std::string why = declared_values_problem(ds, n, sizeof(char*), sizeof(char*));
+        !why.empty())
+      error = path + ": " + dataset + " " + why + " (a damaged file)";
+  }
+  std::vector<std::string> out;
+  if (error.empty()) {
+    const hid_t mem = H5Tcopy(H5T_C_S1);
+    H5Tset_size(mem, H5T_VARIABLE);
+    std::vector<char*> raw(static_cast<std::size_t>(n), nullptr);
+    if (n && H5Dread(ds, mem, H5S_ALL, H5S_ALL, H5P_DEFAULT, raw.data()) < 0) {
+      error = path + ": cannot read " + dataset + " as labels";
+    } else {
+      for (char* p : raw) out.emplace_back(p ? p : "");
+      if (n) H5Dvlen_reclaim(mem, sp, H5P_DEFAULT, raw.data());
+    }
+    H5Tclose(mem);
+  }
+  H5Tclose(type);
+  H5Sclose(sp);
+  H5Dclose(ds);
+  if (!error.empty()) throw InputError(error);
+  return out;
+}
+
 std::vector<std::string> group_members(hid_t file, const std::string& group) {
   std::vector<std::string> out;
   if (H5Lexists(file, group.c_str(), H5P_DEFAULT) <= 0) return out;

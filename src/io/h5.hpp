@@ -76,6 +76,11 @@ std::string declared_values_problem(hid_t ds, hsize_t count, std::size_t file_by
 /// values than it can hold (declared_values_problem).
 std::vector<double> read_numbers(hid_t file, const std::string& dataset, const std::string& path,
                                  std::vector<hsize_t>* dims, const std::string& missing);
+/// A whole one-dimensional dataset of variable-length strings (labels), one per row. Throws
+/// InputError naming `path` and the dataset when it is absent, not such a dataset, unreadable
+/// or declares more rows than it can hold.
+std::vector<std::string> read_strings(hid_t file, const std::string& dataset,
+                                      const std::string& path);
 /// The names of the links directly under a group, in name order; empty when it is absent.
 std::vector<std::string> group_members(hid_t file, const std::string& group);
 

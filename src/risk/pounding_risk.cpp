@@ -380,13 +380,15 @@ std::vector<DamageRisk> damage_risks(const CampaignData& c, const HazardCurve& h
     const FragilityCurve& pc = fr.curves[k];
     if (!pc.pounding) continue;
     DamageRisk dr;
+    dr.model = pc.model;
     dr.building = pc.building;
     dr.edp = pc.edp;
     dr.limit = pc.limit;
     dr.pounding = pc.fit;
     dr.free.status = FitStatus::no_data;
     if (k + 1 < fr.curves.size() && !fr.curves[k + 1].pounding && fr.curves[k + 1].edp == pc.edp &&
-        fr.curves[k + 1].limit == pc.limit && fr.curves[k + 1].building == pc.building)
+        fr.curves[k + 1].limit == pc.limit && fr.curves[k + 1].building == pc.building &&
+        fr.curves[k + 1].model == pc.model)
       dr.free = fr.curves[k + 1].fit;
     dr.maf_pounding =
         dr.pounding.finite() ? mean_annual_frequency(h, dr.pounding.theta, dr.pounding.beta) : kNaN;
@@ -445,8 +447,11 @@ void add_damage_notes(const std::vector<DamageRisk>& damage, std::vector<std::st
       if (share > 0.25) {
         char limit[32];
         std::snprintf(limit, sizeof limit, "%g", dr.limit);
-        outside += (outside.empty() ? "" : ", ") + std::string(to_string(dr.edp)) + " " + limit +
-                   " " + unit_of(dr.edp) + " (building " + std::to_string(dr.building + 1) + ")";
+        outside +=
+            (outside.empty() ? "" : ", ") + std::string(to_string(dr.edp)) +
+            (dr.edp == Edp::collapse ? "" : " " + std::string(limit) + " " + unit_of(dr.edp)) +
+            " (building " + std::to_string(dr.building + 1) +
+            (dr.model.empty() ? "" : ", " + dr.model + " alone") + ")";
         break;
       }
   if (!outside.empty())
@@ -458,6 +463,30 @@ void add_damage_notes(const std::vector<DamageRisk>& damage, std::vector<std::st
 }
 
 }  // namespace
+
+// Collapse from the damage limits: nu and P in T years, their ratio, and the collapse margin
+// ratio theta / design intensity with a given design (MCE) intensity (FEMA P695, sec. 6.3).
+std::vector<CollapseRisk> collapse_risks(const std::vector<DamageRisk>& damage,
+                                         const RiskSettings& s, double design_im) {
+  std::vector<CollapseRisk> out;
+  for (const auto& d : damage) {
+    if (d.edp != Edp::collapse) continue;
+    CollapseRisk c;
+    c.model = d.model;
+    c.building = d.building;
+    c.pounding = d.pounding;
+    c.free = d.free;
+    c.maf_pounding = d.maf_pounding;
+    c.maf_free = d.maf_free;
+    c.ratio = d.ratio;
+    c.probability_pounding = probability_in_years(d.maf_pounding, s.years);
+    c.probability_free = probability_in_years(d.maf_free, s.years);
+    c.cmr_pounding = design_im > 0 && d.pounding.finite() ? d.pounding.theta / design_im : kNaN;
+    c.cmr_free = design_im > 0 && d.free.finite() ? d.free.theta / design_im : kNaN;
+    out.push_back(c);
+  }
+  return out;
+}
 
 RiskReport analyse_risk(const CampaignData& c, const HazardCurve& h, const RiskSettings& s,
                         const std::vector<BuildingMode>& modes, const FragilitySettings& limits) {
@@ -496,6 +525,7 @@ RiskReport analyse_risk(const CampaignData& c, const HazardCurve& h, const RiskS
     r.pairs.push_back(
         analyse_pair(PairAnalysis(c, used, d, h, s, p), p, c, d, s, resampler, design, modes));
   r.damage = damage_risks(c, h, limits, im_lo, im_hi);
+  r.collapse = collapse_risks(r.damage, s, r.design_im_given ? r.design_im : 0.0);
 
   // What could not be estimated.
   const double per_group = double(r.used) / double(std::max<std::size_t>(1, r.groups));

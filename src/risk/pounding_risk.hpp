@@ -94,6 +94,7 @@ struct PairRisk {
 
 /// A damage limit's mean annual frequency of exceedance with and without pounding.
 struct DamageRisk {
+  std::string model;  ///< the contact model of its analyses; "" for all (FragilityCurve::model)
   std::size_t building = 0;
   Edp edp = Edp::drift;
   double limit = 0.0;                         ///< [unit_of(edp)]
@@ -104,6 +105,19 @@ struct DamageRisk {
   double outside_pounding = 0.0, outside_free = 0.0;
 };
 
+/// Collapse of a building (issue 23): its mean annual frequency and probability in T years
+/// with and without pounding, their ratio, and with a design (MCE) intensity the collapse
+/// margin ratio CMR = median collapse intensity / design intensity (FEMA P695, sec. 6.3).
+struct CollapseRisk {
+  std::string model;  ///< "" for all
+  std::size_t building = 0;
+  LognormalFit pounding, free;
+  double maf_pounding = 0.0, maf_free = 0.0;                  ///< [1/yr]; NaN without a finite fit
+  double probability_pounding = 0.0, probability_free = 0.0;  ///< in T years [-]
+  double ratio = 0.0;                                         ///< maf_pounding / maf_free [-]
+  double cmr_pounding = 0.0, cmr_free = 0.0;  ///< [-]; NaN without a design intensity or fit
+};
+
 struct RiskReport {
   std::size_t samples = 0, failed = 0, used = 0;
   bool stripes = true;
@@ -111,9 +125,15 @@ struct RiskReport {
   double design_im = 0.0;        ///< [m/s^2]
   bool design_im_given = false;  ///< false: the hazard's 475-year intensity
   std::vector<PairRisk> pairs;
-  std::vector<DamageRisk> damage;
-  std::vector<std::string> notes;  ///< what could not be estimated, and why
+  std::vector<DamageRisk> damage;      ///< pooled first, then each sampled contact model's
+  std::vector<CollapseRisk> collapse;  ///< the collapse limit of `damage`, pooled then per model
+  std::vector<std::string> notes;      ///< what could not be estimated, and why
 };
+
+/// The collapse entries of `damage` (Edp::collapse) with their probability in s.years and, for
+/// design_im > 0 [m/s^2], their collapse margin ratio theta / design_im.
+std::vector<CollapseRisk> collapse_risks(const std::vector<DamageRisk>& damage,
+                                         const RiskSettings& s, double design_im);
 
 /// Throws InputError when the file has no /response/approach_free, no sample succeeded, the
 /// settings are out of range, or a given design intensity lies outside the campaign's.

@@ -51,13 +51,13 @@ std::string damage_csv(const CampaignData& c, const RiskReport& r) {
   std::string s =
       "building,building_name,edp,unit,limit,status_pounding,theta_pounding_mps2,beta_pounding,"
       "status_free,theta_free_mps2,beta_free,maf_pounding_per_year,maf_free_per_year,ratio,"
-      "maf_share_outside_campaign_pounding,maf_share_outside_campaign_free\n";
+      "maf_share_outside_campaign_pounding,maf_share_outside_campaign_free,model\n";
   for (const auto& d : r.damage)
     s += std::to_string(d.building) + "," + c.building_name(d.building) + "," + to_string(d.edp) +
          "," + unit_of(d.edp) + "," + csv_number(d.limit) + "," + fit_fields(d.pounding) + "," +
          fit_fields(d.free) + "," + csv_number(d.maf_pounding) + "," + csv_number(d.maf_free) +
          "," + csv_number(d.ratio) + "," + csv_number(d.outside_pounding) + "," +
-         csv_number(d.outside_free) + "\n";
+         csv_number(d.outside_free) + "," + (d.model.empty() ? "all" : d.model) + "\n";
   return s;
 }
 
@@ -179,10 +179,11 @@ void write_h5(const std::string& path, const CampaignData& c, const HazardCurve&
       put(id, pg + "/median_right", p.median_right, {p.median_right.size()}, "m");
     }
     std::vector<double> b, lim, mp, mf, ratio;
-    std::vector<std::string> edp;
+    std::vector<std::string> edp, model;
     for (const auto& d : r.damage) {
       b.push_back(double(d.building));
       edp.push_back(to_string(d.edp));
+      model.push_back(d.model.empty() ? "all" : d.model);
       lim.push_back(d.limit);
       mp.push_back(d.maf_pounding);
       mf.push_back(d.maf_free);
@@ -191,6 +192,7 @@ void write_h5(const std::string& path, const CampaignData& c, const HazardCurve&
     const hsize_t D = r.damage.size();
     put(id, g + "/damage/building", b, {D}, "-");
     h5::attribute(id, g + "/damage", "edp", joined(edp));
+    h5::attribute(id, g + "/damage", "model", joined(model));
     put(id, g + "/damage/limit", lim, {D});
     put(id, g + "/damage/maf_pounding", mp, {D}, "1/yr");
     put(id, g + "/damage/maf_free", mf, {D}, "1/yr");

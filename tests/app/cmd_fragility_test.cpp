@@ -63,11 +63,16 @@ TEST(CmdFragility, JsonCurvesFilesAndUntouchedCampaign) {
       << slurp(dir() + "/frag.log");
   EXPECT_EQ(slurp(campaign()), before);  // the campaign file is byte for byte the same
   const std::string j = slurp(json);
-  // 2 buildings x 4 drift limits x 2 (with and without pounding) + 2 force curves.
-  EXPECT_EQ(count(j, "\"edp\":\"drift\""), 16 + 8);  // 16 curves + 8 shift entries
+  // 2 buildings x (collapse + 4 drift limits) x 2 (with and without pounding) + 2 force curves.
+  EXPECT_EQ(count(j, "\"edp\":\"drift\""), 16 + 8);    // 16 curves + 8 shift entries
+  EXPECT_EQ(count(j, "\"edp\":\"collapse\""), 4 + 2);  // 4 curves + 2 shift entries
   EXPECT_EQ(count(j, "\"edp\":\"force\""), 2);
-  EXPECT_EQ(count(j, "\"pounding\":true"), 10);
-  EXPECT_EQ(count(j, "\"pounding\":false"), 8);
+  EXPECT_EQ(count(j, "\"pounding\":true"), 12);
+  EXPECT_EQ(count(j, "\"pounding\":false"), 10);
+  // The smoke study samples no contact model: pooled curves only, and collapse first.
+  EXPECT_EQ(count(j, "\"model\":\"all\""), 22 + 10);
+  EXPECT_NE(j.find("\"models\":[]"), std::string::npos);
+  EXPECT_LT(j.find("\"edp\":\"collapse\""), j.find("\"edp\":\"drift\""));
   for (const char* key : {"\"building\":0", "\"building\":1", "\"limit\":0.005", "\"limit\":0.025",
                           "\"theta\":", "\"beta\":", "\"theta_ci90\":", "\"beta_ci90\":",
                           "\"shift\":[", "\"curves\":[", "\"sensitivity\":[", "\"samples\":40"})
@@ -99,7 +104,7 @@ TEST(CmdFragility, JsonCurvesFilesAndUntouchedCampaign) {
     EXPECT_TRUE(fs::exists(out + "/" + f)) << f;
   for (const auto& e : fs::directory_iterator(out))
     EXPECT_EQ(e.path().string().find(".tmp."), std::string::npos) << e.path();
-  EXPECT_EQ(count(slurp(out + "/curves.csv"), "\n"), 1 + 18);
+  EXPECT_EQ(count(slurp(out + "/curves.csv"), "\n"), 1 + 22);
 }
 
 // The smoke campaign with yield shears on building 1 (the elastic law: they give it a
@@ -172,9 +177,9 @@ TEST(CmdFragility, ResidualDriftAndDuctilityCurves) {
   EXPECT_EQ(count(j, "\"edp\":\"drift\""), 16 + 8);
   // Building 2 has no yield shears: its two ductility curves leave out all 40 analyses.
   EXPECT_EQ(count(j, "\"left_out\":40"), 2);
-  EXPECT_EQ(count(j, "\"left_out\":0"), 16 + 4 + 2);
+  EXPECT_EQ(count(j, "\"left_out\":0"), 4 + 16 + 4 + 2);  // collapse, drift, residual, ductility
   EXPECT_EQ(count(j, "\"status\":\"no_data\""), 2);
-  EXPECT_EQ(count(slurp(out + "/curves.csv"), "\n"), 1 + 16 + 4 + 4);
+  EXPECT_EQ(count(slurp(out + "/curves.csv"), "\n"), 1 + 4 + 16 + 4 + 4);
   EXPECT_NE(slurp(out + "/curves.csv").find(",ductility,-,1.5,true,no_data,"), std::string::npos);
   EXPECT_EQ(h5_curves(out + "/fragility.h5", "ductility"), (std::pair<int, double>{4, 80.0}));
   EXPECT_EQ(h5_curves(out + "/fragility.h5", "residual_drift"), (std::pair<int, double>{4, 0.0}));

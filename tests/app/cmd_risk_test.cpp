@@ -96,7 +96,11 @@ TEST(CmdRisk, JsonFieldsFilesAndUntouchedCampaign) {
       "for x in p['code_rules']:\n"
       "    q = x['probability_pounding']\n"
       "    assert q is None or 0 <= q <= 1\n"
-      "assert len(d['files']) == 4 and len(d['damage']) == 8\n";
+      "assert len(d['files']) == 4 and len(d['damage']) == 10\n"
+      "assert [x['edp'] for x in d['damage']][:1] == ['collapse']\n"
+      "assert len(d['collapse']) == 2 and all(x['model'] == 'all' for x in d['collapse'])\n"
+      "for x in d['collapse']:\n"
+      "    assert x['cmr_pounding'] is None and x['cmr_free'] is None  # no --design-im\n";
   std::ofstream(dir() + "/check.py") << check;
   EXPECT_EQ(sh("/usr/bin/python3 " + dir() + "/check.py " + json + " 2>" + dir() + "/py.log"), 0)
       << slurp(dir() + "/py.log") << slurp(json);

@@ -227,3 +227,43 @@ TEST(PoundingRisk, DefaultDesignIntensityAndBadInput) {
 
 }  // namespace
 }  // namespace pound
+
+namespace pound {
+namespace {
+
+// Collapse in pound risk: the probability in T years is 1 - exp(-nu T) and the collapse margin
+// ratio the median collapse intensity over the design (MCE) intensity (FEMA P695, sec. 6.3);
+// only the collapse limit is a collapse entry, per model as the damage limits are.
+TEST(CollapseRisk, ProbabilityInTYearsAndTheCollapseMarginRatio) {
+  DamageRisk collapse;
+  collapse.model = "sears";
+  collapse.building = 1;
+  collapse.edp = Edp::collapse;
+  collapse.limit = 1.0;
+  collapse.pounding.status = collapse.free.status = FitStatus::ok;
+  collapse.pounding.theta = 1.5 * kGravity;
+  collapse.free.theta = 2.0 * kGravity;
+  collapse.pounding.beta = collapse.free.beta = 0.5;
+  collapse.maf_pounding = 2e-4;
+  collapse.maf_free = 1e-4;
+  collapse.ratio = 2.0;
+  DamageRisk drift = collapse;
+  drift.edp = Edp::drift;
+  RiskSettings s;
+  s.years = 50;
+  const auto c = collapse_risks({drift, collapse}, s, 0.75 * kGravity);
+  ASSERT_EQ(c.size(), 1u);
+  EXPECT_EQ(c[0].model, "sears");
+  EXPECT_EQ(c[0].building, 1u);
+  EXPECT_DOUBLE_EQ(c[0].probability_pounding, -std::expm1(-2e-4 * 50));
+  EXPECT_DOUBLE_EQ(c[0].probability_free, -std::expm1(-1e-4 * 50));
+  EXPECT_DOUBLE_EQ(c[0].cmr_pounding, 2.0);
+  EXPECT_DOUBLE_EQ(c[0].cmr_free, 2.0 / 0.75);
+  EXPECT_DOUBLE_EQ(c[0].ratio, 2.0);
+  // Without a design intensity there is no margin ratio.
+  const auto d = collapse_risks({collapse}, s, 0.0);
+  EXPECT_TRUE(std::isnan(d[0].cmr_pounding) && std::isnan(d[0].cmr_free));
+}
+
+}  // namespace
+}  // namespace pound
