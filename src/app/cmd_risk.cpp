@@ -146,11 +146,13 @@ void print_text(const CampaignData& c, const HazardCurve& h, const RiskReport& r
         "\nPounding at each gap, pair %zu (%s): P(pounding | %s) = Phi(ln(x / theta) / "
         "beta)\n",
         p.pair + 1, pair_name(c, p.pair).c_str(), im.c_str());
-    std::printf("  %9s %9s  %-16s %10s %7s %12s %12s  %-20s\n", "gap [m]", "pounding", "status",
-                "theta [g]", "beta", "nu [1/yr]", ("P(" + T + " y)").c_str(), "90 % band");
+    std::printf("  %9s %9s %9s  %-16s %10s %7s %12s %12s  %-20s\n", "gap [m]", "pounding",
+                "collapsed", "status", "theta [g]", "beta", "nu [1/yr]", ("P(" + T + " y)").c_str(),
+                "90 % band");
     for (const auto& e : p.grid)
-      std::printf("  %9s %4ld/%-4ld  %-16s %10s %7s %12s %12s  [%7s, %7s]\n",
-                  fmt("%.4f", e.gap).c_str(), e.pounding, e.analyses, to_string(e.fit.status),
+      std::printf("  %9s %4ld/%-4ld %9ld  %-16s %10s %7s %12s %12s  [%7s, %7s]\n",
+                  fmt("%.4f", e.gap).c_str(), e.pounding, e.analyses, e.pounding_collapsed,
+                  to_string(e.fit.status),
                   e.fit.finite() ? fmt("%.4f", e.fit.theta / kGravity).c_str() : "-",
                   e.fit.finite() ? fmt("%.3f", e.fit.beta).c_str() : "-",
                   fmt("%.3e", e.maf).c_str(), fmt("%.4f", e.probability).c_str(),

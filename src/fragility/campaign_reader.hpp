@@ -76,6 +76,14 @@ struct CampaignData {
     const auto it = building_arrays.find(pounding ? "collapsed_pounding" : "collapsed_free");
     return it != building_arrays.end() && it->second[s * buildings + b] == 1.0;
   }
+  /// Whether the pounding run of sample s stopped at another building's collapse while
+  /// building b stood: b's later response is unknown (the run stops at its first collapse).
+  bool censored(std::size_t s, std::size_t b) const {
+    if (collapsed(s, b, true)) return false;
+    for (std::size_t o = 0; o < buildings; ++o)
+      if (o != b && collapsed(s, o, true)) return true;
+    return false;
+  }
   /// Each sample's contact model when the study samples it (/samples/model), else empty.
   std::vector<std::string> model;
   /// The distinct models of `model`, in first-seen order (empty when not sampled).

@@ -230,12 +230,16 @@ std::vector<std::pair<Edp, std::vector<double>>> curve_limits(const CampaignData
 }
 
 // Outcome of analysis `row` for a curve: 1 exceeded (a collapsed building exceeds every limit),
-// 0 not, kLeftOut when the EDP is not finite.
+// 0 not, kLeftOut when the EDP is not finite, or when the pounding run stopped at another
+// building's collapse before this one exceeded the limit (its outcome is then unknown: right-
+// censored; an exceedance before the stop is known and counts).
 char outcome(const CampaignData& c, Edp edp, double limit, bool pounding, std::size_t row,
              std::size_t b) {
   if (c.collapsed(row, b, pounding)) return 1;
   const double v = edp_value(c, edp, pounding, row, b);
-  return !std::isfinite(v) ? kLeftOut : v > limit ? 1 : 0;
+  const bool exceeded = edp != Edp::collapse && v > limit;
+  if (pounding && !exceeded && c.censored(row, b)) return kLeftOut;
+  return !std::isfinite(v) ? kLeftOut : exceeded ? 1 : 0;
 }
 
 // The curves of one set (without bands), appended to r, their outcomes to `outcomes`.

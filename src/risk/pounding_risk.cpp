@@ -46,6 +46,7 @@ class PairAnalysis {
       }
       approach_.push_back(m);
       if (std::isfinite(m)) sorted_.push_back(m);
+      collapsed_.push_back(c.collapsed(s2, pair, false) || c.collapsed(s2, pair + 1, false));
     }
     std::sort(sorted_.begin(), sorted_.end());
     sorted_.erase(std::unique(sorted_.begin(), sorted_.end()), sorted_.end());
@@ -71,8 +72,10 @@ class PairAnalysis {
     e.fit = fit_lognormal(obs);
     e.maf = e.fit.finite() ? mean_annual_frequency(h_, e.fit.theta, e.fit.beta) : kNaN;
     e.probability = probability_in_years(e.maf, s_.years);
-    if (rows.empty())  // (not needed by the bootstrap)
+    if (rows.empty()) {  // (not needed by the bootstrap)
       e.outside_share = outside_share(h_, e.fit, e.maf, im_lo_, im_hi_);
+      for (std::size_t k = 0; k < z.size(); ++k) e.pounding_collapsed += z[k] == 1 && collapsed_[k];
+    }
     return e;
   }
 
@@ -129,6 +132,7 @@ class PairAnalysis {
   double im_lo_ = 0.0, im_hi_ = 0.0;  // the campaign's intensities [m/s^2]
   std::vector<double> approach_;      // per used analysis [m]
   std::vector<double> sorted_;        // distinct finite approaches, increasing [m]
+  std::vector<char> collapsed_;       // per used analysis: a building of the pair collapsed
 };
 
 // Medians of the free-run peak floor displacement [building][floor] per intensity group, and
@@ -431,7 +435,14 @@ void add_pair_notes(const PairRisk& pr, const PairAnalysis& pa, std::vector<std:
                     " bootstrap replicates in which the gap could be estimated");
   if (!pr.rules_computed) notes.push_back(pair + "code rules not computed: " + pr.rules_note);
   if (std::isfinite(pr.gap_for_target)) {
-    const double share = pa.estimate(pr.gap_for_target).outside_share;
+    const GapEstimate at = pa.estimate(pr.gap_for_target);
+    if (at.pounding > 0 && 2 * at.pounding_collapsed > at.pounding)
+      notes.push_back(pair + std::to_string(at.pounding_collapsed) + " of the " +
+                      std::to_string(at.pounding) +
+                      " samples that pound at the gap for the target are ones in which a "
+                      "building of the pair collapsed: the gap is set by collapsing sways, which "
+                      "no gap prevents (docs/risk.md, \"Pounding and collapse\")");
+    const double share = at.outside_share;
     if (share > 0.1)
       notes.push_back(pair + std::to_string(int(std::lround(100 * share))) +
                       " % of nu at the gap for the target comes from intensities outside the "

@@ -48,9 +48,12 @@ void check_hazard_measure(const CampaignData& c, const HazardCurve& h);
 
 /// Pounding of one pair at one gap.
 struct GapEstimate {
-  double gap = 0.0;          ///< [m]
-  long analyses = 0;         ///< samples with a free-run approach
-  long pounding = 0;         ///< of them, samples whose approach exceeds the gap
+  double gap = 0.0;   ///< [m]
+  long analyses = 0;  ///< samples with a free-run approach
+  long pounding = 0;  ///< of them, samples whose approach exceeds the gap
+  /// Of those, samples in which a building of the pair collapsed in the free run: the approach
+  /// of a collapsing building's sway (issue 23) [-]
+  long pounding_collapsed = 0;
   LognormalFit fit;          ///< P(pounding | IM) (Baker 2015)
   double maf = 0.0;          ///< nu [1/yr]; NaN without a finite fit
   double probability = 0.0;  ///< in T years; NaN without a finite fit

@@ -21,7 +21,7 @@ std::string gaps_csv(const RiskReport& r) {
   std::string s =
       "pair,gap_m,analyses,pounding,status,theta_mps2,beta,maf_per_year,probability,"
       "probability_ci90_lo,probability_ci90_hi,theta_bound_lo_mps2,theta_bound_hi_mps2,"
-      "maf_share_outside_campaign\n";
+      "maf_share_outside_campaign,pounding_collapsed\n";
   for (const auto& p : r.pairs)
     for (const auto& e : p.grid)
       s += std::to_string(p.pair + 1) + "," + csv_number(e.gap) + "," + std::to_string(e.analyses) +
@@ -30,7 +30,7 @@ std::string gaps_csv(const RiskReport& r) {
            csv_number(e.probability_band.hi) + "," +
            csv_number(e.fit.bracketed() ? e.fit.theta_lo : NAN) + "," +
            csv_number(e.fit.bracketed() ? e.fit.theta_hi : NAN) + "," +
-           csv_number(e.outside_share) + "\n";
+           csv_number(e.outside_share) + "," + std::to_string(e.pounding_collapsed) + "\n";
   return s;
 }
 

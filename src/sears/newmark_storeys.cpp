@@ -56,9 +56,9 @@ bool NewmarkStoreys::trial(const Eigen::VectorXd& u, const Eigen::VectorXd& u_en
       if (can_fail_[i] && s.law->failed(s.p, trial_[i])) failed_in_step_[i] = 1;
     }
     double r = s.p.k0 * d1 - V, fd = 0.0;
-    if (s.damping_a1 > 0.0) {  // tangent damping at the trial branch (newmark_storeys.hpp)
+    if (s.damping_a1 > 0.0) {  // tangent damping of the step's start (newmark_storeys.hpp)
       double slope = s.p.k0, offset = 0.0;
-      s.law->branch_line(s.p, trial_[i], slope, offset);
+      s.law->branch_line(s.p, committed_[i], slope, offset);
       fd = s.damping_a1 * (std::max(slope, 0.0) - s.p.k0) * drift(v_end, i);
       r -= fd;
       rd_trial_(i) = fd;

@@ -13,7 +13,10 @@
 // linear branch needs none. With P-Delta K already holds the geometric stiffness (K = K0 - Kg)
 // and r stays the laws' part. With tangent-stiffness damping (RowStorey::damping_a1) r also
 // takes the damper a1 (max(k_t, 0) - k0) of each such storey at the end-of-step drift rate:
-// r_j = k0_j d_j - V_j - f_d,j, f_d,j = a1 (max(k_t,j, 0) - k0_j) dd_j (Charney 2008).
+// r_j = k0_j d_j - V_j - f_d,j, f_d,j = a1 (max(k_t,j, 0) - k0_j) dd_j (Charney 2008), k_t the
+// tangent of the branch the step starts on (a coefficient of the trial's own branch has no
+// fixed point when the branch changes in the step: the branch decides the damping that decides
+// the branch; the lumped solver locates the switch instead).
 // Kernel only: no files, no printing.
 #include <Eigen/Dense>
 #include <vector>

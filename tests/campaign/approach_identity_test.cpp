@@ -34,11 +34,20 @@ TEST(ApproachIdentity, ASampleTouchesExactlyWhenItsApproachExceedsItsGap) {
   ASSERT_GE(gap_at, 0);
   ASSERT_GE(model_at, 0);
   SampleRunner runner(st);
-  int touched = 0, apart = 0, grazing = 0, ok = 0;
+  int touched = 0, apart = 0, grazing = 0, ok = 0, collapsed = 0;
   double worst_grazing = 0.0, nearest = INFINITY;
-  for (long id = 0; id < 96; ++id) {  // eight samples of each of the twelve stripes
+  for (long id = 0; id < 96; ++id) {  // six or seven samples of each of the fifteen stripes
     const SampleOutcome o = runner.run(id);
     if (o.status != SampleStatus::ok) continue;
+    // A run that collapses is outside the identity: the pounding run stops at its first
+    // collapse, and the free run's approach includes a collapsing building's sway.
+    bool collapse = false;
+    for (const auto* c : {&o.collapsed_pounding, &o.collapsed_free})
+      for (double x : *c) collapse |= x == 1.0;
+    if (collapse) {
+      ++collapsed;
+      continue;
+    }
     ++ok;
     const double gap = o.values[std::size_t(gap_at)];
     const std::string model =
@@ -64,9 +73,9 @@ TEST(ApproachIdentity, ASampleTouchesExactlyWhenItsApproachExceedsItsGap) {
   }
   std::printf(
       "[ identity ] %d samples: %d touched, %d stayed apart, %d grazing (largest "
-      "|approach - gap| / approach among them %.3g; smallest of all samples %.3g)\n",
-      ok, touched, apart, grazing, worst_grazing, nearest);
-  EXPECT_GE(ok, 90);
+      "|approach - gap| / approach among them %.3g; smallest of all samples %.3g); %d collapsed\n",
+      ok, touched, apart, grazing, worst_grazing, nearest, collapsed);
+  EXPECT_GE(ok, 50);  // the others collapse (the stripes reach 3 g)
   // Both outcomes occur often enough for the identity to be tested.
   EXPECT_GE(touched, 15);
   EXPECT_GE(apart, 15);

@@ -220,7 +220,8 @@ TEST(Sample, GrazingRecontactsOfTheDefaultStudyAreNotChatter) {
   // issue 12). Their peak forces are those the engine of then
   // computed for them, to the last bit (checked when the sampling changed).
   Options opt("campaign", "", campaign_option_specs());
-  const std::string file = POUND_SOURCE_DIR "/studies/fragility-default.ini";
+  const std::string file =
+      POUND_SOURCE_DIR "/tests/campaign/data/fragility-default-before-collapse.ini";
   opt.parse({"--config", file, "--intensity.levels", "0.05,0.1,0.15,0.2,0.3,0.4,0.5,0.6",
              "--building1.hysteresis", "elastic", "--building2.hysteresis", "elastic",
              "--simulation.extra_time", "0", "--generator.variability", "none"});
