@@ -1,17 +1,19 @@
 #!/usr/bin/python3
-"""Regenerates the numbers of docs/fragility.md ("Example") and docs/risk.md ("The default
-study") from runs of the default study, and prints each table in the Markdown form those pages
-use, so that a page's numbers never outlive the study (issue 24):
+"""Regenerates the numbers of docs/fragility.md ("Example"), docs/risk.md ("The default
+study") and docs/hysteresis.md ("Damping near collapse") from runs of the default study, and
+prints each table in the Markdown form those pages use, so that a page's numbers never outlive
+the study (issue 24):
 
     /usr/bin/python3 scripts/docs_numbers.py [--work DIR] [--ranks 2] [--reuse]
 
 Runs, with build/bin/pound, three campaigns of studies/fragility-default.ini into DIR (default
 results/docs-numbers/): the study as it is (default.h5), with --generator.variability none
-(no-variability.h5: every motion matched to the design spectrum, the study before issue 12),
-and that with elastic storeys (elastic.h5: --buildingN.hysteresis elastic), each on --ranks MPI
-ranks, and studies/campaign-smoke.ini with a sampled scale factor (smoke-continuous.h5, 200
-samples); then pound fragility on each and pound risk on the first (the example hazard curve).
-About a minute on two cores.
+(no-variability.h5: every motion matched to the design spectrum) and with Rayleigh damping on
+the initial stiffness (initial-damping.h5: --buildingN.damping_stiffness initial), each on
+--ranks MPI ranks, and studies/campaign-smoke.ini with a sampled scale factor
+(smoke-continuous.h5, 200 samples); then pound fragility on each and pound risk on the first
+(the example hazard curve), once as the README runs it and once with --design-im at the
+hazard's 2475-year PGA (the collapse margin ratio, FEMA P695). A few minutes on two cores.
 --reuse keeps campaign and analysis files already in DIR (after a change of the study or the
 code, run without it). Paste each printed block over the table its heading names.
 """
@@ -33,8 +35,8 @@ SMOKE = os.path.join(ROOT, "studies", "campaign-smoke.ini")
 CAMPAIGNS = {
     "default": (STUDY, [], []),
     "no-variability": (STUDY, ["--generator.variability", "none"], []),
-    "elastic": (STUDY, ["--generator.variability", "none", "--building1.hysteresis", "elastic",
-                        "--building2.hysteresis", "elastic"], []),
+    "initial-damping": (STUDY, ["--building1.damping_stiffness", "initial",
+                                "--building2.damping_stiffness", "initial"], []),
     # The smoke study with a sampled scale factor instead of its stripes (its `levels` line
     # left out: a study gives one or the other).
     "smoke-continuous": (None, ["--intensity.scale", "lognormal(1,0.6,0.1,5)", "--samples", "200"],
@@ -76,6 +78,32 @@ def make_runs(work, ranks, reuse):
     if not (reuse and os.path.exists(os.path.join(risk, "risk_gaps.csv"))):
         run([POUND, "risk", "--input", os.path.join(work, "default.h5"), "--hazard", HAZARD,
              "--out", risk], out=os.path.join(work, "default-risk.txt"))
+    mce = os.path.join(work, "default-risk-mce")
+    if not (reuse and os.path.exists(os.path.join(mce, "risk_gaps.csv"))):
+        run([POUND, "risk", "--input", os.path.join(work, "default.h5"), "--hazard", HAZARD,
+             "--out", mce, "--design-im", f"{mce_pga():.4f}"],
+            out=os.path.join(work, "default-risk-mce.txt"))
+
+
+def mce_pga(return_period=2475.0):
+    """The hazard curve's PGA [g] at 1 / return_period per year, by log-log interpolation
+    between its points (as pound risk reads a hazard curve: src/risk/hazard_curve.hpp)."""
+    import math
+    pts = []
+    with open(HAZARD) as f:
+        for line in f:
+            line = line.strip()
+            if not line or line.startswith("#") or line[0].isalpha():
+                continue
+            x, y = (float(v) for v in line.split(","))
+            pts.append((x, y))
+    target = math.log(1.0 / return_period)
+    for (x0, y0), (x1, y1) in zip(pts, pts[1:]):
+        l0, l1 = math.log(y0), math.log(y1)
+        if l0 >= target >= l1:
+            t = (target - l0) / (l1 - l0)
+            return math.exp(math.log(x0) + t * (math.log(x1) - math.log(x0)))
+    raise SystemExit("docs_numbers: the hazard curve does not reach the 2475-year rate")
 
 
 def read_csv(path):
@@ -83,11 +111,13 @@ def read_csv(path):
         return list(csv.DictReader(f))
 
 
-def curves(work, name):
-    """(building name, edp, limit, pounding) -> the row of curves.csv."""
+def curves(work, name, model="all"):
+    """(building name, edp, limit, pounding) -> the row of curves.csv (the pooled curves, or
+    those of one sampled contact model)."""
     out = {}
     for r in read_csv(os.path.join(work, name + "-fragility", "curves.csv")):
-        out[(r["building_name"], r["edp"], float(r["limit"]), r["pounding"] == "true")] = r
+        if r.get("model", "all") == model:
+            out[(r["building_name"], r["edp"], float(r["limit"]), r["pounding"] == "true")] = r
     return out
 
 
@@ -114,8 +144,12 @@ def headline_facts(work):
              for b in ("5-storey", "3-storey")}
     yield_g = [theta_g(c[(b, "ductility", 1.0, p)]) for b in ("5-storey", "3-storey")
                for p in (True, False)]
+    coll = {b: (c[(b, "collapse", 1.0, True)], c[(b, "collapse", 1.0, False)])
+            for b in ("5-storey", "3-storey")}
     return "\n".join([
         f"- finite curves: {finite} of {len(c)}",
+        "- collapse, theta [g] / beta with and without pounding: " + "; ".join(
+            f"{b} {theta_beta(p)} and {theta_beta(f)}" for b, (p, f) in coll.items()),
         "- peak-drift limits 1/2/4 % with pounding [g]: 5-storey "
         + ", ".join(f"{x:.2f}" for x in drift["5-storey"]) + "; 3-storey "
         + ", ".join(f"{x:.2f}" for x in drift["3-storey"]),
@@ -124,7 +158,8 @@ def headline_facts(work):
     ])
 
 
-BETA_ROWS = [("5-storey", "drift", 0.01), ("5-storey", "drift", 0.02), ("5-storey", "drift", 0.04),
+BETA_ROWS = [("5-storey", "collapse", 1.0), ("3-storey", "collapse", 1.0),
+             ("5-storey", "drift", 0.01), ("5-storey", "drift", 0.02), ("5-storey", "drift", 0.04),
              ("3-storey", "drift", 0.01), ("3-storey", "drift", 0.02), ("3-storey", "drift", 0.04),
              ("5-storey", "ductility", 1.0), ("5-storey", "ductility", 2.0),
              ("5-storey", "ductility", 4.0), ("3-storey", "ductility", 1.0),
@@ -133,6 +168,8 @@ BETA_ROWS = [("5-storey", "drift", 0.01), ("5-storey", "drift", 0.02), ("5-store
 
 
 def limit_text(edp, limit):
+    if edp == "collapse":
+        return "collapse"
     if edp in ("drift", "residual_drift"):
         return f"{edp.replace('_', ' ')} {100 * limit:g} %"
     return f"{edp} {limit:g}"
@@ -159,27 +196,72 @@ def betas_table(work):
     return "\n".join(out)
 
 
-def elastic_table(work):
-    elastic, yielding = curves(work, "elastic"), curves(work, "no-variability")
+def collapse_table(work):
+    """Collapse fragility per building with and without pounding, pooled and per model."""
+    out = ["| building | analyses | with pounding: theta [g] / beta | without: theta [g] / beta | "
+           "ratio [90 % band] | collapsed with / without | left out (censored) |",
+           "|---|---|---|---|---|---|---|"]
+    shifts = {(r["building_name"], r.get("model", "all")): r
+              for r in read_csv(os.path.join(work, "default-fragility", "shift.csv"))
+              if r["edp"] == "collapse"}
+    for model in ("all", "sears", "hc-linear"):
+        c = curves(work, "default", model)
+        for b in ("5-storey", "3-storey"):
+            p, f = c.get((b, "collapse", 1.0, True)), c.get((b, "collapse", 1.0, False))
+            if p is None:
+                continue
+            sh = shifts[(b, model)]
+            ratio = (f"{float(sh['ratio']):.3f} [{float(sh['ratio_ci90_lo']):.3f}, "
+                     f"{float(sh['ratio_ci90_hi']):.3f}]" if sh["ratio"] else "-")
+            who = b if model == "all" else f"{b} ({model})"
+            out.append(f"| {who} | {p['analyses']} | {theta_beta(p)} | {theta_beta(f)} | {ratio} | "
+                       f"{p['exceedances']} / {f['exceedances']} | {p['left_out']} |")
+    return "\n".join(out)
 
-    def cell(c, b, lim, first):
-        pnd, free = c.get((b, "drift", lim, True)), c.get((b, "drift", lim, False))
-        text = [theta_g(r) if r and r["status"] == "ok" else None for r in (pnd, free)]
-        shown = [f"{x:.3f}" if x is not None else (r["status"] if r else "-")
-                 for x, r in zip(text, (pnd, free))]
-        s = f"{shown[0]} / {shown[1]}"
-        if None not in text:
-            s += f" ({'ratio ' if first else ''}{text[0] / text[1]:.2f})"
-        return s
 
-    out = ["| building | drift | elastic: pounding / free [g] | yielding: pounding / free [g] |",
-           "|---|---|---|---|"]
-    first = True
+def damping_table(work):
+    """How the collapse and 4 % drift curves move from initial- to tangent-stiffness damping."""
+    initial, tangent = curves(work, "initial-damping"), curves(work, "default")
+    out = ["| building | limit | initial: pounding | initial: free | tangent: pounding | "
+           "tangent: free | tangent / initial (free) |",
+           "|---|---|---|---|---|---|---|"]
     for b in ("5-storey", "3-storey"):
-        for lim in (0.01, 0.02, 0.04):
-            out.append(f"| {b} | {100 * lim:g} % | {cell(elastic, b, lim, first)} | "
-                       f"{cell(yielding, b, lim, False)} |")
-            first = False
+        for edp, lim in (("collapse", 1.0), ("drift", 0.04), ("drift", 0.02)):
+            cells = [theta_beta(t.get((b, edp, lim, p))) for t in (initial, tangent)
+                     for p in (True, False)]
+            fi, ft = initial.get((b, edp, lim, False)), tangent.get((b, edp, lim, False))
+            r = (f"{theta_g(ft) / theta_g(fi):.3f}" if fi and ft and fi["status"] == "ok"
+                 and ft["status"] == "ok" else "-")
+            out.append(f"| {b} | {limit_text(edp, lim)} | " + " | ".join(cells) + f" | {r} |")
+    return "\n".join(out)
+
+
+def model_facts(work):
+    """What the two sampled contact models do differently: the median acceleration amplification
+    of the 5-storey's third floor per stripe, per model (from the campaign file)."""
+    import h5py
+    import numpy as np
+    out = []
+    with h5py.File(os.path.join(work, "default.h5"), "r") as h:
+        im = np.round(h["/samples/im"][()] / G, 4)
+        model = np.array([m.decode() if isinstance(m, bytes) else m for m in h["/samples/model"][()]])
+        ok = h["/samples/status"][()] == 0
+        ap, af = h["/response/peak_accel_pounding"][()], h["/response/peak_accel_free"][()]
+        amp = ap[:, 0, 2] / af[:, 0, 2]
+        for m in ("sears", "hc-linear", None):
+            cells = []
+            for level in np.unique(im[ok]):
+                sel = ok & (im == level) & ((model == m) if m else True)
+                cells.append(f"{np.nanmedian(amp[sel]):.2f}")
+            out.append(f"- 5-storey floor 3 acceleration amplification, median per stripe "
+                       f"({m or 'pooled'}): " + ", ".join(cells))
+        for m in ("sears", "hc-linear"):
+            sel = ok & (model == m) & (im >= 0.3) & (im <= 0.6)
+            for b, f in ((0, 2), (1, 2)):
+                r = ap[sel, b, f] / af[sel, b, f]
+                out.append(f"- {m}, 0.3-0.6 g, building {b + 1} floor {f + 1}: acceleration "
+                           f"amplification median {np.nanmedian(r):.2f}, 16/84 % "
+                           f"{np.nanpercentile(r, 16):.2f}/{np.nanpercentile(r, 84):.2f}")
     return "\n".join(out)
 
 
@@ -335,7 +417,11 @@ def risk_gaps_table(work):
 def risk_damage_table(work):
     rows = read_csv(os.path.join(work, "default-risk", "damage_maf.csv"))
     by = {(r["building_name"], r["edp"], float(r["limit"])): r for r in rows}
-    groups = [("drift", "drift 1 % / 2 % / 4 %", (0.01, 0.02, 0.04)),
+    by = {k: r for k, r in by.items()}
+    rows = [r for r in rows if r.get("model", "all") == "all"]
+    by = {(r["building_name"], r["edp"], float(r["limit"])): r for r in rows}
+    groups = [("collapse", "collapse", (1.0,)),
+              ("drift", "drift 1 % / 2 % / 4 %", (0.01, 0.02, 0.04)),
               ("residual_drift", "residual drift 0.2 / 0.5 / 1 %", (0.002, 0.005, 0.01)),
               ("ductility", "ductility 1 / 2 / 4", (1.0, 2.0, 4.0))]
     out = ["| building | limit | nu with pounding | nu without | ratio |", "|---|---|---|---|---|"]
@@ -351,6 +437,22 @@ def risk_damage_table(work):
             out.append(f"| {b} | {label} | {col('maf_pounding_per_year', e2)} | "
                        f"{col('maf_free_per_year', e2)} | {col('ratio', lambda x: f'{x:.2f}')} |")
     return "\n".join(out)
+
+
+def collapse_risk_table(work):
+    """Collapse in 50 years on the example hazard curve and the collapse margin ratio at its
+    2475-year PGA (pound risk --design-im), per building, pooled and per model."""
+    out = ["| building | model | nu with pounding [1/yr] | nu without | ratio | P(50 years) with / "
+           "without | CMR with / without |", "|---|---|---|---|---|---|---|"]
+    text = open(os.path.join(work, "default-risk-mce.txt")).read().splitlines()
+    start = next(i for i, line in enumerate(text) if line.startswith("Collapse:"))
+    for line in text[start + 2:]:
+        f = line.split()
+        if len(f) != 9:
+            break
+        out.append(f"| {f[0]} | {f[1]} | {f[2]} | {f[3]} | {f[4]} | {f[5]} / {f[6]} | "
+                   f"{f[7]} / {f[8]} |")
+    return f"(2475-year PGA {mce_pga():.4f} g)\n\n" + "\n".join(out)
 
 
 def main():
@@ -371,10 +473,10 @@ def main():
         ("docs/fragility.md, Example: the betas before and after issue 12", betas_table(a.work)),
         ("docs/fragility.md, Example: numbers the prose around the betas table quotes",
          betas_facts(a.work)),
-        ("docs/fragility.md, Example: how the curves moved from the elastic study",
-         elastic_table(a.work)),
-        ("docs/fragility.md, Example: numbers the prose below the elastic table quotes",
-         elastic_facts(a.work)),
+        ("docs/fragility.md, Example: collapse with and without pounding", collapse_table(a.work)),
+        ("docs/fragility.md, Example: the two contact models", model_facts(a.work)),
+        ("docs/hysteresis.md, Damping near collapse: initial against tangent stiffness",
+         damping_table(a.work)),
         ("docs/fragility.md, Example: where pounding shows (the default study)",
          pounding_facts(a.work)),
         ("docs/fragility.md, Example: the continuous-IM variant of the smoke study",
@@ -383,6 +485,7 @@ def main():
         ("docs/risk.md, The default study: pounding in 50 years against the gap",
          risk_gaps_table(a.work)),
         ("docs/risk.md, The default study: damage limits", risk_damage_table(a.work)),
+        ("docs/risk.md, The default study: collapse", collapse_risk_table(a.work)),
     ]
     for title, body in sections:
         print(f"== {title}\n\n{body}\n")

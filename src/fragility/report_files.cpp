@@ -22,7 +22,7 @@ std::string curves_csv(const CampaignData& c, const FragilityReport& r) {
       "building,building_name,edp,unit,limit,pounding,status,theta_mps2,beta,"
       "theta_ci90_lo,theta_ci90_hi,beta_ci90_lo,beta_ci90_hi,theta_asym90_lo,theta_asym90_hi,"
       "beta_asym90_lo,beta_asym90_hi,bootstrap_finite,analyses,exceedances,theta_bound_lo_mps2,"
-      "theta_bound_hi_mps2,left_out\n";
+      "theta_bound_hi_mps2,left_out,model\n";
   for (const auto& k : r.curves) {
     long n = 0, z = 0;
     for (const auto& o : k.observed) n += o.n, z += o.z;

@@ -105,6 +105,15 @@ TEST(CmdFragility, JsonCurvesFilesAndUntouchedCampaign) {
   for (const auto& e : fs::directory_iterator(out))
     EXPECT_EQ(e.path().string().find(".tmp."), std::string::npos) << e.path();
   EXPECT_EQ(count(slurp(out + "/curves.csv"), "\n"), 1 + 22);
+  // Every row of every CSV has as many fields as its header names.
+  for (const char* f : {"curves.csv", "shift.csv", "observations.csv"}) {
+    std::istringstream in(slurp(out + "/" + f));
+    std::string line;
+    std::getline(in, line);
+    const long fields = count(line, ",");
+    EXPECT_NE(line.find(",model"), std::string::npos) << f;
+    while (std::getline(in, line)) EXPECT_EQ(count(line, ","), fields) << f << ": " << line;
+  }
 }
 
 // The smoke campaign with yield shears on building 1 (the elastic law: they give it a
