@@ -278,7 +278,7 @@ def betas(c, edp, building=None):
 
 def shift_ratios(work, name, edp):
     return [float(r["ratio"]) for r in read_csv(os.path.join(work, name + "-fragility", "shift.csv"))
-            if r["edp"] == edp and r["ratio"]]
+            if r["edp"] == edp and r["ratio"] and r.get("model", "all") == "all"]
 
 
 def prcc_top(work, name, building, response, n=3):
