@@ -11,6 +11,8 @@ namespace {
 // Labels of /samples/model kept at most: a study's contact models are a handful; a file with
 // more distinct labels is no campaign file (and one group each would be written).
 constexpr std::size_t kMaxModels = 64;
+// The longest fixed-length label read (a block of them takes 65,536 times as much memory).
+constexpr std::size_t kMaxLabelBytes = 256;
 
 // Why a label cannot name an HDF5 group (/amplification/models/<label>) or be listed in a
 // comma-separated attribute; "" when it can.
@@ -78,6 +80,12 @@ void RowBlocks::text_rows(hsize_t row, hsize_t count, std::vector<std::string>& 
     H5Tclose(mem);
     throw InputError(path_ + ": " + name_ +
                      " does not hold text; valid: one label per sample (strings)");
+  }
+  if (!variable && size > kMaxLabelBytes) {
+    H5Tclose(mem);
+    throw InputError(path_ + ": " + name_ + " holds strings of " + std::to_string(size) +
+                     " bytes; valid: labels of at most " + std::to_string(kMaxLabelBytes) +
+                     " bytes");
   }
   if (variable) {
     std::vector<char*> p(std::size_t(count), nullptr);

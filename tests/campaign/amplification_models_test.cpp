@@ -362,6 +362,32 @@ TEST(AmplificationModels, LabelsThatCannotNameAGroupAreRefusedWithOneLine) {
     }
     H5Fclose(f);
   }
+  // Fixed-length labels of 300 bytes (65,536 of them a block): refused.
+  {
+    MadeUp how;
+    how.model = false;
+    write_campaign(path, range(0, 2), how);
+    const hid_t f = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+    const hid_t t = H5Tcopy(H5T_C_S1);
+    H5Tset_size(t, 300);
+    const hsize_t n = 2;
+    const hid_t sp = H5Screate_simple(1, &n, nullptr);
+    const hid_t d = H5Dcreate2(f, "/samples/model", t, sp, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    const std::vector<char> zeros(600, '\0');
+    H5Dwrite(d, t, H5S_ALL, H5S_ALL, H5P_DEFAULT, zeros.data());
+    H5Dclose(d);
+    H5Sclose(sp);
+    H5Tclose(t);
+    try {
+      compute_amplification(f, path);
+      ADD_FAILURE() << "labels of 300 bytes read";
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::string(e.what()), path +
+                                           ": /samples/model holds strings of 300 bytes; valid: "
+                                           "labels of at most 256 bytes");
+    }
+    H5Fclose(f);
+  }
   // Numbers where the labels should be.
   MadeUp how;
   how.model = false;
