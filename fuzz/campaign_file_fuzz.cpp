@@ -27,9 +27,18 @@ namespace {
 
 using namespace pound;
 
-// A result file of samples [lo, hi) of the harness's study, as `pound campaign` writes it.
-std::string result_file(long lo, long hi) {
-  CampaignStudy st = fuzz::smoke_study();
+// The harness's study with two contact models and a collapse limit that the stronger stripes
+// pass: its file has /samples/model, /response/collapsed_* and their /amplification groups.
+CampaignStudy models_study() {
+  const std::string path = fuzz::write_file("smoke.ini", fuzz::kSmokeStudy);
+  Options opt("campaign", "", campaign_option_specs());
+  opt.parse({"--config", path, "--sample.model", "discrete(hc-linear: 1, lve: 1)",
+             "--simulation.collapse_drift_ratio", "0.01"});
+  return campaign_from_options(opt, 0, -1);
+}
+
+// A result file of samples [lo, hi) of a study, as `pound campaign` writes it.
+std::string result_file(CampaignStudy st, long lo, long hi) {
   st.range_lo = lo;
   st.range_hi = hi;
   const std::string journal = fuzz::scratch() + "/seed.journal";
@@ -56,8 +65,9 @@ extern "C" int LLVMFuzzerInitialize(int* argc, char*** argv) {
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
   const std::string dir = fuzz::prepare_dir(*argc, *argv);
   if (dir.empty()) return 0;
-  fuzz::write_prepared(dir, "seeds/whole.h5", result_file(0, 4));
-  fuzz::write_prepared(dir, "seeds/part.h5", result_file(1, 3));
+  fuzz::write_prepared(dir, "seeds/whole.h5", result_file(fuzz::smoke_study(), 0, 4));
+  fuzz::write_prepared(dir, "seeds/part.h5", result_file(fuzz::smoke_study(), 1, 3));
+  fuzz::write_prepared(dir, "seeds/models.h5", result_file(models_study(), 0, 4));
   std::string dict;
   for (const char* w : {"\x89HDF\r\n\x1a\n",
                         "/samples",
@@ -82,7 +92,13 @@ extern "C" int LLVMFuzzerInitialize(int* argc, char*** argv) {
                         "bins",
                         "count",
                         "median",
-                        "approach_free"})
+                        "approach_free",
+                        "collapse",
+                        "collapsed_pounding",
+                        "collapsed_free",
+                        "models",
+                        "model",
+                        "sears"})
     dict += fuzz::dict_entry(w);
   fuzz::write_prepared(dir, "dict", dict);
   std::exit(0);
@@ -110,6 +126,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
               fuzz::fail("an amplification table of the wrong size was read");
           if (t.force_median.size() != t.groups * t.pairs * t.levels)
             fuzz::fail("a contact table of the wrong size was read");
+          if (t.has_collapse && t.collapsed_free.size() != t.groups * t.buildings)
+            fuzz::fail("a collapse table of the wrong size was read");
+          for (const auto& m : t.models)
+            if (m.groups != t.groups || m.buildings != t.buildings || m.floors != t.floors ||
+                m.measures.size() != t.measures.size() ||
+                m.force_median.size() != t.force_median.size() ||
+                m.collapsed_free.size() != t.collapsed_free.size())
+              fuzz::fail("a model's table of another shape than the pooled one was read");
         } else {
           compute_amplification(f, path);
         }

@@ -34,6 +34,10 @@ Figures (one PNG each, units on every axis):
                                   rules' gaps
   hazard.png                      (--risk) the hazard curve used: its points and the
                                   log-log interpolation, extended beyond the ends (dashed)
+  collapse_fragility[_<model>].png  (--fragility) collapse fragility with and without pounding
+                                  per building, pooled and per contact model (plot_collapse.py)
+  ida_<building>.png              peak storey drift against the intensity of every sample,
+                                  collapsed samples marked (plot_collapse.py)
 Inputs: the campaign file (schema src/campaign/result_file.hpp), fragility.h5 of
 'pound fragility' (src/fragility/report_files.hpp), risk.h5 of 'pound risk'
 (src/risk/risk_files.hpp); all are opened read-only.
@@ -51,7 +55,9 @@ import matplotlib.pyplot as plt  # noqa: E402
 import matplotlib.ticker as ticker  # noqa: E402
 import numpy as np  # noqa: E402
 
-G = 9.80665  # m/s^2 per g
+from plot_collapse import plot_collapse_fragility, plot_ida  # noqa: E402
+from plot_common import G, im_name, lognormal_cdf, save, text  # noqa: E402
+
 EDP_LABEL = {
     "drift": ("peak inter-storey drift ratio", lambda x: f"{100 * x:g} %"),
     "disp": ("peak floor displacement", lambda x: f"{1000 * x:g} mm"),
@@ -68,21 +74,6 @@ def edp_label(edp):
 SKIP_SAMPLES = {"id", "status", "message", "im", "scale"}
 PARAM_UNITS = {"gap": "m", "e": "-", "k_factor": "-", "k": "N/m", "damping": "-", "chi": "-",
                "D": "-"}
-
-
-def text(attr):
-    return attr.decode() if isinstance(attr, bytes) else str(attr)
-
-
-def im_name(measure):
-    return "Sa(T1)" if measure == "sa" else "PGA"
-
-
-def save(fig, out, name):
-    path = os.path.join(out, name)
-    fig.savefig(path, dpi=120, bbox_inches="tight")
-    plt.close(fig)
-    print(path)
 
 
 def bound_text(bound):
@@ -107,6 +98,8 @@ def plot_fragility(frag_path, out):
         curves = []
         for key in sorted(k for k in g if k.startswith("curve")):
             c = g[key]
+            if text(c.attrs.get("model", "all")) != "all":
+                continue  # a contact model's own curve: these figures show the pooled ones
             curves.append({
                 "building": int(c.attrs["building"]), "edp": text(c.attrs["edp"]),
                 "limit": float(c.attrs["limit"]), "pounding": text(c.attrs["pounding"]) == "true",
@@ -260,11 +253,6 @@ def plot_amplification_im(campaign_path, out):
                      f"{'stripe' if design == 'stripes' else 'intensity bin'}", fontsize=11)
         fig.tight_layout()
         save(fig, out, f"amplification_im_{b}.png")
-
-
-def lognormal_cdf(x, theta, beta):
-    from math import erf, log, sqrt
-    return np.array([0.5 * (1 + erf(log(v / theta) / (beta * sqrt(2)))) for v in x])
 
 
 def plot_risk(risk_path, out):
@@ -533,6 +521,11 @@ def main():
         plot_fragility(os.path.join(a.fragility, "fragility.h5"), a.out)
     plot_amplification(a.campaign, a.out)
     plot_amplification_im(a.campaign, a.out)
+    if a.fragility:
+        with h5py.File(a.campaign, "r") as f:
+            measure = text(f.attrs.get("intensity_measure", "pga"))
+        plot_collapse_fragility(a.fragility, a.out, measure)
+    plot_ida(a.campaign, a.out)
     if a.risk:
         plot_risk(os.path.join(a.risk, "risk.h5"), a.out)
     if a.motions:

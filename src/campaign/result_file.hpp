@@ -19,6 +19,9 @@
 //                                      dissipated by the storey below the floor, J
 //   (the per-floor arrays are the table of floor_arrays.hpp; the drift, ductility and energy
 //   of floor j are those of storey j, between floor j-1 or the ground and floor j)
+//   /response/collapsed_pounding, collapsed_free [N, buildings]   1 collapsed, 0 standing
+//   /response/collapse_time_pounding, collapse_time_free [N, buildings]   s (NaN: standing)
+//                                      (the per-building arrays of building_arrays.hpp)
 //   /response/peak_force [N, pairs, levels]                                  N
 //   /response/impacts [N, pairs, levels]                                     count
 //                                      contact phases started (> 0: the faces touched; every

@@ -76,4 +76,98 @@ TEST(CmdSummary, StoredAndRecomputedStatisticsAgree) {
   EXPECT_NE(slurp(log).find("none.h5"), std::string::npos);
 }
 
+// A campaign of two contact models whose buildings collapse at the stronger stripes: the
+// collapse shares and each model's table in the JSON against counts and medians done here from
+// the file's own datasets; without the collapse arrays (a file older than issue 23) the same
+// output without them; a group written before them is completed in memory.
+TEST(CmdSummary, CollapseSharesAndPerModelTables) {
+  const std::string run = dir() + "/models.h5", log = dir() + "/models.log";
+  ASSERT_EQ(sh(std::string(POUND_BINARY) + " campaign --config " + POUND_SOURCE_DIR +
+               "/studies/campaign-smoke.ini --samples 40 --quiet --out " + run +
+               " --sample.model 'discrete(hc-linear: 1, lve: 1)'"
+               " --simulation.collapse_drift_ratio 0.01 2>" +
+               log),
+            0)
+      << slurp(log);
+  const std::string a = dir() + "/models-a.json", b = dir() + "/models-b.json";
+  const std::string c = dir() + "/models-c.json";
+  const std::string older = dir() + "/models-older.h5", partial = dir() + "/models-partial.h5";
+  ASSERT_EQ(sh(std::string(POUND_BINARY) + " summary --input " + run + " --json > " + a), 0);
+  // A file without the collapse arrays nor /amplification, and one whose /amplification lacks
+  // the collapse shares and the models (as an older pound wrote it).
+  fs::copy_file(run, older, fs::copy_options::overwrite_existing);
+  fs::copy_file(run, partial, fs::copy_options::overwrite_existing);
+  std::ofstream(dir() + "/older.py")
+      << "import h5py, sys\n"
+         "f = h5py.File(sys.argv[1], 'a')\n"
+         "for k in ('amplification', 'response/collapsed_pounding', 'response/collapsed_free',\n"
+         "          'response/collapse_time_pounding', 'response/collapse_time_free'):\n"
+         "    del f[k]\n"
+         "g = h5py.File(sys.argv[2], 'a')\n"
+         "del g['amplification/collapse'], g['amplification/models']\n";
+  ASSERT_EQ(sh("/usr/bin/python3 " + dir() + "/older.py " + older + " " + partial + " 2>" + log), 0)
+      << slurp(log);
+  ASSERT_EQ(sh(std::string(POUND_BINARY) + " summary --input " + older + " --json > " + b), 0);
+  ASSERT_EQ(sh(std::string(POUND_BINARY) + " summary --input " + partial + " --json > " + c), 0);
+  const std::string check =
+      "import json, sys, h5py, numpy as np\n"
+      "a, b, c = (json.load(open(p)) for p in sys.argv[1:4])\n"
+      "f = h5py.File(sys.argv[4], 'r')\n"
+      "ok = f['samples/status'][:] == 0\n"
+      "stripe = f['samples/id'][:] % 4\n"
+      "label = np.array([x.decode() for x in f['samples/model'][:]])\n"
+      "cp, cf = f['response/collapsed_pounding'][:], f['response/collapsed_free'][:]\n"
+      "ap, af = f['response/peak_accel_pounding'][:], f['response/peak_accel_free'][:]\n"
+      "assert not a['computed_now'] and b['computed_now'] and c['computed_now']\n"
+      "assert [m['model'] for m in a['models']] == ['hc-linear', 'lve'], a['models']\n"
+      "def check(groups, keep):\n"
+      "    shares = []\n"
+      "    for g, grp in enumerate(groups):\n"
+      "        use = ok & keep & (stripe == g)\n"
+      "        assert grp['samples'] == int((keep & (stripe == g)).sum())\n"
+      "        for bd in range(2):\n"
+      "            e = grp['collapse'][bd]\n"
+      "            n = int(use.sum())\n"
+      "            assert e['building'] == bd and e['count'] == n, (e, n)\n"
+      "            assert e['collapsed_pounding'] == cp[use, bd].sum() / n, (e, cp[use, bd])\n"
+      "            assert e['collapsed_free'] == cf[use, bd].sum() / n, (e, cf[use, bd])\n"
+      "            shares += [e['collapsed_pounding'], e['collapsed_free']]\n"
+      "            r = ap[use, bd, 0] / af[use, bd, 0]\n"
+      "            med = grp['buildings'][bd]['floors'][0]['accel']['median']\n"
+      "            assert abs(med - np.median(r)) <= 1e-12 * med, (med, np.median(r))\n"
+      "    return shares\n"
+      "shares = check(a['groups'], np.ones(len(ok), bool))\n"
+      "assert min(shares) < 0.5 and max(shares) > 0.5, shares\n"
+      "for m in a['models']:\n"
+      "    check(m['groups'], label == m['model'])\n"
+      "    assert m['groups'] != a['groups']\n"
+      "# Without the collapse arrays: the same output without the collapse shares.\n"
+      "strip = lambda gs: [{k: v for k, v in g.items() if k != 'collapse'} for g in gs]\n"
+      "assert all('collapse' not in g for g in b['groups'])\n"
+      "assert b['groups'] == strip(a['groups'])\n"
+      "assert [m['groups'] for m in b['models']] == [strip(m['groups']) for m in a['models']]\n"
+      "# A group without the shares and models: computed now, the same numbers.\n"
+      "assert c['groups'] == a['groups'] and c['models'] == a['models']\n";
+  std::ofstream(dir() + "/models.py") << check;
+  EXPECT_EQ(sh("/usr/bin/python3 " + dir() + "/models.py " + a + " " + b + " " + c + " " + run +
+               " 2>" + log),
+            0)
+      << slurp(log);
+  // The text: the collapse table, each model's tables after the pooled ones; none without the
+  // collapse arrays.
+  ASSERT_EQ(sh(std::string(POUND_BINARY) + " summary --input " + run + " > " + dir() + "/m.txt"),
+            0);
+  ASSERT_EQ(sh(std::string(POUND_BINARY) + " summary --input " + older + " > " + dir() + "/o.txt"),
+            0);
+  const std::string t = slurp(dir() + "/m.txt"), o = slurp(dir() + "/o.txt");
+  const auto collapse = t.find("\nCollapse: share of the successful samples");
+  const auto lve = t.find("\n== Contact model lve (/samples/model): ");
+  ASSERT_NE(collapse, std::string::npos) << t;
+  ASSERT_NE(lve, std::string::npos) << t;
+  EXPECT_LT(t.find("\n== Contact model hc-linear"), lve);
+  EXPECT_LT(collapse, t.find("\n== Contact model hc-linear"));
+  EXPECT_EQ(o.find("Collapse:"), std::string::npos) << o;
+  EXPECT_NE(o.find("\n== Contact model lve"), std::string::npos) << o;
+}
+
 }  // namespace

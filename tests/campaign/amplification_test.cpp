@@ -217,6 +217,10 @@ TEST(Amplification, FromAResultFileWithKnownRatios) {
   EXPECT_DOUBLE_EQ(t.force_median[t.site(0, 0, 0)], 14000.0);
   EXPECT_DOUBLE_EQ(t.force_median[t.site(1, 0, 0)], 0.0);
   EXPECT_TRUE(std::isnan(t.force_median_pounded[t.site(1, 0, 0)]));
+  // A file without /response/collapsed_* and /samples/model (older than issue 23): neither the
+  // collapse shares nor per-model tables.
+  EXPECT_FALSE(t.has_collapse);
+  EXPECT_TRUE(t.models.empty());
 }
 
 // A damaged /amplification group (found by reading it as fuzz_campaign_file would: the
@@ -243,6 +247,13 @@ TEST(Amplification, ADamagedGroupIsRefusedBeforeAnythingIsIndexed) {
   good.contact_count = {3, 2};
   good.pounded_fraction = {0.5, 1.0};
   good.force_median = good.force_median_pounded = {10.0, 20.0};
+  good.has_collapse = true;
+  good.collapse_count = {3, 2};
+  good.collapsed_pounding = {0.0, 0.5};
+  good.collapsed_free = {1.0 / 3.0, 1.0};
+  AmplificationTable model = good;
+  model.model = "sears";
+  good.models = {model};
   // Each damage: a name, what it does to the file, and what the message must say.
   struct Damage {
     const char* what;
@@ -320,6 +331,29 @@ TEST(Amplification, ADamagedGroupIsRefusedBeforeAnythingIsIndexed) {
            }
        },
        "/amplification/disp/count has no building or no floor"},
+      {"a collapse share of another shape",
+       [](hid_t f) {
+         H5Ldelete(f, "/amplification/collapse/collapsed_free", H5P_DEFAULT);
+         put(f, "/amplification/collapse/collapsed_free", std::vector<double>(6, 0.0), 2, 3, 1);
+       },
+       "/amplification/collapse/collapsed_free is not of the shape [groups, 1] (the buildings of "
+       "/disp/count)"},
+      {"a collapse count that is no count",
+       [](hid_t f) {
+         H5Ldelete(f, "/amplification/collapse/count", H5P_DEFAULT);
+         h5::write(f, "/amplification/collapse/count", std::vector<double>{3.0, NAN}, 2, 1);
+       },
+       "/amplification/collapse/count holds nan; valid: whole numbers from 0 to 1e15"},
+      {"a model without the collapse shares",
+       [](hid_t f) { H5Ldelete(f, "/amplification/models/sears/collapse", H5P_DEFAULT); },
+       "/amplification/models/sears does not have the groups and shapes of /amplification"},
+      {"a model of fewer groups",
+       [](hid_t f) {
+         H5Ldelete(f, "/amplification/models/sears/samples", H5P_DEFAULT);
+         h5::write(f, "/amplification/models/sears/samples", std::vector<double>{3.0}, 1);
+       },
+       "/amplification/models/sears/samples is not one value per group of "
+       "/amplification/models/sears/im"},
   };
   for (const Damage& d : damages) {
     {
@@ -355,6 +389,10 @@ TEST(Amplification, ADamagedGroupIsRefusedBeforeAnythingIsIndexed) {
   EXPECT_EQ(t.force_median_pounded, good.force_median_pounded);
   EXPECT_EQ(t.floors, 2u);
   EXPECT_TRUE(t.stripes);
+  EXPECT_EQ(t.collapsed_free, good.collapsed_free);
+  ASSERT_EQ(t.models.size(), 1u);
+  EXPECT_EQ(t.models[0].model, "sears");
+  EXPECT_EQ(t.models[0].collapse_count, good.collapse_count);
 }
 
 }  // namespace

@@ -289,9 +289,13 @@ TEST(CampaignRun, SigtermStopsCleanlyAndTheRunResumes) {
 }
 
 TEST(CampaignRun, PartsOfASplitCampaignMergeIntoTheSingleRun) {
-  // Three sample ranges (as three jobs of a Slurm array would run them), merged.
+  // Three sample ranges (as three jobs of a Slurm array would run them), merged. Two contact
+  // models and a collapse limit that the stronger stripes pass: the collapse shares and the
+  // per-model tables of /amplification are recomputed too.
   const std::string ref = dir() + "/whole.h5";
-  const std::string n = "--samples 30";
+  const std::string n =
+      "--samples 30 --sample.model 'discrete(hc-linear: 1, lve: 1)' "
+      "--simulation.collapse_drift_ratio 0.01";
   ASSERT_EQ(sh(pound(n + " --out " + ref)), 0);
   const char* ranges[] = {"0:7", "7:20", "20:30"};
   std::string parts;
@@ -306,15 +310,37 @@ TEST(CampaignRun, PartsOfASplitCampaignMergeIntoTheSingleRun) {
   expect_new_response_datasets(merged, 30);
   // /amplification is computed again for the joined samples: the single run's, bit for bit
   // (the parts' own describe only their samples).
-  for (const char* p :
-       {"/amplification/im", "/amplification/samples", "/amplification/failed",
-        "/amplification/disp/count", "/amplification/disp/median", "/amplification/drift/p16",
-        "/amplification/accel/p84", "/amplification/disp/fraction_above_1",
-        "/amplification/contact/count", "/amplification/contact/pounded_fraction",
-        "/amplification/contact/force_median"})
+  for (const char* p : {"/amplification/im",
+                        "/amplification/samples",
+                        "/amplification/failed",
+                        "/amplification/disp/count",
+                        "/amplification/disp/median",
+                        "/amplification/drift/p16",
+                        "/amplification/accel/p84",
+                        "/amplification/disp/fraction_above_1",
+                        "/amplification/contact/count",
+                        "/amplification/contact/pounded_fraction",
+                        "/amplification/contact/force_median",
+                        "/amplification/collapse/count",
+                        "/amplification/collapse/collapsed_pounding",
+                        "/amplification/collapse/collapsed_free",
+                        "/amplification/models/hc-linear/samples",
+                        "/amplification/models/lve/im",
+                        "/amplification/models/lve/accel/median",
+                        "/amplification/models/hc-linear/drift/p84",
+                        "/amplification/models/lve/contact/pounded_fraction",
+                        "/amplification/models/hc-linear/collapse/collapsed_pounding",
+                        "/amplification/models/lve/collapse/collapsed_free"})
     EXPECT_EQ(read_raw(ref, p), read_raw(merged, p)) << p;
-  EXPECT_NE(read_raw(dir() + "/part0.h5", "/amplification/disp/count"),
-            read_raw(merged, "/amplification/disp/count"));
+  for (const char* p : {"/amplification/disp/count", "/amplification/collapse/collapsed_free",
+                        "/amplification/models/lve/samples"})
+    EXPECT_NE(read_raw(dir() + "/part0.h5", p), read_raw(merged, p)) << p;
+  // Some building collapsed and some stood: the shares compared above are not all 0 or all 1.
+  const std::vector<char> free = read_raw(merged, "/amplification/collapse/collapsed_free");
+  std::vector<double> shares(free.size() / sizeof(double));
+  std::copy(free.begin(), free.end(), reinterpret_cast<char*>(shares.data()));
+  EXPECT_GT(*std::max_element(shares.begin(), shares.end()), 0.0);
+  EXPECT_LT(*std::min_element(shares.begin(), shares.end()), 1.0);
   EXPECT_EQ(units_of(merged, "/response/approach_free"), "m");
   // A gap is refused and leaves no file.
   const std::string bad = dir() + "/bad-merge.h5";
