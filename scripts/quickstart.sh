@@ -4,7 +4,7 @@
 # analysis, the amplification summary, the figures, and last the pounding risk on the example
 # hazard curve of studies/hazard-los-angeles-pga.csv: the gap a 2 % probability of pounding in
 # 50 years needs, and the code rules' gaps with their probabilities.
-#   bash scripts/quickstart.sh               # the full default study (960 samples)
+#   bash scripts/quickstart.sh               # the full default study (1200 samples)
 #   bash scripts/quickstart.sh --samples 24  # a smoke run
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -151,12 +151,22 @@ void print_text(const CampaignData& c, const FragilityReport& r,
   }
   if (!r.models.empty())
     std::printf("  (the curves of each contact model alone: curves.csv and --json)\n");
-  for (const auto& k : r.curves)
-    if (k.left_out && k.model.empty())
-      std::printf("  (%s %s %s, %s: %zu analyses left out, their value is not finite%s)\n",
-                  c.building_names[k.building].c_str(), to_string(k.edp),
-                  limit_text(k.edp, k.limit).c_str(), k.pounding ? "pounding" : "no pounding",
-                  k.left_out, k.edp == Edp::ductility ? ": the building has no yield_shears" : "");
+  for (const auto& k : r.curves) {
+    if (!k.left_out || !k.model.empty()) continue;
+    const std::size_t nonfinite = k.left_out - k.censored;
+    std::string why;
+    if (k.censored)
+      why += std::to_string(k.censored) +
+             " censored: the pounding run stopped at another building's collapse before this "
+             "one exceeded the limit";
+    if (nonfinite)
+      why += (why.empty() ? "" : "; ") + std::to_string(nonfinite) + " not finite" +
+             (k.edp == Edp::ductility ? ": the building has no yield_shears" : "");
+    std::printf("  (%s %s %s, %s: %zu analyses left out, %s)\n",
+                c.building_names[k.building].c_str(), to_string(k.edp),
+                limit_text(k.edp, k.limit).c_str(), k.pounding ? "pounding" : "no pounding",
+                k.left_out, why.c_str());
+  }
   std::printf(
       "\nSensitivity of the amplification (pounding / free) to the sampled parameters, "
       "ranked by |PRCC|\n");
@@ -240,7 +250,8 @@ void print_json(const CampaignData& c, const FragilityReport& r, const Fragility
     w.field("bootstrap_finite", long(k.theta_ci.finite))
         .field("analyses", n)
         .field("exceedances", z)
-        .field("left_out", long(k.left_out));
+        .field("left_out", long(k.left_out))
+        .field("censored", long(k.censored));
     w.end_object();
   }
   w.end_array();

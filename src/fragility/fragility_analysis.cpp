@@ -263,6 +263,7 @@ void fit_set(const CampaignData& c, const FragilitySettings& s, const AnalysisSe
           for (std::size_t k = 0; k < set.used.size(); ++k) {
             z[k] = outcome(c, edp, limit, pounding, set.used[k], b);
             fc.left_out += z[k] == kLeftOut;
+            fc.censored += z[k] == kLeftOut && pounding && c.censored(set.used[k], b);
           }
           fc.fit = fit_lognormal(observations(set.d, z));
           fc.observed = observed_fractions(set.d, z);

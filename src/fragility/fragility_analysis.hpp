@@ -54,9 +54,12 @@ struct FragilityCurve {
   Edp edp = Edp::drift;
   double limit = 0.0;  ///< damage-state limit [unit_of(edp)]
   bool pounding = true;
-  /// Analyses left out of this curve because their EDP is not finite (the ductility of a
-  /// building without yield_shears is NaN) [-]; the fit uses the others.
+  /// Analyses left out of this curve [-]: their EDP is not finite (the ductility of a building
+  /// without yield_shears is NaN) or they are censored (below); the fit uses the others.
   std::size_t left_out = 0;
+  /// Of those, the pounding run's analyses stopped at another building's collapse before this
+  /// building exceeded the limit (right-censored: the outcome is unknown) [-].
+  std::size_t censored = 0;
   LognormalFit fit;
   Interval theta_ci, beta_ci;                   ///< bootstrap percentile bands
   double theta_asym_lo = 0, theta_asym_hi = 0;  ///< asymptotic: exp(ln theta -+ z sd)

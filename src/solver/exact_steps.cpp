@@ -1,6 +1,7 @@
 #include "solver/exact_steps.hpp"
 
 #include <cmath>
+#include <cstring>
 
 namespace pound {
 
@@ -29,11 +30,28 @@ void ExactSteps::enable(const AssembledRow& row, double h_max, double rec_dt,
   if (shared) cache_ = shared;
   if (cache_->row != &row || cache_->h != h_) {
     cache_->entries.clear();
+    cache_->by_key.clear();
     cache_->row = &row;
     cache_->h = h_;
   }
   invalidate();
 }
+
+namespace {
+
+// FNV-1a over the bits of the matrix' entries (-0 as +0: equal matrices hash alike).
+std::uint64_t bits_hash(const Eigen::MatrixXd& k) {
+  std::uint64_t h = 1469598103934665603ull;
+  for (Eigen::Index i = 0; i < k.size(); ++i) {
+    const double x = k.data()[i] + 0.0;
+    std::uint64_t b;
+    std::memcpy(&b, &x, sizeof b);
+    h = (h ^ b) * 1099511628211ull;
+  }
+  return h;
+}
+
+}  // namespace
 
 void ExactSteps::undo_iteration() {
   if (visited_ >= 0) --visits_[visited_];
@@ -44,11 +62,14 @@ const LinearStep* ExactSteps::propagator(const RowDynamics& dyn, const Assembled
   auto& entries = cache_->entries;
   if (config_ < 0) {
     dyn.stiffness(k_scratch_);
-    for (std::size_t i = 0; i < entries.size() && config_ < 0; ++i)
-      if (entries[i].K == k_scratch_) config_ = static_cast<int>(i);
+    const std::uint64_t key = bits_hash(k_scratch_);
+    const auto [first, last] = cache_->by_key.equal_range(key);
+    for (auto it = first; it != last && config_ < 0; ++it)
+      if (entries[it->second].K == k_scratch_) config_ = it->second;
     if (config_ < 0) {
-      entries.push_back({k_scratch_, false, {}});
+      entries.push_back({k_scratch_, key, false, {}});
       config_ = static_cast<int>(entries.size()) - 1;
+      cache_->by_key.emplace(key, config_);
     }
     if (visits_.size() < entries.size()) visits_.resize(entries.size(), 0);
   }

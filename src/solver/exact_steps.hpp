@@ -7,6 +7,8 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <unordered_map>
 #include <vector>
 
 #include "solver/linear_step.hpp"
@@ -23,11 +25,14 @@ namespace pound {
 struct ExactStepCache {
   static constexpr int kExactWarmup = 32;
   struct Entry {
-    Eigen::MatrixXd K;  ///< tangent stiffness [N/m]
+    Eigen::MatrixXd K;      ///< tangent stiffness [N/m]
+    std::uint64_t key = 0;  ///< hash of K's bits: most look-ups compare this alone (a
+                            ///< deteriorating law meets a new stiffness at every excursion)
     bool ready = false;
     LinearStep step;
   };
   std::vector<Entry> entries;
+  std::unordered_multimap<std::uint64_t, int> by_key;  ///< Entry::key -> its index in entries
   const AssembledRow* row = nullptr;  ///< the row and grid step [s] of the entries (a run of
   double h = 0.0;                     ///< another row or step clears them)
 };

@@ -130,5 +130,69 @@ TEST(CollapseFragility, EachSampledModelsCurvesAreTheFitOfItsOwnAnalyses) {
   EXPECT_EQ(curve(rp, Edp::collapse, true).fit.theta, curve(r, Edp::collapse, true).fit.theta);
 }
 
+// Two buildings in one pounding run, which stops at the first collapse. In every third sample
+// building 0 collapses; building 1 then stands at the stop, and its later response is unknown:
+// its outcome for a limit it had not exceeded is censored (left out), one it had exceeded
+// counts. Building 1's drift is 2 % in the samples 0, 6, 12, ... (exceeded a 1 % limit before
+// the stop) and 0.5 % elsewhere. Without pounding nothing is censored.
+TEST(CollapseFragility, AStandingBuildingIsCensoredWhenThePoundingRunStopsAtItsNeighbour) {
+  constexpr std::size_t n = 1200;
+  CampaignData c;
+  c.path = "made-up.h5";
+  c.samples = n;
+  c.buildings = 2;
+  c.building_names = {"falls", "stands"};
+  c.levels = {1.0, 2.0, 4.0, 8.0};
+  c.status.assign(n, 0);
+  c.scale.assign(n, 1.0);
+  FloorArray drift{n, 2, 1, std::vector<double>(2 * n, 0.005)};
+  std::vector<double> cp(2 * n, 0.0), cf(2 * n, 0.0);
+  std::size_t falls = 0, exceeded_before = 0;
+  for (std::size_t s = 0; s < n; ++s) {
+    c.im.push_back(c.levels[s % 4]);
+    if (s % 3 == 0) {
+      cp[2 * s] = 1.0;
+      ++falls;
+    }
+    if (s % 6 == 0) {
+      drift.v[2 * s + 1] = 0.02;
+      ++exceeded_before;
+    }
+  }
+  c.floor_arrays["peak_drift_pounding"] = drift;
+  c.floor_arrays["peak_drift_free"] = drift;
+  c.building_arrays["collapsed_pounding"] = cp;
+  c.building_arrays["collapsed_free"] = cf;
+  c.peak_force = FloorArray{n, 0, 0, {}};
+  FragilitySettings s = settings();
+  s.drift_limits = {0.01};
+  const FragilityReport r = analyse_fragility(c, s);
+  auto of = [&](std::size_t b, Edp e, bool pounding) -> const FragilityCurve& {
+    for (const auto& k : r.curves)
+      if (k.building == b && k.edp == e && k.pounding == pounding && k.model.empty()) return k;
+    throw std::runtime_error("no such curve");
+  };
+  auto counted = [](const FragilityCurve& k) {
+    long m = 0, z = 0;
+    for (const auto& o : k.observed) m += o.n, z += o.z;
+    return std::pair<long, long>{m, z};
+  };
+  // Building 1, drift 1 %: the censored samples that had not exceeded (falls - exceeded_before)
+  // are left out; those that had exceeded count, and they are the only exceedances.
+  const FragilityCurve& d = of(1, Edp::drift, true);
+  EXPECT_EQ(d.censored, falls - exceeded_before);
+  EXPECT_EQ(d.left_out, falls - exceeded_before);
+  EXPECT_EQ(counted(d), (std::pair<long, long>{long(n - d.left_out), long(exceeded_before)}));
+  // Its collapse: every sample where building 0 fell is censored.
+  const FragilityCurve& k = of(1, Edp::collapse, true);
+  EXPECT_EQ(k.censored, falls);
+  EXPECT_EQ(counted(k), (std::pair<long, long>{long(n - falls), 0L}));
+  // The building that fell and the free runs: nothing censored.
+  EXPECT_EQ(of(0, Edp::collapse, true).censored, 0u);
+  EXPECT_EQ(counted(of(0, Edp::collapse, true)), (std::pair<long, long>{long(n), long(falls)}));
+  EXPECT_EQ(of(1, Edp::drift, false).left_out, 0u);
+  EXPECT_EQ(counted(of(1, Edp::drift, false)).second, long(exceeded_before));
+}
+
 }  // namespace
 }  // namespace pound

@@ -232,8 +232,9 @@ TEST(Collapse, ARunThatCollapsesStopsThereAndSaysWhichBuildingWhenAndWhere) {
     EXPECT_EQ(x.storey, y.storey) << b;
     EXPECT_NEAR(x.time, y.time, 0.02) << b;
   }
-  if (!(lumped.collapse_free[0].collapsed && lumped.collapse_free[1].collapsed))
+  if (!(lumped.collapse_free[0].collapsed && lumped.collapse_free[1].collapsed)) {
     EXPECT_DOUBLE_EQ(lumped.free.t_end, s.motion.duration());
+  }
 }
 
 TEST(Collapse, AStoreyThatFailsUnderItsPDeltaLoadCollapsesItsBuilding) {
