@@ -84,27 +84,28 @@ std::string bound_text(const LognormalFit& fit) {
   return fmt("%.3g", lo) + "-" + fmt("%.3g", hi);
 }
 
-// The shifts of one model ("" pooled) with the medians of their two curves.
+// The shifts of one model ("" pooled) with the medians of their two curves (the free one
+// fitted on the pounding curve's analyses where censoring left some out: marked *).
 void print_shifts(const CampaignData& c, const FragilityReport& r, const std::string& model) {
   const int we = edp_width(r);
   std::printf("  %-12s %-*s %-10s %8s  %-17s %12s %12s\n", "building", we, "edp", "limit", "ratio",
               "band", "pounding [g]", "free [g]");
-  for (std::size_t k = 0, j = 0; k < r.shifts.size(); ++k) {
-    const auto& s = r.shifts[k];
+  bool marked = false;
+  for (const auto& s : r.shifts) {
     if (s.model != model) continue;
-    while (j < r.curves.size() &&
-           !(r.curves[j].model == s.model && r.curves[j].building == s.building &&
-             r.curves[j].edp == s.edp && r.curves[j].limit == s.limit && r.curves[j].pounding))
-      ++j;
-    const auto& p = r.curves[j].fit;
-    const auto& f = r.curves[j + 1].fit;
-    std::printf("  %-12s %-*s %-10s %8s  [%6s, %6s] %12s %12s\n",
+    marked = marked || s.same_analyses;
+    std::printf("  %-12s %-*s %-10s %8s  [%6s, %6s] %12s %12s%s\n",
                 c.building_names[s.building].c_str(), we, to_string(s.edp),
                 limit_text(s.edp, s.limit).c_str(), fmt("%.3f", s.ratio).c_str(),
                 fmt("%.3f", s.ci.lo).c_str(), fmt("%.3f", s.ci.hi).c_str(),
-                p.finite() ? fmt("%.4f", p.theta / kGravity).c_str() : to_string(p.status),
-                f.finite() ? fmt("%.4f", f.theta / kGravity).c_str() : to_string(f.status));
+                fmt("%.4f", s.theta_pounding / kGravity).c_str(),
+                fmt("%.4f", s.theta_free / kGravity).c_str(), s.same_analyses ? " *" : "");
   }
+  if (marked)
+    std::printf(
+        "  (* the free median of the analyses the pounding curve keeps: another building's "
+        "collapse stopped some pounding runs while this one stood, and the ratio compares the "
+        "same samples; the free curve of all the analyses is in the curves)\n");
 }
 
 void print_text(const CampaignData& c, const FragilityReport& r,
@@ -157,8 +158,8 @@ void print_text(const CampaignData& c, const FragilityReport& r,
     std::string why;
     if (k.censored)
       why += std::to_string(k.censored) +
-             " censored: the pounding run stopped at another building's collapse before this "
-             "one exceeded the limit";
+             " censored: the pounding run stopped at another building's collapse while this "
+             "one stood";
     if (nonfinite)
       why += (why.empty() ? "" : "; ") + std::to_string(nonfinite) + " not finite" +
              (k.edp == Edp::ductility ? ": the building has no yield_shears" : "");
@@ -219,6 +220,8 @@ void print_json(const CampaignData& c, const FragilityReport& r, const Fragility
         .field("edp", to_string(s.edp));
     w.field("limit", s.limit).field("theta_ratio", s.ratio);
     interval(w, "theta_ratio_ci90", s.ci.lo, s.ci.hi, std::isfinite(s.ratio));
+    w.field("theta_pounding", s.theta_pounding).field("theta_free", s.theta_free);
+    w.field("free_same_analyses", s.same_analyses);
     w.end_object();
   }
   w.end_array();

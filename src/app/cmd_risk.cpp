@@ -60,6 +60,11 @@ std::string limit_text(Edp e, double x) {
   return fmt("%.4g ", x) + unit_of(e);
 }
 
+constexpr const char* kLikeForLike =
+    "(* another building's collapse stopped some pounding runs while this one stood, its fate "
+    "unknown: the ratio compares pounding and free on the analyses the pounding curve keeps, and "
+    "nu pounding is nu free times that ratio; docs/risk.md, \"Pounding and collapse\")";
+
 // Collapse per building, pooled and per sampled contact model (issue 23).
 void print_collapse(const CampaignData& c, const RiskReport& r, const RiskSettings& s) {
   if (r.collapse.empty()) return;
@@ -73,15 +78,19 @@ void print_collapse(const CampaignData& c, const RiskReport& r, const RiskSettin
   std::printf("  %-12s %-10s %12s %12s %8s %10s %10s %8s %8s\n", "building", "model", "nu pounding",
               "nu free", "ratio", ("P" + T + " pound").c_str(), ("P" + T + " free").c_str(),
               "CMR pnd", "CMR free");
-  for (const auto& k : r.collapse)
+  bool marked = false;
+  for (const auto& k : r.collapse) {
+    marked = marked || k.same_analyses;
     std::printf(
-        "  %-12s %-10s %12s %12s %8s %10s %10s %8s %8s\n", c.building_names[k.building].c_str(),
+        "  %-12s %-10s %12s %12s %8s %10s %10s %8s %8s%s\n", c.building_names[k.building].c_str(),
         k.model.empty() ? "all" : k.model.c_str(),
         k.pounding.finite() ? fmt("%.3e", k.maf_pounding).c_str() : to_string(k.pounding.status),
         k.free.finite() ? fmt("%.3e", k.maf_free).c_str() : to_string(k.free.status),
         fmt("%.3f", k.ratio).c_str(), fmt("%.5f", k.probability_pounding).c_str(),
         fmt("%.5f", k.probability_free).c_str(), fmt("%.2f", k.cmr_pounding).c_str(),
-        fmt("%.2f", k.cmr_free).c_str());
+        fmt("%.2f", k.cmr_free).c_str(), k.same_analyses ? " *" : "");
+  }
+  if (marked) std::printf("  %s\n", kLikeForLike);
 }
 
 void print_text(const CampaignData& c, const HazardCurve& h, const RiskReport& r,
@@ -165,17 +174,21 @@ void print_text(const CampaignData& c, const HazardCurve& h, const RiskReport& r
   std::printf("  %-12s %-15s %-10s %12s %12s %8s %12s %12s\n", "building", "edp", "limit",
               "nu pounding", "nu free", "ratio", ("P" + T + " pound").c_str(),
               ("P" + T + " free").c_str());
+  bool marked = false;
   for (const auto& d : r.damage)
-    if (d.model.empty())
+    if (d.model.empty()) {
+      marked = marked || d.same_analyses;
       std::printf(
-          "  %-12s %-15s %-10s %12s %12s %8s %12s %12s\n", c.building_names[d.building].c_str(),
+          "  %-12s %-15s %-10s %12s %12s %8s %12s %12s%s\n", c.building_names[d.building].c_str(),
           to_string(d.edp), limit_text(d.edp, d.limit).c_str(),
           d.pounding.finite() ? fmt("%.3e", d.maf_pounding).c_str() : to_string(d.pounding.status),
           d.edp == Edp::force ? "-"
           : d.free.finite()   ? fmt("%.3e", d.maf_free).c_str()
                               : to_string(d.free.status),
           fmt("%.3f", d.ratio).c_str(), fmt("%.4f", -std::expm1(-d.maf_pounding * s.years)).c_str(),
-          fmt("%.4f", -std::expm1(-d.maf_free * s.years)).c_str());
+          fmt("%.4f", -std::expm1(-d.maf_free * s.years)).c_str(), d.same_analyses ? " *" : "");
+    }
+  if (marked) std::printf("  %s\n", kLikeForLike);
   print_collapse(c, r, s);
   if (!r.notes.empty()) {
     std::printf("\nWhat could not be estimated:\n");
@@ -250,6 +263,8 @@ void print_json(const CampaignData& c, const HazardCurve& h, const RiskReport& r
         .field("maf_pounding", d.maf_pounding)
         .field("maf_free", d.maf_free)
         .field("ratio", d.ratio)
+        .field("free_same_analyses", d.same_analyses)
+        .field("maf_pounding_kept", d.maf_pounding_kept)
         .end_object();
   w.end_array();
   w.key("collapse").begin_array();
@@ -259,7 +274,8 @@ void print_json(const CampaignData& c, const HazardCurve& h, const RiskReport& r
         .field("building", long(k.building))
         .field("status_pounding", to_string(k.pounding.status))
         .field("status_free", to_string(k.free.status))
-        .field("theta_pounding", k.pounding.finite() ? k.pounding.theta : NAN)
+        .field("theta_pounding", k.theta_pounding)
+        .field("free_same_analyses", k.same_analyses)
         .field("theta_free", k.free.finite() ? k.free.theta : NAN)
         .field("maf_pounding", k.maf_pounding)
         .field("maf_free", k.maf_free)

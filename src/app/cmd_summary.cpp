@@ -98,15 +98,20 @@ void print_collapse(const AmplificationTable& t, const std::vector<std::string>&
   if (!t.has_collapse) return;
   std::printf(
       "\nCollapse: share of the successful samples (n) whose building collapsed, with and "
-      "without pounding\n");
-  std::printf("  %-5s %9s %5s  %-10s %9s %9s\n", "group", (im + " [g]").c_str(), "n", "building",
-              "pounding", "free");
+      "without pounding\n"
+      "(the pounding run stops at the row's first collapse: 'stopped' is the share still standing "
+      "then beside a collapsed neighbour, their fate unknown; 'of the rest' = pounding / (1 - "
+      "stopped), as pound fragility counts them)\n");
+  std::printf("  %-5s %9s %5s  %-10s %9s %9s %11s %9s\n", "group", (im + " [g]").c_str(), "n",
+              "building", "pounding", "stopped", "of the rest", "free");
   for (std::size_t g = 0; g < t.groups; ++g)
     for (std::size_t b = 0; b < t.buildings; ++b) {
       const std::size_t at = t.building_at(g, b);
-      std::printf("  %-5zu %9s %5ld  %-10s %9s %9s\n", g + 1,
+      const double stopped = t.stopped_pounding.empty() ? NAN : t.stopped_pounding[at];
+      std::printf("  %-5zu %9s %5ld  %-10s %9s %9s %11s %9s\n", g + 1,
                   fmt("%.4g", t.im[g] / kGravity).c_str(), t.collapse_count[at], names[b].c_str(),
-                  fmt("%.3f", t.collapsed_pounding[at]).c_str(),
+                  fmt("%.3f", t.collapsed_pounding[at]).c_str(), fmt("%.3f", stopped).c_str(),
+                  fmt("%.3f", stopped < 1 ? t.collapsed_pounding[at] / (1 - stopped) : NAN).c_str(),
                   fmt("%.3f", t.collapsed_free[at]).c_str());
     }
 }
@@ -189,6 +194,7 @@ void json_groups(JsonWriter& w, const AmplificationTable& t) {
         const std::size_t at = t.building_at(g, b);
         w.begin_object().field("building", long(b)).field("count", t.collapse_count[at]);
         w.field("collapsed_pounding", t.collapsed_pounding[at]);
+        w.field("stopped_pounding", t.stopped_pounding.empty() ? NAN : t.stopped_pounding[at]);
         w.field("collapsed_free", t.collapsed_free[at]).end_object();
       }
       w.end_array();

@@ -219,7 +219,7 @@ void collapse_statistics(const Pass& p, AmplificationTable& t) {
                      "the shape [samples, buildings] = [" +
                      std::to_string(n) + ", " + std::to_string(B) + "] of the peak_* datasets");
   t.collapse_count.assign(S, 0);
-  std::vector<long> with(S, 0), without(S, 0);
+  std::vector<long> with(S, 0), without(S, 0), stopped(S, 0);
   std::vector<double> bp, bf;
   for (hsize_t row = 0; row < n; row += kBlockRows) {
     const hsize_t count = std::min(kBlockRows, n - row);
@@ -229,6 +229,10 @@ void collapse_statistics(const Pass& p, AmplificationTable& t) {
     for (hsize_t i = 0; i < count; ++i) {
       const int k = p.group_of(i);
       if (k < 0) continue;
+      // The pounding run stops at the row's first collapse: a building standing then, beside
+      // one that collapsed, was stopped.
+      bool any = false;
+      for (std::size_t b = 0; b < B; ++b) any = any || bp[i * B + b] > 0.5;
       for (std::size_t b = 0; b < B; ++b) {
         const double x = bp[i * B + b], y = bf[i * B + b];
         if (!std::isfinite(x) || !std::isfinite(y)) continue;
@@ -236,15 +240,18 @@ void collapse_statistics(const Pass& p, AmplificationTable& t) {
         ++t.collapse_count[at];
         with[at] += x > 0.5;  // 1 collapsed, 0 standing
         without[at] += y > 0.5;
+        stopped[at] += any && !(x > 0.5);
       }
     }
   }
   t.collapsed_pounding.assign(S, kNaN);
   t.collapsed_free.assign(S, kNaN);
+  t.stopped_pounding.assign(S, kNaN);
   for (std::size_t at = 0; at < S; ++at)
     if (const double c = double(t.collapse_count[at]); c > 0) {
       t.collapsed_pounding[at] = double(with[at]) / c;
       t.collapsed_free[at] = double(without[at]) / c;
+      t.stopped_pounding[at] = double(stopped[at]) / c;
     }
 }
 

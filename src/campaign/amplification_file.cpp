@@ -68,9 +68,13 @@ void write_table(hid_t file, const std::string& root, const AmplificationTable& 
   write_longs(file, root + "/collapse/count", t.collapse_count, gb);
   write_doubles(file, root + "/collapse/collapsed_pounding", t.collapsed_pounding, gb, "-");
   write_doubles(file, root + "/collapse/collapsed_free", t.collapsed_free, gb, "-");
+  if (!t.stopped_pounding.empty())  // empty: read from a group written before it existed
+    write_doubles(file, root + "/collapse/stopped_pounding", t.stopped_pounding, gb, "-");
   h5::attribute(file, root + "/collapse", "definition",
                 "share of the group's successful samples (count) whose building collapsed "
-                "(/response/collapsed_pounding, collapsed_free = 1), with and without pounding");
+                "(/response/collapsed_pounding, collapsed_free = 1), with and without pounding; "
+                "stopped_pounding: share whose pounding run stopped at another building's "
+                "collapse while this one stood (its later response unknown)");
 }
 
 // Reads the datasets of one table under `root`, refusing a damaged group with one line before
@@ -192,6 +196,9 @@ class TableReader {
     t->collapse_count = as_longs(two_d("/collapse/count", *t), "/collapse/count");
     t->collapsed_pounding = two_d("/collapse/collapsed_pounding", *t);
     t->collapsed_free = two_d("/collapse/collapsed_free", *t);
+    t->stopped_pounding.clear();  // a group written before it existed: computed again
+    if (H5Lexists(file_, (root_ + "/collapse/stopped_pounding").c_str(), H5P_DEFAULT) > 0)
+      t->stopped_pounding = two_d("/collapse/stopped_pounding", *t);
   }
 
   hid_t file_;
@@ -254,7 +261,8 @@ bool amplification_complete(hid_t file, const AmplificationTable& t) {
                         H5Lexists(file, "/response/collapsed_pounding", H5P_DEFAULT) > 0;
   const bool models = H5Lexists(file, "/samples", H5P_DEFAULT) > 0 &&
                       H5Lexists(file, "/samples/model", H5P_DEFAULT) > 0;
-  return t.has_collapse == collapse && models == !t.models.empty();
+  return t.has_collapse == collapse && (!collapse || !t.stopped_pounding.empty()) &&
+         models == !t.models.empty();
 }
 
 }  // namespace pound

@@ -21,6 +21,9 @@
 //   /amplification/collapse/collapsed_pounding [G, B]  share of them whose building collapsed
 //                                                      with pounding (NaN when count = 0)
 //   /amplification/collapse/collapsed_free [G, B]      the same without pounding
+//   /amplification/collapse/stopped_pounding [G, B]    share of them whose pounding run
+//                                                   stopped at another building's collapse
+//                                                   while this one stood
 //   /amplification/models                           only when the file has /samples/model (the
 //                                                   study samples the contact model); attribute
 //                                                   labels ("hc-linear, sears": the models, in
@@ -71,6 +74,10 @@ struct AmplificationTable {
   std::vector<long> collapse_count;  ///< [G, B] successful samples with both flags
   std::vector<double> collapsed_pounding;  ///< [G, B] [-] share collapsed with pounding
   std::vector<double> collapsed_free;      ///< [G, B] [-] share collapsed without pounding
+  /// [G, B] [-] share whose pounding run stopped at another building's collapse while this one
+  /// stood (the run stops at the first collapse of the row: its later fate is unknown); empty
+  /// when read from a stored group written before it existed.
+  std::vector<double> stopped_pounding;
   std::string model;  ///< "" for every sample, else the contact model of a per-model table
   /// Per contact model (the labels of /samples/model, in byte order), the same statistics over
   /// its samples in these groups; empty when the file has no /samples/model.

@@ -230,21 +230,34 @@ std::vector<std::pair<Edp, std::vector<double>>> curve_limits(const CampaignData
 }
 
 // Outcome of analysis `row` for a curve: 1 exceeded (a collapsed building exceeds every limit),
-// 0 not, kLeftOut when the EDP is not finite, or when the pounding run stopped at another
-// building's collapse before this one exceeded the limit (its outcome is then unknown: right-
-// censored; an exceedance before the stop is known and counts).
+// 0 not, kLeftOut when the EDP is not finite, or in the pounding run when it stopped at another
+// building's collapse while this one stood (censored: its outcome over the rest of the record
+// is unknown). The pounding curves are thus those of the records in which no other building
+// collapsed first; an exceedance before the stop is left out with the rest, since keeping the
+// known exceedances and not the unknown ones would select the censored analyses on this
+// building's own outcome (and the shift compares the free runs of the same analyses).
 char outcome(const CampaignData& c, Edp edp, double limit, bool pounding, std::size_t row,
              std::size_t b) {
   if (c.collapsed(row, b, pounding)) return 1;
+  if (pounding && c.censored(row, b)) return kLeftOut;
   const double v = edp_value(c, edp, pounding, row, b);
-  const bool exceeded = edp != Edp::collapse && v > limit;
-  if (pounding && !exceeded && c.censored(row, b)) return kLeftOut;
-  return !std::isfinite(v) ? kLeftOut : exceeded ? 1 : 0;
+  if (!std::isfinite(v)) return kLeftOut;
+  return edp != Edp::collapse && v > limit ? 1 : 0;
 }
 
-// The curves of one set (without bands), appended to r, their outcomes to `outcomes`.
+// A free curve fitted again on the analyses of its pounding curve, when another building's
+// collapse censored some of those (FragilityShift::same_analyses).
+struct PairedFree {
+  std::size_t pounding = 0;  // index of the pounding curve in the report
+  LognormalFit fit;
+  std::vector<char> z;
+};
+
+// The curves of one set (without bands), appended to r, their outcomes to `outcomes`; the free
+// curves fitted on their pounding curve's analyses to `paired`.
 void fit_set(const CampaignData& c, const FragilitySettings& s, const AnalysisSet& set,
-             FragilityReport& r, std::vector<std::vector<char>>& outcomes) {
+             FragilityReport& r, std::vector<std::vector<char>>& outcomes,
+             std::vector<PairedFree>& paired) {
   for (std::size_t b = 0; b < c.buildings; ++b)
     for (const auto& [edp, limits] : curve_limits(c, s))
       for (double limit : limits) {
@@ -268,16 +281,27 @@ void fit_set(const CampaignData& c, const FragilitySettings& s, const AnalysisSe
           fc.fit = fit_lognormal(observations(set.d, z));
           fc.observed = observed_fractions(set.d, z);
           r.curves.push_back(fc);
+          if (!pounding && r.curves.size() >= 2 && r.curves[r.curves.size() - 2].censored > 0) {
+            // The pounding curve just before: its censored analyses left out here too.
+            PairedFree pf{r.curves.size() - 2, {}, z};
+            for (std::size_t k = 0; k < set.used.size(); ++k)
+              if (outcomes.back()[k] == kLeftOut && c.censored(set.used[k], b)) pf.z[k] = kLeftOut;
+            pf.fit = fit_lognormal(observations(set.d, pf.z));
+            paired.push_back(std::move(pf));
+          }
           outcomes.push_back(z);
         }
       }
 }
 
-// Bands of the curves [first, first + reps.size()) from their bootstrap fits, and their shifts.
+// Bands of the curves [first, first + n) from their bootstrap fits reps[0, n), and their
+// shifts; reps[n + i] are those of paired[i].
 void add_bands_and_shifts(const FragilitySettings& s, std::size_t first,
-                          const std::vector<std::vector<LognormalFit>>& reps, FragilityReport& r) {
+                          const std::vector<std::vector<LognormalFit>>& reps,
+                          const std::vector<PairedFree>& paired, FragilityReport& r) {
+  const std::size_t n = reps.size() - paired.size();
   const double zq = normal_quantile(0.5 * (1.0 + s.confidence));
-  for (std::size_t j = 0; j < reps.size(); ++j) {
+  for (std::size_t j = 0; j < n; ++j) {
     FragilityCurve& fc = r.curves[first + j];
     std::vector<double> th, be;
     for (const auto& f : reps[j]) {
@@ -304,17 +328,33 @@ void add_bands_and_shifts(const FragilitySettings& s, std::size_t first,
     }
   }
   // The shift: curves come in (pounding, free) pairs except force.
-  for (std::size_t j = 0; j + 1 < reps.size(); ++j) {
+  for (std::size_t j = 0; j + 1 < n; ++j) {
     const FragilityCurve &p = r.curves[first + j], &f = r.curves[first + j + 1];
     if (!p.pounding || f.pounding || p.edp != f.edp || p.limit != f.limit ||
         p.building != f.building)
       continue;
-    FragilityShift sh{p.model, p.building, p.edp, p.limit, kNan, {}};
-    if (p.fit.finite() && f.fit.finite()) sh.ratio = p.fit.theta / f.fit.theta;
+    FragilityShift sh;
+    sh.model = p.model;
+    sh.building = p.building;
+    sh.edp = p.edp;
+    sh.limit = p.limit;
+    sh.ratio = kNan;
+    const LognormalFit* free_fit = &f.fit;
+    const std::vector<LognormalFit>* free_reps = &reps[j + 1];
+    for (std::size_t i = 0; i < paired.size(); ++i)
+      if (paired[i].pounding == first + j) {
+        free_fit = &paired[i].fit;
+        free_reps = &reps[n + i];
+        sh.same_analyses = true;
+      }
+    sh.free_same = *free_fit;
+    sh.theta_pounding = p.fit.finite() ? p.fit.theta : kNan;
+    sh.theta_free = free_fit->finite() ? free_fit->theta : kNan;
+    if (p.fit.finite() && free_fit->finite()) sh.ratio = p.fit.theta / free_fit->theta;
     std::vector<double> ratio;
     for (std::size_t i = 0; i < reps[j].size(); ++i)
-      ratio.push_back(reps[j][i].finite() && reps[j + 1][i].finite()
-                          ? reps[j][i].theta / reps[j + 1][i].theta
+      ratio.push_back(reps[j][i].finite() && (*free_reps)[i].finite()
+                          ? reps[j][i].theta / (*free_reps)[i].theta
                           : kNan);
     sh.ci = percentile_interval(ratio, s.confidence);
     r.shifts.push_back(sh);
@@ -370,9 +410,11 @@ FragilityReport analyse_fragility(const CampaignData& c, const FragilitySettings
   for (const AnalysisSet& set : analysis_sets(c, s, used, d)) {
     if (!set.model.empty()) r.models.push_back(set.model);
     std::vector<std::vector<char>> outcomes;
+    std::vector<PairedFree> paired;
     const std::size_t first = r.curves.size();
-    fit_set(c, s, set, r, outcomes);
-    add_bands_and_shifts(s, first, bootstrap_fits(set.d, outcomes, s.bootstrap), r);
+    fit_set(c, s, set, r, outcomes, paired);
+    for (const auto& pf : paired) outcomes.push_back(pf.z);
+    add_bands_and_shifts(s, first, bootstrap_fits(set.d, outcomes, s.bootstrap), paired, r);
   }
   rank_sensitivity(c, used, &r);
   r.unranked = c.text_parameters;

@@ -76,6 +76,15 @@ struct FragilityShift {
   double limit = 0.0;
   double ratio = 0.0;  ///< NaN when either curve has no finite estimate
   Interval ci;         ///< bootstrap band of the ratio (paired replicates)
+  /// The two medians of the ratio [unit of the IM]: the pounding curve's, and the free one's
+  /// fitted on the same analyses. Where another building's collapse censored some pounding
+  /// analyses (FragilityCurve::censored), the free median is fitted again without them
+  /// (same_analyses), so that the ratio compares like with like: the censored samples are those
+  /// whose records were strong enough to collapse the neighbour, and leaving them out of the
+  /// pounding curve alone would bias the ratio. Otherwise it is the free curve's.
+  double theta_pounding = 0.0, theta_free = 0.0;
+  bool same_analyses = false;
+  LognormalFit free_same;  ///< the free fit of theta_free (the free curve's when not same_analyses)
 };
 
 struct SensitivityRow {

@@ -44,11 +44,15 @@ std::string curves_csv(const CampaignData& c, const FragilityReport& r) {
 }
 
 std::string shift_csv(const CampaignData& c, const FragilityReport& r) {
-  std::string s = "building,building_name,edp,unit,limit,ratio,ratio_ci90_lo,ratio_ci90_hi,model\n";
+  std::string s =
+      "building,building_name,edp,unit,limit,ratio,ratio_ci90_lo,ratio_ci90_hi,model,"
+      "theta_pounding_mps2,theta_free_mps2,free_same_analyses\n";
   for (const auto& k : r.shifts)
     s += std::to_string(k.building) + "," + c.building_name(k.building) + "," + to_string(k.edp) +
          "," + unit_of(k.edp) + "," + csv_number(k.limit) + "," + csv_number(k.ratio) + "," +
-         csv_number(k.ci.lo) + "," + csv_number(k.ci.hi) + "," + model_label(k.model) + "\n";
+         csv_number(k.ci.lo) + "," + csv_number(k.ci.hi) + "," + model_label(k.model) + "," +
+         csv_number(k.theta_pounding) + "," + csv_number(k.theta_free) + "," +
+         (k.same_analyses ? "1" : "0") + "\n";
   return s;
 }
 

@@ -4,7 +4,9 @@
 //   curves.csv        one row per curve: building, edp, limit (SI), pounding, status, theta
 //                     [m/s^2], beta, 90 % bootstrap and asymptotic bands, counts (analyses,
 //                     exceedances, and left_out: analyses whose EDP is not finite)
-//   shift.csv         theta_pounding / theta_free per building, edp and limit, 90 % band
+//   shift.csv         theta_pounding / theta_free per building, edp and limit, 90 % band,
+//                     the two medians [m/s^2 or the IM unit] and whether the free one is
+//                     fitted on the pounding curve's analyses (FragilityShift::same_analyses)
 //   observations.csv  per curve pair and stripe (or IM bin): im [m/s^2], n, exceedances with
 //                     and without pounding
 //   sensitivity.csv   Spearman and partial rank correlation of each sampled parameter with

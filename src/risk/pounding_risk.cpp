@@ -398,7 +398,21 @@ std::vector<DamageRisk> damage_risks(const CampaignData& c, const HazardCurve& h
         dr.pounding.finite() ? mean_annual_frequency(h, dr.pounding.theta, dr.pounding.beta) : kNaN;
     dr.maf_free = dr.free.finite() ? mean_annual_frequency(h, dr.free.theta, dr.free.beta) : kNaN;
     dr.ratio = dr.maf_pounding / dr.maf_free;
-    dr.outside_pounding = outside_share(h, dr.pounding, dr.maf_pounding, im_lo, im_hi);
+    dr.maf_pounding_kept = dr.maf_pounding;
+    dr.free_same = dr.free;
+    for (const FragilityShift& sh : fr.shifts)
+      if (sh.same_analyses && sh.model == pc.model && sh.building == pc.building &&
+          sh.edp == pc.edp && sh.limit == pc.limit) {
+        // Like for like (DamageRisk::same_analyses).
+        dr.same_analyses = true;
+        dr.free_same = sh.free_same;
+        const double maf_same =
+            dr.free_same.finite() ? mean_annual_frequency(h, dr.free_same.theta, dr.free_same.beta)
+                                  : kNaN;
+        dr.ratio = dr.maf_pounding_kept / maf_same;
+        dr.maf_pounding = dr.maf_free * dr.ratio;
+      }
+    dr.outside_pounding = outside_share(h, dr.pounding, dr.maf_pounding_kept, im_lo, im_hi);
     dr.outside_free = outside_share(h, dr.free, dr.maf_free, im_lo, im_hi);
     out.push_back(dr);
   }
@@ -487,12 +501,19 @@ std::vector<CollapseRisk> collapse_risks(const std::vector<DamageRisk>& damage,
     c.building = d.building;
     c.pounding = d.pounding;
     c.free = d.free;
+    c.same_analyses = d.same_analyses;
+    c.theta_pounding = !d.pounding.finite() ? kNaN
+                       : !d.same_analyses
+                           ? d.pounding.theta
+                           : (d.free.finite() && d.free_same.finite()
+                                  ? d.free.theta * d.pounding.theta / d.free_same.theta
+                                  : kNaN);
     c.maf_pounding = d.maf_pounding;
     c.maf_free = d.maf_free;
     c.ratio = d.ratio;
     c.probability_pounding = probability_in_years(d.maf_pounding, s.years);
     c.probability_free = probability_in_years(d.maf_free, s.years);
-    c.cmr_pounding = design_im > 0 && d.pounding.finite() ? d.pounding.theta / design_im : kNaN;
+    c.cmr_pounding = design_im > 0 ? c.theta_pounding / design_im : kNaN;
     c.cmr_free = design_im > 0 && d.free.finite() ? d.free.theta / design_im : kNaN;
     out.push_back(c);
   }

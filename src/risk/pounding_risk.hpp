@@ -104,6 +104,15 @@ struct DamageRisk {
   LognormalFit pounding, free;                ///< free: no_data for the force
   double maf_pounding = 0.0, maf_free = 0.0;  ///< [1/yr]; NaN without a finite fit
   double ratio = 0.0;                         ///< maf_pounding / maf_free; NaN when either is
+  /// Where another building's collapse censored some of the pounding analyses (the pounding run
+  /// stops at the row's first collapse; FragilityShift::same_analyses): the pounding fit
+  /// describes the samples whose neighbour did not collapse first, the weaker records. Then
+  /// ratio = nu(pounding) / nu(free_same), both fitted on those analyses (like for like), and
+  /// maf_pounding = maf_free x ratio: the free rate of all analyses times the effect of pounding
+  /// (maf_pounding_kept: nu of the pounding fit itself) [1/yr].
+  bool same_analyses = false;
+  LognormalFit free_same;
+  double maf_pounding_kept = 0.0;
   /// Share of each nu from intensities outside the campaign's (GapEstimate::outside_share).
   double outside_pounding = 0.0, outside_free = 0.0;
 };
@@ -115,6 +124,11 @@ struct CollapseRisk {
   std::string model;  ///< "" for all
   std::size_t building = 0;
   LognormalFit pounding, free;
+  bool same_analyses = false;  ///< DamageRisk::same_analyses
+  /// Median collapse intensity with pounding [IM unit]: the pounding fit's, or where censored
+  /// (same_analyses) the free median of all analyses times the like-for-like shift
+  /// theta_pounding / theta_free_same (FragilityShift).
+  double theta_pounding = 0.0;
   double maf_pounding = 0.0, maf_free = 0.0;                  ///< [1/yr]; NaN without a finite fit
   double probability_pounding = 0.0, probability_free = 0.0;  ///< in T years [-]
   double ratio = 0.0;                                         ///< maf_pounding / maf_free [-]

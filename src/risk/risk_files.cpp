@@ -51,13 +51,18 @@ std::string damage_csv(const CampaignData& c, const RiskReport& r) {
   std::string s =
       "building,building_name,edp,unit,limit,status_pounding,theta_pounding_mps2,beta_pounding,"
       "status_free,theta_free_mps2,beta_free,maf_pounding_per_year,maf_free_per_year,ratio,"
-      "maf_share_outside_campaign_pounding,maf_share_outside_campaign_free,model\n";
+      "maf_share_outside_campaign_pounding,maf_share_outside_campaign_free,model,"
+      "free_same_analyses,theta_free_same_mps2,beta_free_same,maf_pounding_kept_per_year\n";
   for (const auto& d : r.damage)
     s += std::to_string(d.building) + "," + c.building_name(d.building) + "," + to_string(d.edp) +
          "," + unit_of(d.edp) + "," + csv_number(d.limit) + "," + fit_fields(d.pounding) + "," +
          fit_fields(d.free) + "," + csv_number(d.maf_pounding) + "," + csv_number(d.maf_free) +
          "," + csv_number(d.ratio) + "," + csv_number(d.outside_pounding) + "," +
-         csv_number(d.outside_free) + "," + (d.model.empty() ? "all" : d.model) + "\n";
+         csv_number(d.outside_free) + "," + (d.model.empty() ? "all" : d.model) + "," +
+         (d.same_analyses ? "1" : "0") + "," +
+         csv_number(d.free_same.finite() ? d.free_same.theta : NAN) + "," +
+         csv_number(d.free_same.finite() ? d.free_same.beta : NAN) + "," +
+         csv_number(d.maf_pounding_kept) + "\n";
   return s;
 }
 

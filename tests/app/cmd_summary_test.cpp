@@ -131,6 +131,8 @@ TEST(CmdSummary, CollapseSharesAndPerModelTables) {
       "            assert e['building'] == bd and e['count'] == n, (e, n)\n"
       "            assert e['collapsed_pounding'] == cp[use, bd].sum() / n, (e, cp[use, bd])\n"
       "            assert e['collapsed_free'] == cf[use, bd].sum() / n, (e, cf[use, bd])\n"
+      "            st = (cp[use, bd] == 0) & (cp[use, 1 - bd] == 1)\n"
+      "            assert e['stopped_pounding'] == st.sum() / n, (e, st.sum())\n"
       "            shares += [e['collapsed_pounding'], e['collapsed_free']]\n"
       "            r = ap[use, bd, 0] / af[use, bd, 0]\n"
       "            med = grp['buildings'][bd]['floors'][0]['accel']['median']\n"

@@ -189,6 +189,7 @@ void expect_same_table(const AmplificationTable& a, const AmplificationTable& b,
   expect_same(a.collapse_count, b.collapse_count, what + " collapse count");
   expect_same(a.collapsed_pounding, b.collapsed_pounding, what + " collapsed_pounding");
   expect_same(a.collapsed_free, b.collapsed_free, what + " collapsed_free");
+  expect_same(a.stopped_pounding, b.stopped_pounding, what + " stopped_pounding");
 }
 
 TEST(AmplificationModels, CollapseSharesAreTheCountsOfCollapsedSamples) {
@@ -203,13 +204,14 @@ TEST(AmplificationModels, CollapseSharesAreTheCountsOfCollapsedSamples) {
   auto check = [&](const AmplificationTable& x, const std::string& model) {
     for (std::size_t g = 0; g < 2; ++g)
       for (int b = 0; b < 2; ++b) {
-        long n = 0, with = 0, without = 0;
+        long n = 0, with = 0, without = 0, stopped = 0;
         for (long s : ids) {
           if (std::size_t(s % 2) != g || failed(s) || (!model.empty() && model_of(s) != model))
             continue;
           ++n;
           with += collapsed(s, b, true);
           without += collapsed(s, b, false);
+          stopped += !collapsed(s, b, true) && collapsed(s, 1 - b, true);
         }
         const std::size_t at = x.building_at(g, std::size_t(b));
         const std::string where =
@@ -218,6 +220,7 @@ TEST(AmplificationModels, CollapseSharesAreTheCountsOfCollapsedSamples) {
         EXPECT_EQ(x.collapse_count[at], n) << where;
         EXPECT_DOUBLE_EQ(x.collapsed_pounding[at], double(with) / double(n)) << where;
         EXPECT_DOUBLE_EQ(x.collapsed_free[at], double(without) / double(n)) << where;
+        EXPECT_DOUBLE_EQ(x.stopped_pounding[at], double(stopped) / double(n)) << where;
       }
   };
   check(t, "");
@@ -229,6 +232,10 @@ TEST(AmplificationModels, CollapseSharesAreTheCountsOfCollapsedSamples) {
   EXPECT_DOUBLE_EQ(t.collapsed_free[t.building_at(0, 0)], 8.0 / 29.0);
   // Stripe 1 (odd samples but 5): no odd multiple of 4 or 8.
   EXPECT_EQ(t.collapsed_pounding[t.building_at(1, 0)], 0.0);
+  // Building 2 in stripe 0 collapsed with pounding in the multiples of 6 but 12 (0, 6, 18, 24,
+  // 30, 36, 42, 48, 54); it stood, stopped by building 1's collapse, in those of 4 that are not
+  // (4, 8, 16, 20, 28, 32, 40, 44, 52, 56): 10 of 29.
+  EXPECT_DOUBLE_EQ(t.stopped_pounding[t.building_at(0, 1)], 10.0 / 29.0);
 }
 
 TEST(AmplificationModels, EachModelsTableIsThePooledTableOfItsSamplesAlone) {

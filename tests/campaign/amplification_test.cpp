@@ -251,6 +251,7 @@ TEST(Amplification, ADamagedGroupIsRefusedBeforeAnythingIsIndexed) {
   good.collapse_count = {3, 2};
   good.collapsed_pounding = {0.0, 0.5};
   good.collapsed_free = {1.0 / 3.0, 1.0};
+  good.stopped_pounding = {1.0 / 3.0, 0.0};
   AmplificationTable model = good;
   model.model = "sears";
   good.models = {model};

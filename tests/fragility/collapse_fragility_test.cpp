@@ -132,9 +132,11 @@ TEST(CollapseFragility, EachSampledModelsCurvesAreTheFitOfItsOwnAnalyses) {
 
 // Two buildings in one pounding run, which stops at the first collapse. In every third sample
 // building 0 collapses; building 1 then stands at the stop, and its later response is unknown:
-// its outcome for a limit it had not exceeded is censored (left out), one it had exceeded
-// counts. Building 1's drift is 2 % in the samples 0, 6, 12, ... (exceeded a 1 % limit before
-// the stop) and 0.5 % elsewhere. Without pounding nothing is censored.
+// the sample is left out of every pounding curve of building 1 (censored), also where its drift
+// had passed a limit before the stop (keeping those and not the others would select on its own
+// outcome). Building 1's drift is 2 % in the samples 0, 6, 12, ... (all censored) and 1, 11,
+// 16, 26, ... (s % 5 = 1, not a multiple of 3), 0.5 % elsewhere. Without pounding nothing is
+// censored.
 TEST(CollapseFragility, AStandingBuildingIsCensoredWhenThePoundingRunStopsAtItsNeighbour) {
   constexpr std::size_t n = 1200;
   CampaignData c;
@@ -147,16 +149,17 @@ TEST(CollapseFragility, AStandingBuildingIsCensoredWhenThePoundingRunStopsAtItsN
   c.scale.assign(n, 1.0);
   FloorArray drift{n, 2, 1, std::vector<double>(2 * n, 0.005)};
   std::vector<double> cp(2 * n, 0.0), cf(2 * n, 0.0);
-  std::size_t falls = 0, exceeded_before = 0;
+  std::size_t falls = 0, exceeded = 0, exceeded_standing = 0;
   for (std::size_t s = 0; s < n; ++s) {
     c.im.push_back(c.levels[s % 4]);
     if (s % 3 == 0) {
       cp[2 * s] = 1.0;
       ++falls;
     }
-    if (s % 6 == 0) {
+    if (s % 6 == 0 || s % 5 == 1) {
       drift.v[2 * s + 1] = 0.02;
-      ++exceeded_before;
+      ++exceeded;
+      exceeded_standing += s % 3 != 0;
     }
   }
   c.floor_arrays["peak_drift_pounding"] = drift;
@@ -177,12 +180,12 @@ TEST(CollapseFragility, AStandingBuildingIsCensoredWhenThePoundingRunStopsAtItsN
     for (const auto& o : k.observed) m += o.n, z += o.z;
     return std::pair<long, long>{m, z};
   };
-  // Building 1, drift 1 %: the censored samples that had not exceeded (falls - exceeded_before)
-  // are left out; those that had exceeded count, and they are the only exceedances.
+  // Building 1, drift 1 %: every sample where building 0 fell is left out; the exceedances are
+  // those of the others.
   const FragilityCurve& d = of(1, Edp::drift, true);
-  EXPECT_EQ(d.censored, falls - exceeded_before);
-  EXPECT_EQ(d.left_out, falls - exceeded_before);
-  EXPECT_EQ(counted(d), (std::pair<long, long>{long(n - d.left_out), long(exceeded_before)}));
+  EXPECT_EQ(d.censored, falls);
+  EXPECT_EQ(d.left_out, falls);
+  EXPECT_EQ(counted(d), (std::pair<long, long>{long(n - falls), long(exceeded_standing)}));
   // Its collapse: every sample where building 0 fell is censored.
   const FragilityCurve& k = of(1, Edp::collapse, true);
   EXPECT_EQ(k.censored, falls);
@@ -191,7 +194,74 @@ TEST(CollapseFragility, AStandingBuildingIsCensoredWhenThePoundingRunStopsAtItsN
   EXPECT_EQ(of(0, Edp::collapse, true).censored, 0u);
   EXPECT_EQ(counted(of(0, Edp::collapse, true)), (std::pair<long, long>{long(n), long(falls)}));
   EXPECT_EQ(of(1, Edp::drift, false).left_out, 0u);
-  EXPECT_EQ(counted(of(1, Edp::drift, false)).second, long(exceeded_before));
+  EXPECT_EQ(counted(of(1, Edp::drift, false)).second, long(exceeded));
+  // The shift takes the free runs of the same analyses.
+  for (const auto& x : r.shifts)
+    if (x.building == 1 && x.edp == Edp::drift) {
+      EXPECT_TRUE(x.same_analyses);
+    }
+}
+
+// The shift compares like with like: where a neighbour's collapse censored some pounding
+// analyses, the free median of the ratio is fitted on the analyses the pounding curve keeps.
+// Here building 1's drift is the same with and without pounding, its exceedances drawn from a
+// lognormal, and building 0 collapses (with pounding) in each stripe's strongest 30 % of records,
+// which are also those where building 1's drift is largest: the censoring is informative. The
+// ratio on the same analyses is exactly 1; against the free curve of all the analyses it is not.
+TEST(CollapseFragility, TheShiftComparesThePoundingCurveWithTheFreeOneOnTheSameAnalyses) {
+  constexpr std::size_t stripes = 5, per = 400, n = stripes * per;
+  CampaignData c;
+  c.path = "made-up.h5";
+  c.samples = n;
+  c.buildings = 2;
+  c.building_names = {"falls", "stands"};
+  for (std::size_t l = 0; l < stripes; ++l) c.levels.push_back(0.5 * double(1u << l));
+  c.status.assign(n, 0);
+  c.scale.assign(n, 1.0);
+  FloorArray drift{n, 2, 1, std::vector<double>(2 * n, 0.001)};
+  std::vector<double> cp(2 * n, 0.0), cf(2 * n, 0.0);
+  for (std::size_t s = 0; s < n; ++s) {
+    const std::size_t l = s % stripes, k = s / stripes;
+    const double im = c.levels[l], q = (double(k) + 0.5) / double(per);  // q small: strong
+    c.im.push_back(im);
+    if (q < normal_cdf(std::log(im / kTheta) / kBeta)) drift.v[2 * s + 1] = 0.02;
+    if (q < 0.3) cp[2 * s] = 1.0;
+  }
+  c.floor_arrays["peak_drift_pounding"] = drift;
+  c.floor_arrays["peak_drift_free"] = drift;
+  c.building_arrays["collapsed_pounding"] = cp;
+  c.building_arrays["collapsed_free"] = cf;
+  c.peak_force = FloorArray{n, 0, 0, {}};
+  FragilitySettings st = settings();
+  st.drift_limits = {0.01};
+  const FragilityReport r = analyse_fragility(c, st);
+  const FragilityShift* sh = nullptr;
+  for (const auto& x : r.shifts)
+    if (x.building == 1 && x.edp == Edp::drift) sh = &x;
+  ASSERT_NE(sh, nullptr);
+  EXPECT_TRUE(sh->same_analyses);
+  EXPECT_DOUBLE_EQ(sh->ratio, 1.0);
+  EXPECT_LE(sh->ci.lo, 1.0);
+  EXPECT_GE(sh->ci.hi, 1.0);
+  const FragilityCurve *p = nullptr, *f = nullptr;
+  for (const auto& k : r.curves)
+    if (k.building == 1 && k.edp == Edp::drift) {
+      (k.pounding ? p : f) = &k;
+    }
+  ASSERT_TRUE(p && f && p->fit.finite() && f->fit.finite());
+  EXPECT_GT(p->censored, 0u);
+  EXPECT_DOUBLE_EQ(sh->theta_pounding, p->fit.theta);
+  // Without the censored analyses (the strongest records) the pounding curve sees the weaker
+  // ones: a larger median than the free curve of all the analyses, whose ratio to it would be a
+  // bias (here 1.2), not pounding.
+  EXPECT_GT(p->fit.theta, 1.1 * f->fit.theta);
+  EXPECT_EQ(sh->theta_free, p->fit.theta);
+  // Where nothing is censored (building 0), the free median is the free curve's.
+  for (const auto& x : r.shifts) {
+    if (x.building == 0) {
+      EXPECT_FALSE(x.same_analyses);
+    }
+  }
 }
 
 }  // namespace

@@ -265,5 +265,68 @@ TEST(CollapseRisk, ProbabilityInTYearsAndTheCollapseMarginRatio) {
   EXPECT_TRUE(std::isnan(d[0].cmr_pounding) && std::isnan(d[0].cmr_free));
 }
 
+TEST(CollapseRisk, WithCensoredAnalysesTheMedianIsTheFreeOneTimesTheLikeForLikeShift) {
+  DamageRisk collapse;
+  collapse.edp = Edp::collapse;
+  collapse.limit = 1.0;
+  collapse.pounding.status = collapse.free.status = collapse.free_same.status = FitStatus::ok;
+  collapse.pounding.theta = 1.5 * kGravity;
+  collapse.free.theta = 2.0 * kGravity;
+  collapse.free_same.theta = 1.8 * kGravity;
+  collapse.same_analyses = true;
+  RiskSettings s;
+  const auto c = collapse_risks({collapse}, s, 1.0 * kGravity);
+  ASSERT_EQ(c.size(), 1u);
+  EXPECT_TRUE(c[0].same_analyses);
+  EXPECT_DOUBLE_EQ(c[0].theta_pounding, 2.0 * kGravity * 1.5 / 1.8);
+  EXPECT_DOUBLE_EQ(c[0].cmr_pounding, 2.0 * 1.5 / 1.8);
+  EXPECT_DOUBLE_EQ(c[0].cmr_free, 2.0);
+}
+
+// The made-up campaign with collapse: building "left" collapses in the pounding run in the
+// strongest 30 % of each stripe's records (by the drift's eps, so the censoring of "right" is
+// informative); without pounding nothing collapses. Within the analyses the pounding curve
+// keeps, pounding multiplies every drift by 1.25, so the like-for-like ratio of the drift
+// limit's nu is near 1.25^k (theta / 1.25 on a power-law hazard of slope k); the pounding
+// curve against the free curve of all the analyses is not.
+TEST(PoundingRisk, DamageLimitsCompareLikeWithLikeWhereANeighboursCollapseCensored) {
+  CampaignData c = made_up_campaign();
+  std::vector<double> cp(2 * c.samples, 0.0), cf(2 * c.samples, 0.0);
+  const double strong = normal_quantile(0.7);
+  for (std::size_t s = 0; s < c.samples; ++s) {
+    const int i = int(s / kStripes);
+    const double eps = normal_quantile((double((i * 7 + 5) % kPerStripe) + 0.5) / kPerStripe);
+    if (eps > strong) cp[2 * s] = 1.0;
+  }
+  c.building_arrays["collapsed_pounding"] = cp;
+  c.building_arrays["collapsed_free"] = cf;
+  FragilitySettings limits = drift_limit();
+  limits.collapse = false;
+  RiskSettings st = settings();
+  st.bootstrap.replicates = 0;
+  const RiskReport r = analyse_risk(c, power_law(), st, kModes, limits);
+  const DamageRisk* d = nullptr;
+  for (const auto& x : r.damage)
+    if (x.building == 1 && x.edp == Edp::drift) d = &x;
+  ASSERT_NE(d, nullptr);
+  ASSERT_TRUE(d->same_analyses);
+  ASSERT_TRUE(d->pounding.finite() && d->free.finite() && d->free_same.finite());
+  const HazardCurve h = power_law();
+  const double same = mean_annual_frequency(h, d->free_same.theta, d->free_same.beta);
+  EXPECT_DOUBLE_EQ(d->maf_pounding_kept,
+                   mean_annual_frequency(h, d->pounding.theta, d->pounding.beta));
+  EXPECT_DOUBLE_EQ(d->ratio, d->maf_pounding_kept / same);
+  EXPECT_DOUBLE_EQ(d->maf_pounding, d->maf_free * d->ratio);
+  const double expected = std::pow(kDriftFactor, kSlope);
+  EXPECT_NEAR(d->ratio, expected, 0.1 * expected);
+  EXPECT_GT(std::fabs(d->maf_pounding_kept / d->maf_free / expected - 1.0), 0.1);
+  // Building "left" is never censored: its numbers are the plain ones.
+  for (const auto& x : r.damage)
+    if (x.building == 0 && x.edp == Edp::drift) {
+      EXPECT_FALSE(x.same_analyses);
+      EXPECT_EQ(x.maf_pounding, x.maf_pounding_kept);
+    }
+}
+
 }  // namespace
 }  // namespace pound
