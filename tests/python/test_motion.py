@@ -20,6 +20,25 @@ def test_read_record_reads_the_file_in_m_per_s2():
     assert np.array_equal(short.accel, 2 * accel[:401])
 
 
+def test_read_record_reads_at2_and_column_files(tmp_path):
+    at2 = tmp_path / "rec.AT2"
+    at2.write_text("PEER NGA STRONG MOTION DATABASE RECORD\nTEST 1999, STATION, 090\n"
+                   "ACCELERATION TIME SERIES IN UNITS OF G\nNPTS=    5, DT=   .0100 SEC\n"
+                   "  .0010000  -.0020000   .0030000\n  .1000000  -.0500000\n")
+    rec = pound.motion.read_record(at2)
+    assert rec.dt == 0.01
+    assert list(rec.accel) == [x * G for x in (0.001, -0.002, 0.003, 0.1, -0.05)]
+    cols = tmp_path / "rec.txt"
+    cols.write_text("# time [s], acceleration [cm/s2]\n0 1\n0.005 -20\n0.010 30\n")
+    rec = pound.motion.read_record(cols, units="cm/s2")
+    assert rec.dt == pytest.approx(0.005, rel=1e-12)
+    assert list(rec.accel) == [0.01, -0.2, 0.3]
+    # The same file through the command: its spectrum equals the module's of the array.
+    cli = cli_json(["motion", "spectrum", "--input", at2, "--periods=0.1, 0.2"])
+    r = pound.motion.response_spectrum(pound.motion.read_record(at2), periods=[0.1, 0.2])
+    assert list(r["psa_mps2"] / G) == cli["psa_g"]
+
+
 def test_response_spectrum_equals_the_command():
     cli = cli_json(["motion", "spectrum", "--input", ELCENTRO])
     r = pound.motion.response_spectrum(pound.motion.read_record(ELCENTRO))
