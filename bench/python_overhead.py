@@ -45,7 +45,7 @@ class OtherLoad:
     @staticmethod
     def _machine():
         with open("/proc/stat") as f:
-            user, nice, system, idle, iowait, irq, softirq, steal = map(int, f.readline().split()[1:9])
+            user, nice, system, _, _, irq, softirq, steal = map(int, f.readline().split()[1:9])
         return (user + nice + system + irq + softirq + steal) / os.sysconf("SC_CLK_TCK")
 
     @staticmethod

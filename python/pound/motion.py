@@ -36,7 +36,8 @@ def read_record(path, format=None, units=None, dt=None, check_pga=True, truncate
     check_pga: refuse a peak above 10 g or below 1e-6 g (wrong units or values).
     truncate: keep only the first seconds [s]; scale: a factor; baseline: baseline-correct.
 
-    Returns a Record (dt [s], accel [m/s2]), a pair that pound.simulate takes as motion=. Raises pound.Error naming the file and line.
+    Returns a Record (dt [s], accel [m/s2]), a pair that pound.simulate takes as motion=.
+    Raises pound.Error naming the file and line.
     """
     keys = {"input": os.fspath(path), "format": format, "units": units, "dt": dt,
             "truncate": truncate, "scale": scale, "baseline": None}

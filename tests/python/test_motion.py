@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 
 import pound
-from conftest import ELCENTRO, cli_json, run
+from conftest import ELCENTRO, cli_json
 
 G = 9.80665  # m/s2 (core/constants.hpp)
 

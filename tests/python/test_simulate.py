@@ -16,7 +16,8 @@ VARIANTS = [
     ("ch6-sdof-pair", {"integrator": "fixed", "dt": 1e-4}),
     ("ch8-yielding", {"building1__hysteresis": "imk", "building2__hysteresis": "imk"}),
     ("ch8-yielding", {"contact__model": "hc-linear", "contact__k_factor": 30}),
-    ("ch8-yielding", {"building1__hysteresis": "bouc-wen", "simulation__collapse_drift_ratio": 0.01}),
+    ("ch8-yielding", {"building1__hysteresis": "bouc-wen",
+                      "simulation__collapse_drift_ratio": 0.01}),
     ("ch8-five-three", {"contact__model": "nlve", "contact__k_factor": 30}),
     ("ch3-steel-frames", {"motion__scale": 2.5, "simulation__extra_time": 2}),
 ]
