@@ -103,6 +103,12 @@ def test_a_motion_array_replaces_the_record():
     assert twice == expected
     halved = pound.simulate(study("ch6-sdof-pair"), motion=(rec.dt, 0.5 * rec.accel))
     assert halved != expected
+    # A study without a record: the first 8 s of the record, read and cut by the module.
+    sections = {"building1": {"name": "T0.50", "masses": 100, "stiffnesses": 15791.37},
+                "building2": {"name": "T0.75", "masses": 100, "stiffnesses": 7018.39},
+                "contact": {"model": "hc-linear", "e": 0.8, "k_factor": 50}}
+    first8 = pound.motion.read_record(ELCENTRO, truncate=8)
+    assert pound.simulate(sections, motion=first8) == expected
 
 
 def test_the_note_on_unused_keys_is_a_warning_with_the_commands_text():
