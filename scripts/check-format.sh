@@ -9,5 +9,5 @@ while IFS= read -r f; do
     echo "not formatted: $f (run: clang-format -i $f)"
     bad=1
   fi
-done < <(find src tests bench fuzz -name '*.cpp' -o -name '*.hpp' | sort)
+done < <(find src tests bench fuzz python -name '*.cpp' -o -name '*.hpp' | sort)
 exit $bad

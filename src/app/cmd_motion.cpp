@@ -19,6 +19,7 @@
 #include "motion/motion_reader.hpp"
 #include "motion/response_spectrum.hpp"
 #include "motion/spectrum_factory.hpp"
+#include "motion/spectrum_options.hpp"
 
 namespace pound::app {
 namespace {
@@ -29,30 +30,6 @@ constexpr const char* kUsage =
     "  target    a design spectrum (EC8, NZS 1170.5, ASCE 7, Japan BSL 2000, table)\n"
     "  generate  spectrum-compatible motions (SIMQKE) into a folder\n"
     "'pound motion SUBCOMMAND --help' lists the options with units and defaults.\n";
-
-std::vector<OptionSpec> period_specs() {
-  return {
-      {"periods", "s", "", "periods, a list (default: 100 log-spaced from t-min to t-max)"},
-      {"t-min", "s", "0.05", "shortest period of the default list"},
-      {"t-max", "s", "4", "longest period of the default list"},
-      {"n-periods", "-", "100", "number of periods of the default list"},
-      {"json", "", "", "print one JSON object", true},
-  };
-}
-
-std::vector<double> periods_of(const Options& o) {
-  if (o.given("periods")) {
-    const auto p = o.get_doubles("periods");
-    for (double t : p)
-      if (!(t >= 0.0)) throw o.invalid("periods", "valid: periods >= 0 s");
-    return p;
-  }
-  const long n = o.get_int("n-periods");
-  if (n < 2) throw o.invalid("n-periods", "valid: 2 or more");
-  const double a = o.get_positive("t-min"), b = o.get_positive("t-max");
-  if (!(b > a)) throw o.invalid("t-max", "valid: t-max > t-min");
-  return log_spaced_periods(a, b, int(n));
-}
 
 void print_spectrum(const ResponseSpectrum& r, JsonWriter* json) {
   std::vector<double> psa_g, sa_g;
@@ -77,41 +54,14 @@ void print_spectrum(const ResponseSpectrum& r, JsonWriter* json) {
 // --- pound motion spectrum ------------------------------------------------------------------
 
 int run_spectrum(int argc, const char* const* argv) {
-  std::vector<OptionSpec> specs = {
-      {"input", "", "", "record file (PEER .AT2, one or two columns, fixed-width El Centro)"},
-      {"format", "", "automatic", "automatic, at2, columns or fixed-width"},
-      {"units", "", "", "units of the record when its header does not say: g, m/s2, cm/s2"},
-      {"dt", "s", "", "sample spacing of a one-column record"},
-      {"accept-any-pga", "", "",
-       "accept a record whose peak acceleration is above 10 g or below 1e-6 g (refused by "
-       "default as wrong units or values)",
-       true},
-      {"truncate", "s", "", "use only the first seconds of the record"},
-      {"scale", "-", "1", "factor applied to the record"},
-      {"baseline", "", "", "baseline-correct the record first", true},
-      {"damping", "-", "0.05", "damping ratio of the oscillators, in [0, 1)"},
-      {"substep", "-", "0.05", "largest step as a fraction of T (0: no sub-stepping)"},
-  };
-  for (auto& s : period_specs()) specs.push_back(s);
   Options o("motion spectrum", "Elastic response spectra of a record (Nigam & Jennings 1969).",
-            specs);
+            record_spectrum_option_specs());
   if (help_asked(o, argc, argv)) return 0;
-  MotionFileSpec spec;
-  spec.path = o.get_string("input");
-  spec.format = parse_motion_format(o.get_string("format"), o.where("format"));
-  if (o.given("units")) spec.units = parse_accel_units(o.get_string("units"), o.where("units"));
-  if (o.given("dt")) spec.dt = o.get_positive("dt");
-  spec.check_pga = !o.flag("accept-any-pga");
-  spec.check_pga_key = "--accept-any-pga";
-  GroundMotion m = read_motion(spec);
-  if (o.given("truncate")) m = truncate(m, o.get_positive("truncate"));
-  m = scale(m, o.get_double("scale"));
-  if (o.flag("baseline")) m = baseline_correct(m);
-  const double damping = o.get_double("damping");
-  if (!(damping >= 0.0 && damping < 1.0)) throw o.invalid("damping", "valid: 0 <= damping < 1");
-  ResponseSpectrumOptions ro;
-  ro.max_step_fraction = o.get_nonnegative("substep");
-  const ResponseSpectrum r = response_spectrum(m, periods_of(o), damping, ro);
+  const MotionFileSpec spec = record_file_spec(o, "--accept-any-pga");
+  const GroundMotion m = processed_record(o, read_motion(spec));
+  const SpectrumSettings ss = spectrum_settings_from_options(o);
+  const ResponseSpectrumOptions& ro = ss.options;
+  const ResponseSpectrum r = response_spectrum(m, periods_from_options(o), ss.damping, ro);
   if (o.flag("json")) {
     JsonWriter w;
     w.begin_object().field("input", spec.path).field("dt_s", m.dt);
@@ -122,7 +72,7 @@ int run_spectrum(int argc, const char* const* argv) {
     std::cout << w.str() << "\n";
   } else {
     std::printf("# %s: %zu samples at %g s, PGA %.5f g, damping %g, sub-steps <= %g T\n",
-                spec.path.c_str(), m.accel.size(), m.dt, m.pga() / kGravity, damping,
+                spec.path.c_str(), m.accel.size(), m.dt, m.pga() / kGravity, ss.damping,
                 ro.max_step_fraction);
     print_spectrum(r, nullptr);
   }
@@ -133,22 +83,11 @@ int run_spectrum(int argc, const char* const* argv) {
 
 int run_target(int argc, const char* const* argv) {
   std::vector<OptionSpec> specs = design_spectrum_option_specs();
-  for (auto& s : period_specs()) specs.push_back(s);
+  for (auto& s : period_option_specs()) specs.push_back(s);
   Options o("motion target", "A design spectrum at a list of periods.", specs);
   if (help_asked(o, argc, argv)) return 0;
   const auto target = make_design_spectrum(o);
-  ResponseSpectrum r;
-  r.damping = target->damping();
-  r.period = periods_of(o);
-  // A design spectrum gives the pseudo-acceleration; SD = Sa / w^2, PSV = Sa / w, and the
-  // absolute acceleration is taken equal to the pseudo-acceleration.
-  for (double T : r.period) {
-    const double sa = target->sa(T), w = T > 0.0 ? 2.0 * M_PI / T : 0.0;
-    r.psa.push_back(sa);
-    r.sa_abs.push_back(sa);
-    r.sd.push_back(w > 0.0 ? sa / (w * w) : 0.0);
-    r.psv.push_back(w > 0.0 ? sa / w : 0.0);
-  }
+  const ResponseSpectrum r = design_response_spectrum(*target, periods_from_options(o));
   if (o.flag("json")) {
     JsonWriter w;
     w.begin_object().field("spectrum", target->describe());

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "core/format.hpp"
 #include "io/number.hpp"
 #include "io/utf8_bom.hpp"
 
@@ -394,6 +395,27 @@ GroundMotion read_motion(const MotionFileSpec& spec) {
     default:
       return read_columns(spec, lines);
   }
+}
+
+GroundMotion motion_from_values(const std::string& name, double dt, std::vector<double> accel,
+                                bool check_pga, const std::string& check_pga_key) {
+  if (!(dt > 0.0) || !std::isfinite(dt))
+    throw InputError(name + ": sample spacing dt = " + format_number(dt, "%g") +
+                     " s; valid: a finite dt > 0 s");
+  if (accel.size() < 2)
+    throw InputError(name + ": the record holds " + std::to_string(accel.size()) +
+                     (accel.size() == 1 ? " value" : " values") + "; valid: at least 2 values");
+  for (std::size_t i = 0; i < accel.size(); ++i)
+    if (!std::isfinite(accel[i]))
+      throw InputError(name + ": value " + std::to_string(i) +
+                       " (t = " + format_number(double(i) * dt) + " s) is " +
+                       format_number(accel[i], "%g") + "; valid: finite accelerations in m/s2");
+  MotionFileSpec spec;
+  spec.path = name;
+  spec.check_pga = check_pga;
+  spec.check_pga_key = check_pga_key;
+  check_plausible_pga(spec, accel, Units{AccelUnits::m_per_s2, "(the values are in m/s2)"});
+  return GroundMotion{name, dt, std::move(accel)};
 }
 
 }  // namespace pound

@@ -15,6 +15,7 @@
 // they must agree. Every error is an InputError "FILE:LINE: what is wrong; what is valid".
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "motion/ground_motion.hpp"
 #include "motion/motion_processing.hpp"
@@ -52,6 +53,13 @@ inline constexpr double kMaxPlausiblePga = 10.0 * kGravity;
 /// dt, a value count different from the header's, an empty record, a directory, and (with
 /// check_pga) a peak acceleration that is not plausible.
 GroundMotion read_motion(const MotionFileSpec& spec);
+
+/// A record given as values instead of a file (the Python module's motion=(dt, ag)), checked as
+/// read_motion checks a file's: dt finite and > 0 [s], at least 2 values, every value finite
+/// [m/s^2] and, with check_pga, a plausible peak. `name` names the record in the messages (it
+/// becomes the motion's name), `check_pga_key` says how the caller turns the check off.
+GroundMotion motion_from_values(const std::string& name, double dt, std::vector<double> accel,
+                                bool check_pga, const std::string& check_pga_key);
 
 /// "g", "m/s2" (also "m/s^2"), "cm/s2" (also "cm/s^2", "gal"). Throws InputError
 /// "WHERE: 'text' is not a unit of acceleration; valid: g, m/s2, cm/s2".

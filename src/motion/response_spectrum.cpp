@@ -399,4 +399,21 @@ std::vector<double> log_spaced_periods(double t_min, double t_max, int n) {
   return t;
 }
 
+ResponseSpectrum design_response_spectrum(const DesignSpectrum& target,
+                                          const std::vector<double>& periods) {
+  ResponseSpectrum r;
+  r.damping = target.damping();
+  r.period = periods;
+  // A design spectrum gives the pseudo-acceleration; SD = Sa / w^2, PSV = Sa / w, and the
+  // absolute acceleration is taken equal to the pseudo-acceleration.
+  for (double T : r.period) {
+    const double sa = target.sa(T), w = T > 0.0 ? 2.0 * M_PI / T : 0.0;
+    r.psa.push_back(sa);
+    r.sa_abs.push_back(sa);
+    r.sd.push_back(w > 0.0 ? sa / (w * w) : 0.0);
+    r.psv.push_back(w > 0.0 ? sa / w : 0.0);
+  }
+  return r;
+}
+
 }  // namespace pound

@@ -14,6 +14,7 @@
 // sub-steps taken one after another, tests/motion/response_spectrum_test.cpp).
 #include <vector>
 
+#include "motion/design_spectrum.hpp"
 #include "motion/ground_motion.hpp"
 
 namespace pound {
@@ -110,6 +111,12 @@ class SpectrumCalculator {
 /// Response spectrum of a record at the given periods [s] and damping [-].
 ResponseSpectrum response_spectrum(const GroundMotion& motion, const std::vector<double>& periods,
                                    double damping, ResponseSpectrumOptions options = {});
+
+/// A design spectrum at the given periods [s] as a response spectrum: psa = sa_abs = its
+/// pseudo-acceleration Sa(T) [m/s^2], sd = Sa / w^2 [m], psv = Sa / w [m/s] (w = 2 pi / T; 0 at
+/// T = 0), at its damping (`pound motion target`).
+ResponseSpectrum design_response_spectrum(const DesignSpectrum& target,
+                                          const std::vector<double>& periods);
 
 /// n periods spaced evenly in log T from t_min to t_max [s] (both included), n >= 2.
 std::vector<double> log_spaced_periods(double t_min, double t_max, int n);

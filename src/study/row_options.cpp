@@ -383,6 +383,12 @@ GroundMotion motion_from_options(const Options& opt) {
   return process_record(opt, read_motion(motion_file_spec(opt, opt.get_path("motion.file"))));
 }
 
+GroundMotion record_from_values(const Options& opt, const std::string& name, double dt,
+                                std::vector<double> accel, const std::string& check_pga_key) {
+  const bool check = parse_bool(opt, "motion.check_pga");
+  return process_record(opt, motion_from_values(name, dt, std::move(accel), check, check_pga_key));
+}
+
 GroundMotion process_record(const Options& opt, GroundMotion g) {
   if (opt.given("motion.duration")) g = truncate(g, opt.get_positive("motion.duration"));
   const double s = opt.get_double("motion.scale");

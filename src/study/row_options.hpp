@@ -40,5 +40,10 @@ MotionFileSpec motion_file_spec(const Options& opt, const std::string& path);
 GroundMotion process_record(const Options& opt, GroundMotion g);
 /// Reads, truncates, scales and (optionally) baseline-corrects the record.
 GroundMotion motion_from_options(const Options& opt);
+/// A record given as values (dt [s], accel [m/s^2]) in place of the [motion] file, whose keys
+/// file, format, units and dt are then not read: checked as a file's values are
+/// (motion_from_values, with motion.check_pga), then processed by process_record().
+GroundMotion record_from_values(const Options& opt, const std::string& name, double dt,
+                                std::vector<double> accel, const std::string& check_pga_key);
 
 }  // namespace pound

@@ -1,0 +1,36 @@
+"""pound: probabilistic seismic pounding assessment of adjacent buildings, in Python.
+
+The engine of the ``pound`` program as a module, built from the same sources with the same
+numbers (docs/python.md):
+
+    import pound
+    r = pound.simulate("studies/ch8-five-three.ini", contact__model="hc-linear", pair1__gap=0.02)
+    r["buildings"][1]["floors"][2]["disp_amplification"]
+
+- simulate(study, motion=None, histories=False, **overrides): ``pound simulate --json``
+- impact(config=None, **keys): ``pound impact --json``
+- hysteresis(law, drifts, **keys): ``pound hysteresis`` on an array of drifts
+- motion: read_record, response_spectrum, design_spectrum, generate, log_spaced_periods
+- read_campaign(path, floors=False): a campaign result file as a pandas DataFrame
+- Error (a ValueError): bad input, with the command's one-line message;
+  NumericalError (a RuntimeError): a numerical failure
+
+Units are SI throughout. Calls release the GIL while the engine works, so that threads
+(concurrent.futures.ThreadPoolExecutor) run simulations on every core.
+"""
+
+from ._engine import Error, NumericalError, __version__, git_revision
+from ._simulate import UnusedKeyWarning, impact, simulate
+from ._hysteresis import hysteresis
+from ._campaign import read_campaign
+from . import motion
+
+Error.__module__ = "pound"
+NumericalError.__module__ = "pound"
+Error.__doc__ = ("Bad input: the message is the line the command prints after 'pound COMMAND: "
+                 "error: ' (what, where, and what would be valid). A ValueError.")
+NumericalError.__doc__ = ("A numerical failure of a simulation (the command's exit code 3): "
+                          "non-finite state, step-size underflow, chatter. A RuntimeError.")
+
+__all__ = ["simulate", "impact", "hysteresis", "read_campaign", "motion", "Error",
+           "NumericalError", "UnusedKeyWarning", "__version__", "git_revision"]

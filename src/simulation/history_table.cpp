@@ -1,0 +1,47 @@
+#include "simulation/history_table.hpp"
+
+#include <cmath>
+
+namespace pound {
+
+HistoryLayout history_layout(const BuildingRow& row, const RowSimulation& sim) {
+  HistoryLayout l;
+  for (std::size_t b = 0; b < row.buildings.size(); ++b)
+    for (int j = 0; j < row.buildings[b].floors(); ++j) {
+      l.dof_building.push_back(static_cast<int>(b));
+      l.dof_floor.push_back(j + 1);
+    }
+  for (const auto& s : sim.sites) {
+    l.site_pair.push_back(s.pair);
+    l.site_floor.push_back(s.floor);
+  }
+  return l;
+}
+
+HistoryTable history_table(const History& h, const HistoryLayout& layout) {
+  HistoryTable t;
+  t.steps = h.t.size();
+  t.dofs = t.steps ? static_cast<std::size_t>(h.u[0].size()) : 0;
+  t.sites = t.steps ? static_cast<std::size_t>(h.force[0].size()) : 0;
+  const std::size_t n = t.steps * t.dofs;
+  t.time = h.t;
+  t.displacement.resize(n);
+  t.abs_acceleration.resize(n);
+  t.storey_shear.resize(n);
+  t.storey_drift.resize(n);
+  t.contact_force.resize(t.steps * t.sites);
+  for (std::size_t s = 0; s < t.steps; ++s) {
+    for (std::size_t i = 0; i < t.dofs; ++i) {
+      const std::size_t k = s * t.dofs + i;
+      t.displacement[k] = h.u[s](i);
+      t.abs_acceleration[k] = h.a_abs[s](i);
+      t.storey_shear[k] = s < h.shear.size() ? h.shear[s](i) : std::nan("");
+      const bool first_floor = i >= layout.dof_floor.size() || layout.dof_floor[i] == 1;
+      t.storey_drift[k] = first_floor ? h.u[s](i) : h.u[s](i) - h.u[s](i - 1);
+    }
+    for (std::size_t i = 0; i < t.sites; ++i) t.contact_force[s * t.sites + i] = h.force[s](i);
+  }
+  return t;
+}
+
+}  // namespace pound

@@ -1,0 +1,36 @@
+#pragma once
+// The time histories of a row simulation as flat arrays: what `pound simulate --histories`
+// writes (simulation/history_file.hpp) and what the Python module returns with histories=True.
+// Rows are the recorded instants (every accepted step and event), columns the floor DOFs (the
+// floors of building 1, floor 1 first, then building 2, ...) or the contact sites.
+#include <cstddef>
+#include <vector>
+
+#include "simulation/simulate_row.hpp"
+#include "structure/building_row.hpp"
+
+namespace pound {
+
+/// Which building and floor each DOF column is, which pair and floor each site column.
+struct HistoryLayout {
+  std::vector<int> dof_building;  ///< 0-based building of each DOF column
+  std::vector<int> dof_floor;     ///< 1-based floor of each DOF column
+  std::vector<int> site_pair;     ///< 0-based pair of each site column
+  std::vector<int> site_floor;    ///< 1-based floor of each site column
+};
+HistoryLayout history_layout(const BuildingRow& row, const RowSimulation& sim);
+
+/// One run's histories, row-major [steps x dofs] or [steps x sites].
+struct HistoryTable {
+  std::size_t steps = 0, dofs = 0, sites = 0;
+  std::vector<double> time;              ///< [steps], s
+  std::vector<double> displacement;      ///< floor displacement relative to the ground, m
+  std::vector<double> abs_acceleration;  ///< absolute floor acceleration, m/s^2
+  std::vector<double> contact_force;     ///< [steps x sites], N
+  std::vector<double> storey_shear;      ///< shear of the storey below each floor, N (NaN when
+                                         ///< the run kept none)
+  std::vector<double> storey_drift;      ///< drift of that storey, u_j - u_{j-1} (u_0 = 0), m
+};
+HistoryTable history_table(const History& h, const HistoryLayout& layout);
+
+}  // namespace pound

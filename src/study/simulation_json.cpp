@@ -1,0 +1,119 @@
+#include "study/simulation_json.hpp"
+
+#include "io/json.hpp"
+
+namespace pound {
+namespace {
+
+// Per building: index, name, collapse, and its floors.
+void write_buildings(JsonWriter& w, const RowSimulation& s, const BuildingRow& row) {
+  for (std::size_t b = 0; b < row.buildings.size(); ++b) {
+    w.begin_object().field("index", static_cast<long>(b)).field("name", row.buildings[b].name);
+    // Collapse (issue 23): in each run, and when and where.
+    auto collapse_of = [&](const std::vector<BuildingCollapse>& c) {
+      return b < c.size() ? c[b] : BuildingCollapse{};
+    };
+    const BuildingCollapse cp = collapse_of(s.collapse_pounding), cf = collapse_of(s.collapse_free);
+    w.field("collapsed_pounding", cp.collapsed).field("collapsed_free", cf.collapsed);
+    // {"pounding": value, "free": value}, null for a building standing in that run.
+    auto per_run = [&](const char* key, auto value) {
+      w.key(key).begin_object();
+      for (const auto* c : {&cp, &cf}) {
+        w.key(c == &cp ? "pounding" : "free");
+        if (c->collapsed)
+          w.value(value(*c));
+        else
+          w.null();
+      }
+      w.end_object();
+    };
+    per_run("collapse_time_s", [](const BuildingCollapse& c) { return c.time; });
+    per_run("collapse_storey", [](const BuildingCollapse& c) { return c.storey; });
+    w.key("floors").begin_array();
+    for (const auto& f : s.floors) {
+      if (f.building != static_cast<int>(b)) continue;
+      w.begin_object()
+          .field("floor", f.floor)
+          .field("peak_disp_pounding_m", f.disp_pounding)
+          .field("peak_disp_free_m", f.disp_free)
+          .field("disp_amplification", f.disp_amplification)
+          .field("peak_drift_ratio_pounding", f.drift_ratio_pounding)
+          .field("peak_drift_ratio_free", f.drift_ratio_free)
+          .field("drift_amplification", f.drift_amplification)
+          .field("peak_abs_accel_pounding_mps2", f.accel_pounding)
+          .field("peak_abs_accel_free_mps2", f.accel_free)
+          .field("residual_drift_ratio_pounding", f.residual_drift_ratio_pounding)
+          .field("residual_drift_ratio_free", f.residual_drift_ratio_free)
+          .field("ductility_pounding", f.ductility_pounding)
+          .field("ductility_free", f.ductility_free)
+          .field("hysteretic_energy_pounding_J", f.hysteretic_energy_pounding)
+          .field("hysteretic_energy_free_J", f.hysteretic_energy_free)
+          .end_object();
+    }
+    w.end_array().end_object();
+  }
+  w.end_array();
+}
+
+}  // namespace
+
+std::string simulation_json(const BuildingRow& row, const SimulationRun& run) {
+  const RowSimulation& s = run.sim;
+  const std::vector<sears::SlabPeaks>& slabs = run.slabs;
+  const std::vector<sears::SiteContacts>& phases = run.phases;
+  JsonWriter w;
+  w.begin_object().key("buildings").begin_array();
+  write_buildings(w, s, row);
+  // The pounding run stops at its first collapse (null: it ran to the end).
+  w.key("pounding_stopped_at_s");
+  if (s.pounding.stopped)
+    w.value(s.pounding.t_end);
+  else
+    w.null();
+  w.key("contacts").begin_array();
+  for (std::size_t k = 0; k < s.sites.size(); ++k) {
+    const auto& c = s.sites[k];
+    w.begin_object()
+        .field("pair", c.pair)
+        .field("floor", c.floor)
+        .field("impacts", c.impacts)
+        .field("peak_force_N", c.peak_force)
+        .field("peak_penetration_m", c.peak_penetration)
+        .field("first_contact_s", c.impacts ? c.first_contact : -1.0);
+    if (k < phases.size())  // damped Sears: contact phases above 1 % of the site's peak force
+      w.field("significant_impacts", phases[k].impacts)
+          .field("first_impact_s", phases[k].first_impact_s);
+    w.end_object();
+  }
+  w.end_array();
+  if (!slabs.empty()) {
+    // Damped Sears model: peak accelerations of the colliding slabs.
+    w.key("slabs").begin_array();
+    for (const auto& p : slabs)
+      w.begin_object()
+          .field("building", p.building)
+          .field("floor", p.floor)
+          .field("peak_face_accel_mps2", p.face_accel)
+          .field("peak_centre_accel_mps2", p.centre_accel)
+          .end_object();
+    w.end_array();
+  }
+  // Energy balance of each run [J] (RowResult::energy).
+  for (const auto* r : {&s.pounding, &s.free}) {
+    const EnergyBalance& e = r->energy;
+    w.key(r == &s.pounding ? "energy_pounding" : "energy_free")
+        .begin_object()
+        .field("input_J", e.input)
+        .field("kinetic_J", e.kinetic)
+        .field("strain_J", e.strain)
+        .field("damping_J", e.damping)
+        .field("hysteretic_J", e.hysteretic)
+        .field("contact_J", e.contact)
+        .field("residual_J", e.residual())
+        .end_object();
+  }
+  w.end_object();
+  return w.str();
+}
+
+}  // namespace pound

@@ -1,0 +1,91 @@
+#include "study/simulation_run.hpp"
+
+#include <utility>
+
+#include "contact/registry.hpp"
+#include "study/row_options.hpp"
+#include "study/sears_row_options.hpp"
+
+namespace pound {
+
+const char* const kSimulateSummary =
+    "Buildings in a row under a ground motion, run with and without pounding.";
+
+std::vector<OptionSpec> simulate_option_specs() {
+  auto specs = row_and_sears_option_specs();
+  specs.push_back({"json", "", "", "print one JSON object", true});
+  specs.push_back({"histories", "", "", "write time histories to this HDF5 file"});
+  return specs;
+}
+
+namespace {
+
+// The given keys that the chosen model does not read, as "where" texts: the damped Sears
+// model ignores the lumped contact law and its integrator keys, a lumped model the sears keys.
+// A value meant for the other model must not pass for one that was used.
+std::vector<std::string> keys_unused_by_model(const Options& opt, bool is_sears) {
+  const auto sears_specs = sears_row_option_specs();
+  std::vector<std::string> unused;
+  for (const auto& key : opt.given_keys()) {
+    bool sears_only = false;
+    for (const auto& s : sears_specs) sears_only = sears_only || Options::matches(s.key, key);
+    const bool lumped_only = (key.rfind("contact.", 0) == 0 && key != "contact.model") ||
+                             key.rfind("integrator.", 0) == 0;
+    if (is_sears ? lumped_only : sears_only) unused.push_back(opt.where(key));
+  }
+  return unused;
+}
+
+// The record: the study's [motion] file, or the given values, then the [motion] processing.
+GroundMotion record_of(const Options& opt, const RecordValues* record) {
+  if (!record) return motion_from_options(opt);
+  return record_from_values(opt, record->name, record->dt, record->accel, record->check_pga_key);
+}
+
+}  // namespace
+
+SimulationSetup prepare_simulation(const Options& opt, const RecordValues* record) {
+  SimulationSetup s;
+  s.row = row_from_options(opt);
+  s.is_sears = is_sears_model(opt.get_string("contact.model"));
+  if (s.is_sears) {
+    s.contact.model = kSearsModelName;
+    s.sears_model = sears_row_from_options(opt, s.row);
+  } else {
+    s.contact = contact_from_options(opt, s.row);
+  }
+  s.integrator = integrator_from_options(opt);
+  s.motion = record_of(opt, record);
+  s.options.extra_time = opt.get_nonnegative("simulation.extra_time");
+  s.options.record_history = opt.given("histories");
+  s.options.track_energy = true;
+  s.options.collapse_drift_ratio = opt.get_positive("simulation.collapse_drift_ratio");
+  if (s.is_sears) {
+    // The step limits need the motion: a too large --dt fails here, before any output.
+    const std::string dt_key = opt.given("dt") ? "dt" : "sears.dt";
+    try {
+      sears::sears_row_steps(s.row, &s.motion, s.sears_model);
+    } catch (const InputError& e) {
+      if (!opt.given(dt_key)) throw;
+      throw opt.invalid(dt_key, e.what());
+    }
+  }
+  s.unused_keys = keys_unused_by_model(opt, s.is_sears);
+  return s;
+}
+
+SimulationRun run_simulation(const SimulationSetup& setup) {
+  SimulationRun r;
+  if (setup.is_sears) {
+    auto ss = sears::simulate_sears_row(setup.row, setup.motion, setup.sears_model, setup.options);
+    r.sim = std::move(ss.base);
+    r.slabs = std::move(ss.slabs);
+    r.phases = std::move(ss.contacts);
+    r.sears_dt_s = ss.dt_s;
+  } else {
+    r.sim = simulate_row(setup.row, setup.motion, setup.contact, setup.integrator, setup.options);
+  }
+  return r;
+}
+
+}  // namespace pound
