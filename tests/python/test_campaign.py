@@ -60,7 +60,11 @@ def test_one_row_per_sample_with_the_files_numbers(campaign):
     assert np.array_equal(df["pair1.approach_free"], r["approach_free"][:, 0, 0])
     assert df.attrs["samples"] == SAMPLES and df.attrs["seed"] == "7"
     assert df.attrs["building_names"] == "T0.50, T0.75"
-    assert not any(c.startswith("building1.collapsed") for c in df.columns)
+    with h5py.File(campaign, "r") as f:  # a campaign of issue 23 or later: collapse per building
+        for key in ("collapsed_pounding", "collapsed_free", "collapse_time_pounding"):
+            for b in (0, 1):
+                assert np.array_equal(df[f"building{b + 1}.{key}"], f[f"response/{key}"][:, b],
+                                      equal_nan=True), key
 
 
 def test_floors_give_a_column_per_floor_of_each_building(campaign):
@@ -76,13 +80,21 @@ def test_floors_give_a_column_per_floor_of_each_building(campaign):
 def test_collapse_where_the_file_has_it(campaign, tmp_path):
     copy = tmp_path / "collapse.h5"
     shutil.copy(campaign, copy)
-    flags = np.zeros((SAMPLES, 2), dtype=np.uint8)
+    flags = np.zeros((SAMPLES, 2))
     flags[3, 1] = 1
     with h5py.File(copy, "r+") as f:
-        f["response/collapsed_pounding"] = flags
+        f["response/collapsed_pounding"][...] = flags
     df = pound.read_campaign(copy)
     assert list(df["building2.collapsed_pounding"]) == list(flags[:, 1])
     assert df["building1.collapsed_pounding"].sum() == 0
+    # A file written before issue 23 has no collapse arrays, and no such columns.
+    older = tmp_path / "older.h5"
+    shutil.copy(campaign, older)
+    with h5py.File(older, "r+") as f:
+        for key in ("collapsed_pounding", "collapsed_free", "collapse_time_pounding",
+                    "collapse_time_free"):
+            del f[f"response/{key}"]
+    assert not any("collapse" in c for c in pound.read_campaign(older).columns)
 
 
 def test_files_that_are_not_campaigns(tmp_path):
