@@ -6,9 +6,10 @@
 // the command's Options, so that validation and messages are the command's. The pure-Python
 // part (python/pound/*.py) builds those arguments and shapes the results.
 //
-// Every call releases the GIL while the engine works (no Python object is touched then) and runs
-// in the C locale (CLocale). The engine keeps no mutable global state (docs/python.md, "Threads")
-// and these bindings make no HDF5 call, so calls from several threads run at once.
+// Every call runs in the C locale (CLocale). The simulations, motions and storey laws release
+// the GIL while the engine works (no Python object is touched then): the engine keeps no mutable
+// global state (docs/python.md, "Threads") and they make no HDF5 call, so calls from several
+// threads run at once. fragility and risk read HDF5 and keep the GIL (analysis.cpp).
 #include <locale.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -58,5 +59,6 @@ std::vector<double> to_vector(const DoubleArray& a, const std::string& what);
 void bind_simulate(py::module_& m);    // simulate, impact (simulate.cpp)
 void bind_motion(py::module_& m);      // records, spectra, generation (motion.cpp)
 void bind_hysteresis(py::module_& m);  // the storey-law tester (hysteresis.cpp)
+void bind_analysis(py::module_& m);    // fragility and risk of a campaign file (analysis.cpp)
 
 }  // namespace pound::python

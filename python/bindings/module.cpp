@@ -77,4 +77,5 @@ PYBIND11_MODULE(_engine, m) {
   pound::python::bind_simulate(m);
   pound::python::bind_motion(m);
   pound::python::bind_hysteresis(m);
+  pound::python::bind_analysis(m);
 }

@@ -12,17 +12,21 @@ numbers (docs/python.md):
 - hysteresis(law, drifts, **keys): ``pound hysteresis`` on an array of drifts
 - motion: read_record, response_spectrum, design_spectrum, generate, log_spaced_periods
 - read_campaign(path, floors=False): a campaign result file as a pandas DataFrame
+- fragility(campaign, out=None, **options): ``pound fragility --json``
+- risk(campaign, hazard, out=None, **options): ``pound risk --json``
 - Error (a ValueError): bad input, with the command's one-line message;
   NumericalError (a RuntimeError): a numerical failure
 
-Units are SI throughout. Calls release the GIL while the engine works, so that threads
-(concurrent.futures.ThreadPoolExecutor) run simulations on every core.
+Units are SI throughout. Simulations release the GIL while the engine works, so that threads
+(concurrent.futures.ThreadPoolExecutor) run them on every core; fragility and risk, which read
+HDF5, keep it.
 """
 
 from ._engine import Error, NumericalError, __version__, git_revision
 from ._simulate import UnusedKeyWarning, impact, simulate
 from ._hysteresis import hysteresis
 from ._campaign import read_campaign
+from ._analysis import fragility, risk
 from . import motion
 
 Error.__module__ = "pound"
@@ -32,5 +36,5 @@ Error.__doc__ = ("Bad input: the message is the line the command prints after 'p
 NumericalError.__doc__ = ("A numerical failure of a simulation (the command's exit code 3): "
                           "non-finite state, step-size underflow, chatter. A RuntimeError.")
 
-__all__ = ["simulate", "impact", "hysteresis", "read_campaign", "motion", "Error",
-           "NumericalError", "UnusedKeyWarning", "__version__", "git_revision"]
+__all__ = ["simulate", "impact", "hysteresis", "read_campaign", "fragility", "risk", "motion",
+           "Error", "NumericalError", "UnusedKeyWarning", "__version__", "git_revision"]

@@ -7,7 +7,6 @@
 // reports; the campaign file is opened read-only, the results go to DIR (default RUN-risk/).
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -23,31 +22,10 @@
 #include "risk/hazard_curve.hpp"
 #include "risk/pounding_risk.hpp"
 #include "risk/risk_files.hpp"
+#include "risk/risk_run.hpp"
 
 namespace pound::app {
 namespace {
-
-namespace fs = std::filesystem;
-
-std::vector<OptionSpec> specs() {
-  return {
-      {"input", "", "", "campaign result file (HDF5) of 'pound campaign' or 'pound merge'"},
-      {"hazard", "", "",
-       "hazard curve CSV: header 'pga [g], annual_rate [1/yr]' (or sa(T), m/s2), then points"},
-      {"gaps", "m", "",
-       "gaps to evaluate, increasing, >= 0 (default: 40 from 0 to the largest "
-       "free-run approach of the pair)"},
-      {"years", "yr", "50", "exposure time T of the probabilities 1 - exp(-nu T)"},
-      {"target-probability", "-", "0.02",
-       "probability of pounding in T years that the gap for the target may not exceed, in (0, 1)"},
-      {"design-im", "g", "",
-       "intensity of the code rules (default: the hazard's 475-year intensity, 10 % in 50 years)"},
-      {"out", "", "", "output folder (default: RUN-risk/ beside RUN.h5)"},
-      {"replicates", "-", "1000", "bootstrap replicates of the 90 % bands"},
-      {"seed", "-", "1", "seed of the bootstrap draws"},
-      {"json", "", "", "print one JSON object instead of the tables", true},
-  };
-}
 
 std::string pair_name(const CampaignData& c, std::size_t p) {
   return c.building_name(p) + " | " + c.building_name(p + 1);
@@ -199,170 +177,17 @@ void print_text(const CampaignData& c, const HazardCurve& h, const RiskReport& r
   std::printf("\n");
 }
 
-void print_json(const CampaignData& c, const HazardCurve& h, const RiskReport& r,
-                const RiskSettings& s, const std::string& dir,
-                const std::vector<std::string>& files) {
-  JsonWriter w;
-  w.begin_object();
-  w.field("input", c.path).field("hazard", h.source).field("out", dir);
-  w.field("intensity_measure", c.intensity_measure).field("im_units", "m/s^2");
-  w.field("hazard_rule", h.extrapolation_rule());
-  w.field("years", s.years).field("target_probability", s.target_probability);
-  w.field("design_im", r.design_im)
-      .field("design_im_source", r.design_im_given ? "--design-im" : "hazard 475-year");
-  w.field("samples", long(r.samples)).field("failed", long(r.failed)).field("used", long(r.used));
-  w.field("bootstrap_replicates", s.bootstrap.replicates);
-  w.key("pairs").begin_array();
-  for (const auto& p : r.pairs) {
-    w.begin_object().field("pair", long(p.pair + 1));
-    std::vector<double> gaps, maf, prob;
-    w.key("status").begin_array();
-    for (const auto& e : p.grid) {
-      gaps.push_back(e.gap);
-      maf.push_back(e.maf);
-      prob.push_back(e.probability);
-      w.value(to_string(e.fit.status));
-    }
-    w.end_array();
-    w.key("gaps_m").array(gaps);
-    w.key("maf_pounding").array(maf);
-    w.key("probability_pounding").array(prob);
-    w.key("gap_for_target_m");
-    std::isfinite(p.gap_for_target) ? w.value(p.gap_for_target) : w.null();
-    w.field("gap_for_target_status", to_string(p.target_status));
-    w.key("gap_for_target_band_m");
-    if (std::isfinite(p.gap_band.lo) && std::isfinite(p.gap_band.hi))
-      w.array({p.gap_band.lo, p.gap_band.hi});
-    else
-      w.null();
-    w.field("gap_band_finite", long(p.gap_band.finite));
-    w.field("rho", p.rho);
-    w.key("code_rules").begin_array();
-    for (const auto& k : p.rules)
-      w.begin_object()
-          .field("rule", to_string(k.rule))
-          .field("gap_m", k.gap)
-          .field("level", long(k.level))
-          .field("status", to_string(k.estimate.fit.status))
-          .field("maf_pounding", k.estimate.maf)
-          .field("probability_pounding", k.estimate.probability)
-          .end_object();
-    w.end_array();
-    w.end_object();
-  }
-  w.end_array();
-  w.key("damage").begin_array();
-  for (const auto& d : r.damage)
-    w.begin_object()
-        .field("model", d.model.empty() ? std::string("all") : d.model)
-        .field("building", long(d.building))
-        .field("edp", to_string(d.edp))
-        .field("limit", d.limit)
-        .field("status_pounding", to_string(d.pounding.status))
-        .field("status_free", to_string(d.free.status))
-        .field("maf_pounding", d.maf_pounding)
-        .field("maf_free", d.maf_free)
-        .field("ratio", d.ratio)
-        .field("free_same_analyses", d.same_analyses)
-        .field("maf_pounding_kept", d.maf_pounding_kept)
-        .end_object();
-  w.end_array();
-  w.key("collapse").begin_array();
-  for (const auto& k : r.collapse)
-    w.begin_object()
-        .field("model", k.model.empty() ? std::string("all") : k.model)
-        .field("building", long(k.building))
-        .field("status_pounding", to_string(k.pounding.status))
-        .field("status_free", to_string(k.free.status))
-        .field("theta_pounding", k.theta_pounding)
-        .field("free_same_analyses", k.same_analyses)
-        .field("theta_free", k.free.finite() ? k.free.theta : NAN)
-        .field("maf_pounding", k.maf_pounding)
-        .field("maf_free", k.maf_free)
-        .field("ratio", k.ratio)
-        .field("probability_pounding", k.probability_pounding)
-        .field("probability_free", k.probability_free)
-        .field("cmr_pounding", k.cmr_pounding)
-        .field("cmr_free", k.cmr_free)
-        .end_object();
-  w.end_array();
-  w.key("notes").begin_array();
-  for (const auto& n : r.notes) w.value(n);
-  w.end_array();
-  w.key("files").begin_array();
-  for (const auto& f : files) w.value(f);
-  w.end_array();
-  w.end_object();
-  std::cout << w.str() << "\n";
-}
-
 }  // namespace
 
 int run_risk(int argc, const char* const* argv) {
-  Options opt("risk",
-              "Pounding risk at every gap from a campaign and a site's hazard curve: mean annual "
-              "frequency, probability in T years, the gap for a target, code rules, damage limits.",
-              specs());
+  Options opt("risk", kRiskSummary, risk_option_specs());
   if (help_asked(opt, argc, argv)) return 0;
-  if (!opt.given("input") || !opt.given("hazard"))
-    throw InputError("command line: --input RUN.h5 and --hazard HAZARD.csv are required");
-  RiskSettings s;
-  s.years = opt.get_double("years");
-  if (!(s.years > 0)) throw opt.invalid("years", "valid: a number of years > 0");
-  s.target_probability = opt.get_double("target-probability");
-  if (!(s.target_probability > 0 && s.target_probability < 1))
-    throw opt.invalid("target-probability", "valid: a probability in (0, 1)");
-  if (opt.given("gaps")) {
-    s.gaps = opt.get_doubles("gaps");
-    for (std::size_t i = 0; i < s.gaps.size(); ++i)
-      if (!(s.gaps[i] >= 0) || (i > 0 && !(s.gaps[i] > s.gaps[i - 1])))
-        throw opt.invalid("gaps", "valid: increasing gaps >= 0 in m");
-    if (s.gaps.empty()) throw opt.invalid("gaps", "valid: at least one gap >= 0 in m");
-  }
-  if (opt.given("design-im")) {
-    s.design_im = opt.get_double("design-im") * kGravity;
-    if (!(s.design_im > 0)) throw opt.invalid("design-im", "valid: an intensity > 0 in g");
-  }
-  const long reps = opt.get_int("replicates");
-  if (reps < 10 || reps > 100000) throw opt.invalid("replicates", "valid: 10 to 100000");
-  const long seed = opt.get_int("seed");
-  if (seed < 0) throw opt.invalid("seed", "valid: a whole number >= 0");
-  s.bootstrap.replicates = int(reps);
-  s.bootstrap.seed = std::uint64_t(seed);
-
-  // Everything is read and computed before any file is written.
-  const std::string input = opt.get_path("input");
-  const CampaignData c = read_campaign(input);
-  const HazardCurve h = read_hazard_curve(opt.get_path("hazard"));
-  check_hazard_measure(c, h);
-  std::vector<BuildingMode> modes;
-  try {
-    modes = study_first_modes(c);
-  } catch (const InputError&) {
-    modes.clear();  // the code rules say they could not be computed
-  }
-  const RiskReport r = analyse_risk(c, h, s, modes, study_fragility_limits(c));
-
-  std::string dir;
-  if (opt.given("out")) {
-    dir = opt.get_path("out");
-  } else {
-    fs::path p(input);
-    dir = (p.parent_path() / (p.stem().string() + "-risk")).string();
-  }
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec || !fs::is_directory(dir))
-    throw InputError(opt.where("out") + ": cannot create the folder " + dir);
-  for (const char* name : {"risk_gaps.csv", "code_rules.csv", "damage_maf.csv", "risk.h5"})
-    if (fs::equivalent(fs::path(dir) / name, input, ec))
-      throw InputError(opt.where("out") + ": " + dir + "/" + name +
-                       " is the campaign file; choose another output folder");
-  const auto files = write_risk_files(dir, c, h, r, RiskRunInfo{input, opt.resolved_text(), s});
+  const RiskRun run = run_risk_analysis(opt, true);
   if (opt.flag("json"))
-    print_json(c, h, r, s, dir, files);
+    std::cout << risk_json(run) << "\n";
   else
-    print_text(c, h, r, s, modes, files);
+    print_text(run.data, run.hazard, run.report, run.settings, run.modes, run.files);
+  const RiskReport& r = run.report;
   if (r.failed)
     std::fprintf(stderr, "risk: %zu of %zu samples failed and are excluded\n", r.failed, r.samples);
   return 0;
