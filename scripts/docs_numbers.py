@@ -197,9 +197,12 @@ def betas_table(work):
 
 
 def collapse_table(work):
-    """Collapse fragility per building with and without pounding, pooled and per model."""
-    out = ["| building | analyses | with pounding: theta [g] / beta | without: theta [g] / beta | "
-           "ratio [90 % band] | collapsed with / without | left out (censored) |",
+    """Collapse fragility per building with and without pounding, pooled and per model: the
+    pounding curve (its censored analyses left out), the free curve of all the analyses, the
+    free median of the pounding curve's analyses, and the shift (like for like)."""
+    out = ["| building | analyses with pounding (censored) | with pounding: theta [g] / beta | "
+           "without, all: theta [g] / beta | without, same analyses: theta [g] | "
+           "shift [90 % band] | collapsed with / without |",
            "|---|---|---|---|---|---|---|"]
     shifts = {(r["building_name"], r.get("model", "all")): r
               for r in read_csv(os.path.join(work, "default-fragility", "shift.csv"))
@@ -214,8 +217,11 @@ def collapse_table(work):
             ratio = (f"{float(sh['ratio']):.3f} [{float(sh['ratio_ci90_lo']):.3f}, "
                      f"{float(sh['ratio_ci90_hi']):.3f}]" if sh["ratio"] else "-")
             who = b if model == "all" else f"{b} ({model})"
-            out.append(f"| {who} | {p['analyses']} | {theta_beta(p)} | {theta_beta(f)} | {ratio} | "
-                       f"{p['exceedances']} / {f['exceedances']} | {p['left_out']} |")
+            same = (f"{float(sh['theta_free_mps2']) / G:.3f}" if sh.get("theta_free_mps2")
+                    else "-")
+            out.append(f"| {who} | {p['analyses']} ({p['left_out']}) | {theta_beta(p)} | "
+                       f"{theta_beta(f)} | {same} | {ratio} | "
+                       f"{p['exceedances']} / {f['exceedances']} |")
     return "\n".join(out)
 
 
@@ -447,7 +453,7 @@ def collapse_risk_table(work):
     text = open(os.path.join(work, "default-risk-mce.txt")).read().splitlines()
     start = next(i for i, line in enumerate(text) if line.startswith("Collapse:"))
     for line in text[start + 2:]:
-        f = line.split()
+        f = line.replace(" *", "").split()  # * like for like (a neighbour's collapse censored)
         if len(f) != 9:
             break
         out.append(f"| {f[0]} | {f[1]} | {f[2]} | {f[3]} | {f[4]} | {f[5]} / {f[6]} | "

@@ -61,9 +61,24 @@ def log_axis(ax, which="x"):
         lambda x, _: f"{x:g}" if f"{x:.0e}"[0] in "235" else ""))
 
 
-def fragility_panel(ax, curves, obs, pooled, xs):
+def same_analyses_fit(shifts, building, edp, limit, model):
+    """(theta [g], beta) of the free runs of the analyses the pounding curve keeps, when a
+    neighbour's collapse censored some of them (shift.csv's free_same_analyses = 1), else None."""
+    for s in shifts:
+        if (int(s["building"]) == building and s["edp"] == edp and model_of(s) == model
+                and abs(number(s["limit"]) - limit) <= 1e-12 * max(1.0, abs(limit))
+                and s.get("free_same_analyses") == "1"):
+            th, be = number(s.get("theta_free_mps2")) / G, number(s.get("beta_free"))
+            if np.isfinite(th) and np.isfinite(be) and th > 0 and be > 0:
+                return th, be
+    return None
+
+
+def fragility_panel(ax, curves, obs, pooled, xs, same=None):
     """One building: the curves with (solid, red) and without (dashed, blue) pounding, their
-    observed fractions, and the pooled curves in grey when this is a model's panel."""
+    observed fractions, and the pooled curves in grey when this is a model's panel; `same`,
+    (theta, beta) of the free runs of the pounding curve's analyses (dotted blue), where a
+    neighbour's collapse censored some: the curve to compare the pounding one with."""
     for r in pooled:
         th, be = number(r["theta_mps2"]) / G, number(r["beta"])
         if np.isfinite(th) and np.isfinite(be) and th > 0 and be > 0:
@@ -81,9 +96,15 @@ def fragility_panel(ax, curves, obs, pooled, xs):
             else:
                 ax.plot([], [], style, color=color, lw=1.0,
                         label=f"{case}: no estimate ({r.get('status', '?').replace('_', ' ')})")
+        if not pounding and same is not None:
+            ax.plot(xs, lognormal_cdf(xs, *same), ":", color=color, lw=1.8,
+                    label=f"without, the pounding curve's analyses: θ = {same[0]:.3g} g, "
+                          f"β = {same[1]:.2f}")
         key = "exceed_pounding" if pounding else "exceed_free"
-        pts = [(number(o["im_mps2"]) / G, number(o[key]) / number(o["n"])) for o in obs
-               if number(o["n"]) > 0 and o.get(key, "") != ""]
+        # The free runs' own count (n_free; a file before it had the pounding count only).
+        n_key = "n" if pounding or not obs or "n_free" not in obs[0] else "n_free"
+        pts = [(number(o["im_mps2"]) / G, number(o[key]) / number(o[n_key])) for o in obs
+               if number(o[n_key]) > 0 and o.get(key, "") != ""]
         if pts:
             x, y = zip(*pts)
             ax.plot(x, y, "o" if pounding else "s", color=color, ms=5, ls="none",
@@ -101,6 +122,7 @@ def plot_collapse_fragility(frag_dir, out, measure):
     obs_path = os.path.join(frag_dir, "observations.csv")
     observed = [o for o in read_csv(obs_path) if o.get("edp") == "collapse"]
     design = "IM bins" if observed and "bin" in observed[0] else "stripes"
+    shifts = read_csv(os.path.join(frag_dir, "shift.csv"))
     models = ["all"] + sorted({model_of(r) for r in rows} - {"all"})
     buildings = sorted({int(r["building"]) for r in rows})
     names = {int(r["building"]): r.get("building_name", "") for r in rows}
@@ -118,7 +140,7 @@ def plot_collapse_fragility(frag_dir, out, measure):
                             [o for o in observed if int(o["building"]) == b and model_of(o) == m],
                             [] if m == "all" else
                             [r for r in rows if int(r["building"]) == b and model_of(r) == "all"],
-                            xs)
+                            xs, same_analyses_fit(shifts, b, "collapse", 1.0, m))
             log_axis(ax)
             ax.set_xlim(lo, hi)
             ax.set_ylim(-0.02, 1.02)

@@ -9,7 +9,9 @@ Run with Debian's python (python3-matplotlib, python3-h5py):
 
 Figures (one PNG each, units on every axis):
   fragility_<building>_<edp>.png  fitted curves with (solid) and without (dashed) pounding,
-                                  90 % bootstrap bands, observed exceedance fractions
+                                  90 % bootstrap bands, observed exceedance fractions; where a
+                                  neighbour's collapse censored pounding analyses, the free
+                                  curve of the same analyses dotted (shift.csv)
   amplification_<building>.png    pounding / free peak displacement and drift against each
                                   sampled parameter, with a running median
   spectra.png                     (--motions, from 'pound motion generate') response spectra of
@@ -55,7 +57,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 import matplotlib.ticker as ticker  # noqa: E402
 import numpy as np  # noqa: E402
 
-from plot_collapse import plot_collapse_fragility, plot_ida  # noqa: E402
+from plot_collapse import (plot_collapse_fragility, plot_ida, read_csv,  # noqa: E402
+                           same_analyses_fit)
 from plot_common import G, im_name, lognormal_cdf, save, text  # noqa: E402
 
 EDP_LABEL = {
@@ -109,6 +112,7 @@ def plot_fragility(frag_path, out):
                           float(c.attrs.get("theta_bound_hi", np.nan))),
                 "im": c["observed_im"][:] / G, "n": c["observed_n"][:], "z": c["observed_z"][:],
                 "p": c["probability"][:], "lo": c["band_lo"][:], "hi": c["band_hi"][:]})
+    shifts = read_csv(os.path.join(os.path.dirname(frag_path), "shift.csv"))
     groups = {}
     for c in curves:
         groups.setdefault((c["building"], c["edp"]), []).append(c)
@@ -131,6 +135,11 @@ def plot_fragility(frag_path, out):
             else:
                 lab += f": no estimate ({c['status'].replace('_', ' ')}{bound_text(c['bound'])})"
                 ax.plot([], [], style, color=col, lw=1.0, label=lab)
+            same = None if c["pounding"] else same_analyses_fit(shifts, b, edp, c["limit"], "all")
+            if same is not None:
+                ax.plot(grid, lognormal_cdf(grid, *same), ":", color=col, lw=1.6,
+                        label=edp_label(edp)[1](c["limit"]) + ", no pounding, the pounding "
+                        f"curve's analyses: θ = {same[0]:.3f} g, β = {same[1]:.2f}")
             frac = np.where(c["n"] > 0, c["z"] / np.maximum(c["n"], 1), np.nan)
             ax.plot(c["im"], frac, "o" if c["pounding"] else "s", color=col, ms=6,
                     mfc=col if c["pounding"] else "none", mew=1.3, ls="none")
@@ -148,8 +157,9 @@ def plot_fragility(frag_path, out):
         bname = names[b] if b < len(names) else f"building {b + 1}"
         pts = "stripes" if design == "stripes" else "IM bins"
         ax.set_title(f"Fragility of {bname}: {edp_label(edp)[0]}\n"
-                     f"solid/filled: with pounding, dashed/open: without; "
-                     f"points: observed ({pts}), shading: 90 % bootstrap band", fontsize=10)
+                     f"solid/filled: with pounding, dashed/open: without (dotted: without, on "
+                     f"the analyses a neighbour's collapse left to the pounding curve); "
+                     f"points: observed ({pts}), shading: 90 % bootstrap band", fontsize=9)
         ax.grid(True, which="both", alpha=0.3)
         ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0), frameon=False,
                   title="limit, case: fit", title_fontsize=8)

@@ -139,6 +139,7 @@ std::string fragility_json(const FragilityRun& run) {
     interval(w, "theta_ratio_ci90", s.ci.lo, s.ci.hi, std::isfinite(s.ratio));
     w.field("theta_pounding", s.theta_pounding).field("theta_free", s.theta_free);
     w.field("free_same_analyses", s.same_analyses);
+    w.field("beta_free", s.free_same.finite() ? s.free_same.beta : NAN);
     w.end_object();
   }
   w.end_array();

@@ -46,19 +46,20 @@ std::string curves_csv(const CampaignData& c, const FragilityReport& r) {
 std::string shift_csv(const CampaignData& c, const FragilityReport& r) {
   std::string s =
       "building,building_name,edp,unit,limit,ratio,ratio_ci90_lo,ratio_ci90_hi,model,"
-      "theta_pounding_mps2,theta_free_mps2,free_same_analyses\n";
+      "theta_pounding_mps2,theta_free_mps2,free_same_analyses,beta_free\n";
   for (const auto& k : r.shifts)
     s += std::to_string(k.building) + "," + c.building_name(k.building) + "," + to_string(k.edp) +
          "," + unit_of(k.edp) + "," + csv_number(k.limit) + "," + csv_number(k.ratio) + "," +
          csv_number(k.ci.lo) + "," + csv_number(k.ci.hi) + "," + model_label(k.model) + "," +
          csv_number(k.theta_pounding) + "," + csv_number(k.theta_free) + "," +
-         (k.same_analyses ? "1" : "0") + "\n";
+         (k.same_analyses ? "1" : "0") + "," +
+         csv_number(k.free_same.finite() ? k.free_same.beta : NAN) + "\n";
   return s;
 }
 
 std::string observations_csv(const FragilityReport& r) {
   std::string s = std::string("building,edp,limit,") + (r.stripes ? "stripe" : "bin") +
-                  ",im_mps2,n,exceed_pounding,exceed_free,model\n";
+                  ",im_mps2,n,exceed_pounding,exceed_free,model,n_free\n";
   for (std::size_t k = 0; k < r.curves.size(); ++k) {
     const auto& p = r.curves[k];
     if (!p.pounding) continue;
@@ -68,7 +69,8 @@ std::string observations_csv(const FragilityReport& r) {
            std::to_string(j) + "," + csv_number(p.observed[j].im) + "," +
            std::to_string(p.observed[j].n) + "," + std::to_string(p.observed[j].z) + "," +
            (paired ? std::to_string(r.curves[k + 1].observed[j].z) : "") + "," +
-           model_label(p.model) + "\n";
+           model_label(p.model) + "," +
+           (paired ? std::to_string(r.curves[k + 1].observed[j].n) : "") + "\n";
   }
   return s;
 }

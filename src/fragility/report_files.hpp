@@ -5,10 +5,12 @@
 //                     [m/s^2], beta, 90 % bootstrap and asymptotic bands, counts (analyses,
 //                     exceedances, and left_out: analyses whose EDP is not finite)
 //   shift.csv         theta_pounding / theta_free per building, edp and limit, 90 % band,
-//                     the two medians [m/s^2 or the IM unit] and whether the free one is
-//                     fitted on the pounding curve's analyses (FragilityShift::same_analyses)
-//   observations.csv  per curve pair and stripe (or IM bin): im [m/s^2], n, exceedances with
-//                     and without pounding
+//                     the two medians [m/s^2 or the IM unit], whether the free one is fitted
+//                     on the pounding curve's analyses (FragilityShift::same_analyses), and
+//                     that free fit's beta
+//   observations.csv  per curve pair and stripe (or IM bin): im [m/s^2], n (the pounding
+//                     curve's analyses), exceedances with and without pounding, n_free (the
+//                     free curve's: more where a neighbour's collapse censored pounding runs)
 //   sensitivity.csv   Spearman and partial rank correlation of each sampled parameter with
 //                     the displacement and drift amplification, per building, ranked
 //   fragility.h5      the /fragility group: attributes of the run, /fragility/grid_im [G]
