@@ -127,7 +127,16 @@ int main(int argc, char** argv) {
         std::isfinite(tn) ? (std::to_string(tn).substr(0, 8) + " " + status_text(on)).c_str() : "-",
         oi.status == SampleStatus::ok ? "" : "  (imk sample failed)");
   }
-  std::printf("\nper contact model:\n");
+  {
+    const Sum &a = sums[0], &b = sums[1];
+    std::printf(
+        "\nall %d samples (both contact models): imk %.4f s, bilinear %.4f s per sample, ratio "
+        "%.2f; the %d that collapse in neither: ratio %.2f\n",
+        a.n + b.n, (a.imk + b.imk) / (a.n + b.n), (a.bil + b.bil) / (a.n + b.n),
+        (a.imk + b.imk) / (a.bil + b.bil), a.n_standing + b.n_standing,
+        (a.imk_standing + b.imk_standing) / (a.bil_standing + b.bil_standing));
+  }
+  std::printf("per contact model:\n");
   for (int k = 0; k < 2; ++k) {
     const Sum& m = sums[k];
     if (!m.n) continue;

@@ -18,7 +18,7 @@ ExactSteps::ExactSteps(const ExactSteps& o)
       k_scratch_(o.k_scratch_),
       c_scratch_(o.c_scratch_),
       visits_(o.visits_),
-      declined_at_top_(o.declined_at_top_),
+      declined_before_iteration_(o.declined_before_iteration_),
       visited_(o.visited_) {}
 
 void ExactSteps::enable(const AssembledRow& row, double h_max, double rec_dt,
@@ -55,7 +55,7 @@ std::uint64_t bits_hash(const Eigen::MatrixXd& k) {
 
 void ExactSteps::undo_iteration() {
   if (visited_ >= 0) --visits_[visited_];
-  declined_ = declined_at_top_;
+  declined_ = declined_before_iteration_;
 }
 
 const LinearStep* ExactSteps::propagator(const RowDynamics& dyn, const AssembledRow& row) {

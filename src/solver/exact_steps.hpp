@@ -68,7 +68,7 @@ class ExactSteps {
   /// At the top of each loop iteration of the solver: what the iteration may change and a fork
   /// must undo (undo_iteration).
   void begin_iteration() {
-    declined_at_top_ = declined_;
+    declined_before_iteration_ = declined_;
     visited_ = -1;
   }
   void undo_iteration();
@@ -97,8 +97,9 @@ class ExactSteps {
   Eigen::MatrixXd k_scratch_;  // the current stiffness, to look up its entry [N/m]
   Eigen::MatrixXd c_scratch_;  // the current damping matrix [N s/m]
   std::vector<int> visits_;    // per entry: grid points of this run met with its stiffness
-  // What the current loop iteration changed before its step was accepted (undo_iteration).
-  long declined_at_top_ = -1;
+  // The declined grid point as it was when the current loop iteration began, restored by
+  // undo_iteration when a fork takes the iteration back.
+  long declined_before_iteration_ = -1;
   int visited_ = -1;  // the cache entry whose visits this iteration counted (-1: none)
 };
 
