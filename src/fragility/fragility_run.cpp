@@ -1,17 +1,15 @@
 #include "fragility/fragility_run.hpp"
 
 #include <cmath>
-#include <filesystem>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "core/error.hpp"
 #include "io/json.hpp"
+#include "io/output_folder.hpp"
 
 namespace pound {
-
-namespace fs = std::filesystem;
 
 const char* const kFragilitySummary =
     "Lognormal fragility curves with and without pounding from a campaign result file "
@@ -86,26 +84,14 @@ FragilityRun run_fragility_analysis(const Options& opt, bool write_files) {
       s.force_limits.empty() && s.residual_drift_limits.empty() && s.ductility_limits.empty())
     throw opt.invalid("drift-limits", "give at least one list of limits");
 
-  std::string dir;
-  if (opt.given("out")) {
-    dir = opt.get_path("out");
-  } else {
-    fs::path p(input);
-    dir = (p.parent_path() / (p.stem().string() + "-fragility")).string();
-  }
+  const std::string dir = output_folder(opt, input, "fragility");
   run.report = analyse_fragility(c, s);
   run.info = FragilityRunInfo{input, int(reps), std::to_string(seed), opt.resolved_text()};
   if (!write_files) return run;
 
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec || !fs::is_directory(dir))
-    throw InputError(opt.where("out") + ": cannot create the folder " + dir);
-  for (const char* name :
-       {"curves.csv", "shift.csv", "observations.csv", "sensitivity.csv", "fragility.h5"})
-    if (fs::equivalent(fs::path(dir) / name, input, ec))
-      throw InputError(opt.where("out") + ": " + dir + "/" + name +
-                       " is the campaign file; choose another output folder");
+  make_output_folder(
+      opt, dir, input,
+      {"curves.csv", "shift.csv", "observations.csv", "sensitivity.csv", "fragility.h5"});
   run.dir = dir;
   run.files = write_fragility_files(dir, c, run.report, run.info);
   return run;

@@ -1,18 +1,16 @@
 #include "risk/risk_run.hpp"
 
 #include <cmath>
-#include <filesystem>
 #include <string>
 #include <vector>
 
 #include "core/error.hpp"
 #include "io/json.hpp"
+#include "io/output_folder.hpp"
 #include "motion/ground_motion.hpp"
 #include "risk/risk_files.hpp"
 
 namespace pound {
-
-namespace fs = std::filesystem;
 
 const char* const kRiskSummary =
     "Pounding risk at every gap from a campaign and a site's hazard curve: mean annual "
@@ -81,21 +79,9 @@ RiskRun run_risk_analysis(const Options& opt, bool write_files) {
   run.report = analyse_risk(c, h, s, run.modes, study_fragility_limits(c));
   if (!write_files) return run;
 
-  std::string dir;
-  if (opt.given("out")) {
-    dir = opt.get_path("out");
-  } else {
-    fs::path p(input);
-    dir = (p.parent_path() / (p.stem().string() + "-risk")).string();
-  }
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec || !fs::is_directory(dir))
-    throw InputError(opt.where("out") + ": cannot create the folder " + dir);
-  for (const char* name : {"risk_gaps.csv", "code_rules.csv", "damage_maf.csv", "risk.h5"})
-    if (fs::equivalent(fs::path(dir) / name, input, ec))
-      throw InputError(opt.where("out") + ": " + dir + "/" + name +
-                       " is the campaign file; choose another output folder");
+  const std::string dir = output_folder(opt, input, "risk");
+  make_output_folder(opt, dir, input,
+                     {"risk_gaps.csv", "code_rules.csv", "damage_maf.csv", "risk.h5"});
   run.dir = dir;
   run.files = write_risk_files(dir, c, h, run.report, RiskRunInfo{input, opt.resolved_text(), s});
   return run;
