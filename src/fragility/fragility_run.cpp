@@ -58,6 +58,17 @@ void interval(JsonWriter& w, const std::string& key, double lo, double hi, bool 
 
 }  // namespace
 
+BootstrapSettings bootstrap_from_options(const Options& opt) {
+  const long reps = opt.get_int("replicates");
+  if (reps < 10 || reps > 100000) throw opt.invalid("replicates", "valid: 10 to 100000");
+  const long seed = opt.get_int("seed");
+  if (seed < 0) throw opt.invalid("seed", "valid: a whole number >= 0");
+  BootstrapSettings b;
+  b.replicates = int(reps);
+  b.seed = std::uint64_t(seed);
+  return b;
+}
+
 FragilityRun run_fragility_analysis(const Options& opt, bool write_files) {
   if (!opt.given("input")) throw InputError("command line: --input RUN.h5 is required");
   FragilityRun run;
@@ -74,19 +85,15 @@ FragilityRun run_fragility_analysis(const Options& opt, bool write_files) {
                            {"residual-drift-limits", &s.residual_drift_limits},
                            {"ductility-limits", &s.ductility_limits}})
     if (opt.given(cli)) *list = limits(opt, cli);
-  const long reps = opt.get_int("replicates");
-  if (reps < 10 || reps > 100000) throw opt.invalid("replicates", "valid: 10 to 100000");
-  const long seed = opt.get_int("seed");
-  if (seed < 0) throw opt.invalid("seed", "valid: a whole number >= 0");
-  s.bootstrap.replicates = int(reps);
-  s.bootstrap.seed = std::uint64_t(seed);
+  s.bootstrap = bootstrap_from_options(opt);
   if (s.drift_limits.empty() && s.disp_limits.empty() && s.accel_limits.empty() &&
       s.force_limits.empty() && s.residual_drift_limits.empty() && s.ductility_limits.empty())
     throw opt.invalid("drift-limits", "give at least one list of limits");
 
   const std::string dir = output_folder(opt, input, "fragility");
   run.report = analyse_fragility(c, s);
-  run.info = FragilityRunInfo{input, int(reps), std::to_string(seed), opt.resolved_text()};
+  run.info = FragilityRunInfo{input, s.bootstrap.replicates, std::to_string(s.bootstrap.seed),
+                              opt.resolved_text()};
   if (!write_files) return run;
 
   make_output_folder(

@@ -26,6 +26,10 @@ struct FragilityRun {
   std::vector<std::string> files;  ///< the files written
 };
 
+/// --replicates (10 to 100000) and --seed (>= 0) of the bootstrap bands, validated (InputError
+/// naming the option); shared by pound risk.
+BootstrapSettings bootstrap_from_options(const Options& opt);
+
 /// Reads the campaign file of --input, the limits (the command line, then the study's
 /// [fragility] section stored in the file, then the defaults) and the bootstrap settings,
 /// validating each (InputError naming the option), and analyses. With write_files the results

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "fragility/fragility_run.hpp"
 #include "io/json.hpp"
 #include "io/output_folder.hpp"
 #include "motion/ground_motion.hpp"
@@ -57,12 +58,7 @@ RiskRun run_risk_analysis(const Options& opt, bool write_files) {
     s.design_im = opt.get_double("design-im") * kGravity;
     if (!(s.design_im > 0)) throw opt.invalid("design-im", "valid: an intensity > 0 in g");
   }
-  const long reps = opt.get_int("replicates");
-  if (reps < 10 || reps > 100000) throw opt.invalid("replicates", "valid: 10 to 100000");
-  const long seed = opt.get_int("seed");
-  if (seed < 0) throw opt.invalid("seed", "valid: a whole number >= 0");
-  s.bootstrap.replicates = int(reps);
-  s.bootstrap.seed = std::uint64_t(seed);
+  s.bootstrap = bootstrap_from_options(opt);
 
   // Everything is read and computed before any file is written.
   const std::string input = opt.get_path("input");
