@@ -74,6 +74,23 @@ struct Pass {
     if (!ok || !rows.kept(i)) return -1;
     return grouping.group(rows.id[i], ok, rows.im[i]);
   }
+  // Block by block, the columns [a0, a0 + na) of two datasets of the same layout (RowBlocks::
+  // rows), and f(k, x, y) for each row in a group k (group_of >= 0), x and y its values.
+  template <class F>
+  void each_used_row(const RowBlocks& a, const RowBlocks& b, hsize_t a0, hsize_t na, F&& f) const {
+    std::vector<double> va, vb;
+    const hsize_t n = rows.rows();
+    for (hsize_t row = 0; row < n; row += kBlockRows) {
+      const hsize_t count = std::min(kBlockRows, n - row);
+      rows.read(row, count);
+      a.rows(row, count, a0, na, va);
+      b.rows(row, count, a0, na, vb);
+      const std::size_t width = va.size() / count;
+      for (hsize_t i = 0; i < count; ++i)
+        if (const int k = group_of(i); k >= 0)
+          f(std::size_t(k), va.data() + i * width, vb.data() + i * width);
+    }
+  }
 };
 
 // The per-group numbers (IM, its range, samples, failures) of the samples the filter keeps.
@@ -93,27 +110,17 @@ IntensityGroups tally_groups(SampleRows& rows, const IntensityGrouping& grouping
 void building_ratios(const Pass& p, const RowBlocks& pd, const RowBlocks& fd, std::size_t b,
                      AmplificationTable& t, AmplificationMeasure& out) {
   const std::size_t G = t.groups, F = t.floors;
-  const hsize_t n = p.rows.rows();
   std::vector<CellValues> cells;
   for (std::size_t k = 0; k < G; ++k)
     for (std::size_t fl = 0; fl < F; ++fl)
       cells.emplace_back(p.successful[k], cell_capacity(G * F));
-  std::vector<double> bp, bf;
-  for (hsize_t row = 0; row < n; row += kBlockRows) {
-    const hsize_t count = std::min(kBlockRows, n - row);
-    p.rows.read(row, count);
-    pd.rows(row, count, b, 1, bp);
-    fd.rows(row, count, b, 1, bf);
-    for (hsize_t i = 0; i < count; ++i) {
-      const int k = p.group_of(i);
-      if (k < 0) continue;  // failed samples are counted, not used
-      for (std::size_t f = 0; f < F; ++f) {
-        const double x = bp[i * F + f], q = bf[i * F + f];
-        if (std::isfinite(x) && std::isfinite(q) && q > 0.0)
-          cells[std::size_t(k) * F + f].add(x / q);
-      }
+  // Failed samples are counted, not used.
+  p.each_used_row(pd, fd, b, 1, [&](std::size_t k, const double* bp, const double* bf) {
+    for (std::size_t f = 0; f < F; ++f) {
+      const double x = bp[f], q = bf[f];
+      if (std::isfinite(x) && std::isfinite(q) && q > 0.0) cells[k * F + f].add(x / q);
     }
-  }
+  });
   for (std::size_t k = 0; k < G; ++k)
     for (std::size_t f = 0; f < F; ++f) {
       const ValueSummary s = cells[k * F + f].summary();
@@ -173,28 +180,19 @@ void contact_statistics(const Pass& p, AmplificationTable& t) {
     force.emplace_back(p.successful[at / (P * L)], cell_capacity(2 * S));
     force_pounded.emplace_back(p.successful[at / (P * L)], cell_capacity(2 * S));
   }
-  std::vector<double> bi, bf;
-  for (hsize_t row = 0; row < n; row += kBlockRows) {
-    const hsize_t count = std::min(kBlockRows, n - row);
-    p.rows.read(row, count);
-    imp.rows(row, count, 0, P, bi);
-    force_d.rows(row, count, 0, P, bf);
-    for (hsize_t i = 0; i < count; ++i) {
-      const int k = p.group_of(i);
-      if (k < 0) continue;
-      for (std::size_t j = 0; j < P * L; ++j) {
-        const double hits = bi[i * P * L + j], fo = bf[i * P * L + j];
-        if (!std::isfinite(hits)) continue;  // no such level
-        const std::size_t at = std::size_t(k) * P * L + j;
-        ++t.contact_count[at];
-        pounded[at] += hits > 0.0;
-        if (std::isfinite(fo)) {
-          force[at].add(fo);
-          if (hits > 0.0) force_pounded[at].add(fo);
-        }
+  p.each_used_row(imp, force_d, 0, P, [&](std::size_t k, const double* bi, const double* bf) {
+    for (std::size_t j = 0; j < P * L; ++j) {
+      const double hits = bi[j], fo = bf[j];
+      if (!std::isfinite(hits)) continue;  // no such level
+      const std::size_t at = k * P * L + j;
+      ++t.contact_count[at];
+      pounded[at] += hits > 0.0;
+      if (std::isfinite(fo)) {
+        force[at].add(fo);
+        if (hits > 0.0) force_pounded[at].add(fo);
       }
     }
-  }
+  });
   for (std::size_t at = 0; at < S; ++at) {
     t.pounded_fraction.push_back(
         t.contact_count[at] ? double(pounded[at]) / double(t.contact_count[at]) : kNaN);
@@ -220,30 +218,21 @@ void collapse_statistics(const Pass& p, AmplificationTable& t) {
                      std::to_string(n) + ", " + std::to_string(B) + "] of the peak_* datasets");
   t.collapse_count.assign(S, 0);
   std::vector<long> with(S, 0), without(S, 0), stopped(S, 0);
-  std::vector<double> bp, bf;
-  for (hsize_t row = 0; row < n; row += kBlockRows) {
-    const hsize_t count = std::min(kBlockRows, n - row);
-    p.rows.read(row, count);
-    cp.rows(row, count, 0, B, bp);
-    cf.rows(row, count, 0, B, bf);
-    for (hsize_t i = 0; i < count; ++i) {
-      const int k = p.group_of(i);
-      if (k < 0) continue;
-      // The pounding run stops at the row's first collapse: a building standing then, beside
-      // one that collapsed, was stopped.
-      bool any = false;
-      for (std::size_t b = 0; b < B; ++b) any = any || bp[i * B + b] > 0.5;
-      for (std::size_t b = 0; b < B; ++b) {
-        const double x = bp[i * B + b], y = bf[i * B + b];
-        if (!std::isfinite(x) || !std::isfinite(y)) continue;
-        const std::size_t at = std::size_t(k) * B + b;
-        ++t.collapse_count[at];
-        with[at] += x > 0.5;  // 1 collapsed, 0 standing
-        without[at] += y > 0.5;
-        stopped[at] += any && !(x > 0.5);
-      }
+  p.each_used_row(cp, cf, 0, B, [&](std::size_t k, const double* bp, const double* bf) {
+    // The pounding run stops at the row's first collapse: a building standing then, beside
+    // one that collapsed, was stopped.
+    bool any = false;
+    for (std::size_t b = 0; b < B; ++b) any = any || bp[b] > 0.5;
+    for (std::size_t b = 0; b < B; ++b) {
+      const double x = bp[b], y = bf[b];
+      if (!std::isfinite(x) || !std::isfinite(y)) continue;
+      const std::size_t at = k * B + b;
+      ++t.collapse_count[at];
+      with[at] += x > 0.5;  // 1 collapsed, 0 standing
+      without[at] += y > 0.5;
+      stopped[at] += any && !(x > 0.5);
     }
-  }
+  });
   t.collapsed_pounding.assign(S, kNaN);
   t.collapsed_free.assign(S, kNaN);
   t.stopped_pounding.assign(S, kNaN);

@@ -15,8 +15,16 @@ const char* const kFragilitySummary =
     "Lognormal fragility curves with and without pounding from a campaign result file "
     "(maximum likelihood, Baker 2015), bootstrap bands, rank sensitivity.";
 
-std::vector<OptionSpec> fragility_option_specs() {
+std::vector<OptionSpec> bootstrap_option_specs() {
   return {
+      {"replicates", "-", "1000", "bootstrap replicates of the 90 % bands"},
+      {"seed", "-", "1", "seed of the bootstrap draws"},
+      {"json", "", "", "print one JSON object instead of the tables", true},
+  };
+}
+
+std::vector<OptionSpec> fragility_option_specs() {
+  std::vector<OptionSpec> s = {
       {"input", "", "", "campaign result file (HDF5) of 'pound campaign --out'"},
       {"out", "", "", "output folder (default: RUN-fragility/ beside RUN.h5)"},
       {"drift-limits", "-", "0.005, 0.01, 0.02, 0.025",
@@ -31,10 +39,10 @@ std::vector<OptionSpec> fragility_option_specs() {
       {"ductility-limits", "-", "",
        "limits of the storey ductility demand, peak drift / yield drift (none: no curves; "
        "buildings without yield_shears have none and are left out)"},
-      {"replicates", "-", "1000", "bootstrap replicates of the 90 % bands"},
-      {"seed", "-", "1", "seed of the bootstrap draws"},
-      {"json", "", "", "print one JSON object instead of the tables", true},
   };
+  const std::vector<OptionSpec> b = bootstrap_option_specs();
+  s.insert(s.end(), b.begin(), b.end());
+  return s;
 }
 
 namespace {
@@ -115,13 +123,9 @@ std::string fragility_json(const FragilityRun& run) {
   w.field("design", r.stripes ? "stripes" : "continuous");
   w.field("samples", long(r.samples)).field("failed", long(r.failed)).field("used", long(r.used));
   w.field("bootstrap_replicates", info.replicates).field("bootstrap_seed", info.seed);
-  w.key("building_names").begin_array();
-  for (const auto& n : c.building_names) w.value(n);
-  w.end_array();
+  w.key("building_names").array(c.building_names);
   w.field("collapse", r.collapse);
-  w.key("models").begin_array();
-  for (const auto& m : r.models) w.value(m);
-  w.end_array();
+  w.key("models").array(r.models);
   w.key("shift").begin_array();
   for (const auto& s : r.shifts) {
     w.begin_object()
@@ -180,9 +184,7 @@ std::string fragility_json(const FragilityRun& run) {
         .field("samples", long(s.samples))
         .end_object();
   w.end_array();
-  w.key("files").begin_array();
-  for (const auto& f : run.files) w.value(f);
-  w.end_array();
+  w.key("files").array(run.files);
   w.end_object();
   return w.str();
 }

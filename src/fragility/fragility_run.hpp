@@ -26,6 +26,10 @@ struct FragilityRun {
   std::vector<std::string> files;  ///< the files written
 };
 
+/// The options --replicates and --seed of the bootstrap bands and --json, last in the options
+/// of pound fragility and pound risk.
+std::vector<OptionSpec> bootstrap_option_specs();
+
 /// --replicates (10 to 100000) and --seed (>= 0) of the bootstrap bands, validated (InputError
 /// naming the option); shared by pound risk.
 BootstrapSettings bootstrap_from_options(const Options& opt);

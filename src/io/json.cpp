@@ -108,4 +108,10 @@ JsonWriter& JsonWriter::array(const std::vector<double>& v) {
   return end_array();
 }
 
+JsonWriter& JsonWriter::array(const std::vector<std::string>& v) {
+  begin_array();
+  for (const auto& x : v) value(x);
+  return end_array();
+}
+
 }  // namespace pound

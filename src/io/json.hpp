@@ -22,6 +22,7 @@ class JsonWriter {
   JsonWriter& value(const char* v) { return value(std::string(v)); }
   JsonWriter& null();
   JsonWriter& array(const std::vector<double>& v);
+  JsonWriter& array(const std::vector<std::string>& v);
   template <class T>
   JsonWriter& field(const std::string& k, const T& v) {
     key(k);

@@ -497,20 +497,13 @@ std::vector<CollapseRisk> collapse_risks(const std::vector<DamageRisk>& damage,
   for (const auto& d : damage) {
     if (d.edp != Edp::collapse) continue;
     CollapseRisk c;
-    c.model = d.model;
-    c.building = d.building;
-    c.pounding = d.pounding;
-    c.free = d.free;
-    c.same_analyses = d.same_analyses;
+    static_cast<DamageRisk&>(c) = d;
     c.theta_pounding = !d.pounding.finite() ? kNaN
                        : !d.same_analyses
                            ? d.pounding.theta
                            : (d.free.finite() && d.free_same.finite()
                                   ? d.free.theta * d.pounding.theta / d.free_same.theta
                                   : kNaN);
-    c.maf_pounding = d.maf_pounding;
-    c.maf_free = d.maf_free;
-    c.ratio = d.ratio;
     c.probability_pounding = probability_in_years(d.maf_pounding, s.years);
     c.probability_free = probability_in_years(d.maf_free, s.years);
     c.cmr_pounding = design_im > 0 ? c.theta_pounding / design_im : kNaN;

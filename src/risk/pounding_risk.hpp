@@ -117,21 +117,15 @@ struct DamageRisk {
   double outside_pounding = 0.0, outside_free = 0.0;
 };
 
-/// Collapse of a building (issue 23): its mean annual frequency and probability in T years
-/// with and without pounding, their ratio, and with a design (MCE) intensity the collapse
-/// margin ratio CMR = median collapse intensity / design intensity (FEMA P695, sec. 6.3).
-struct CollapseRisk {
-  std::string model;  ///< "" for all
-  std::size_t building = 0;
-  LognormalFit pounding, free;
-  bool same_analyses = false;  ///< DamageRisk::same_analyses
+/// Collapse of a building (issue 23): its damage limit Edp::collapse (the rates with and without
+/// pounding, their ratio), its probability in T years, and with a design (MCE) intensity the
+/// collapse margin ratio CMR = median collapse intensity / design intensity (FEMA P695, 6.3).
+struct CollapseRisk : DamageRisk {
   /// Median collapse intensity with pounding [IM unit]: the pounding fit's, or where censored
   /// (same_analyses) the free median of all analyses times the like-for-like shift
   /// theta_pounding / theta_free_same (FragilityShift).
   double theta_pounding = 0.0;
-  double maf_pounding = 0.0, maf_free = 0.0;                  ///< [1/yr]; NaN without a finite fit
   double probability_pounding = 0.0, probability_free = 0.0;  ///< in T years [-]
-  double ratio = 0.0;                                         ///< maf_pounding / maf_free [-]
   double cmr_pounding = 0.0, cmr_free = 0.0;  ///< [-]; NaN without a design intensity or fit
 };
 

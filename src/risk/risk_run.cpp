@@ -18,7 +18,7 @@ const char* const kRiskSummary =
     "frequency, probability in T years, the gap for a target, code rules, damage limits.";
 
 std::vector<OptionSpec> risk_option_specs() {
-  return {
+  std::vector<OptionSpec> s = {
       {"input", "", "", "campaign result file (HDF5) of 'pound campaign' or 'pound merge'"},
       {"hazard", "", "",
        "hazard curve CSV: header 'pga [g], annual_rate [1/yr]' (or sa(T), m/s2), then points"},
@@ -31,10 +31,10 @@ std::vector<OptionSpec> risk_option_specs() {
       {"design-im", "g", "",
        "intensity of the code rules (default: the hazard's 475-year intensity, 10 % in 50 years)"},
       {"out", "", "", "output folder (default: RUN-risk/ beside RUN.h5)"},
-      {"replicates", "-", "1000", "bootstrap replicates of the 90 % bands"},
-      {"seed", "-", "1", "seed of the bootstrap draws"},
-      {"json", "", "", "print one JSON object instead of the tables", true},
   };
+  const std::vector<OptionSpec> b = bootstrap_option_specs();
+  s.insert(s.end(), b.begin(), b.end());
+  return s;
 }
 
 RiskRun run_risk_analysis(const Options& opt, bool write_files) {
@@ -82,6 +82,30 @@ RiskRun run_risk_analysis(const Options& opt, bool write_files) {
   run.files = write_risk_files(dir, c, h, run.report, RiskRunInfo{input, opt.resolved_text(), s});
   return run;
 }
+
+namespace {
+
+// NAME_pounding and NAME_free.
+template <class T>
+void with_and_without(JsonWriter& w, const std::string& name, const T& pounding, const T& free) {
+  w.field(name + "_pounding", pounding).field(name + "_free", free);
+}
+
+// The fields of a damage limit, a collapse's too (CollapseRisk is a DamageRisk).
+void damage_fields(JsonWriter& w, const DamageRisk& d) {
+  w.field("model", d.model.empty() ? std::string("all") : d.model)
+      .field("building", long(d.building))
+      .field("edp", to_string(d.edp))
+      .field("limit", d.limit);
+  with_and_without(w, "status", std::string(to_string(d.pounding.status)),
+                   std::string(to_string(d.free.status)));
+  with_and_without(w, "maf", d.maf_pounding, d.maf_free);
+  w.field("ratio", d.ratio)
+      .field("free_same_analyses", d.same_analyses)
+      .field("maf_pounding_kept", d.maf_pounding_kept);
+}
+
+}  // namespace
 
 std::string risk_json(const RiskRun& run) {
   const CampaignData& c = run.data;
@@ -138,46 +162,24 @@ std::string risk_json(const RiskRun& run) {
   }
   w.end_array();
   w.key("damage").begin_array();
-  for (const auto& d : r.damage)
-    w.begin_object()
-        .field("model", d.model.empty() ? std::string("all") : d.model)
-        .field("building", long(d.building))
-        .field("edp", to_string(d.edp))
-        .field("limit", d.limit)
-        .field("status_pounding", to_string(d.pounding.status))
-        .field("status_free", to_string(d.free.status))
-        .field("maf_pounding", d.maf_pounding)
-        .field("maf_free", d.maf_free)
-        .field("ratio", d.ratio)
-        .field("free_same_analyses", d.same_analyses)
-        .field("maf_pounding_kept", d.maf_pounding_kept)
-        .end_object();
+  for (const auto& d : r.damage) {
+    w.begin_object();
+    damage_fields(w, d);
+    w.end_object();
+  }
   w.end_array();
   w.key("collapse").begin_array();
-  for (const auto& k : r.collapse)
-    w.begin_object()
-        .field("model", k.model.empty() ? std::string("all") : k.model)
-        .field("building", long(k.building))
-        .field("status_pounding", to_string(k.pounding.status))
-        .field("status_free", to_string(k.free.status))
-        .field("theta_pounding", k.theta_pounding)
-        .field("free_same_analyses", k.same_analyses)
-        .field("theta_free", k.free.finite() ? k.free.theta : NAN)
-        .field("maf_pounding", k.maf_pounding)
-        .field("maf_free", k.maf_free)
-        .field("ratio", k.ratio)
-        .field("probability_pounding", k.probability_pounding)
-        .field("probability_free", k.probability_free)
-        .field("cmr_pounding", k.cmr_pounding)
-        .field("cmr_free", k.cmr_free)
-        .end_object();
+  for (const auto& k : r.collapse) {
+    w.begin_object();
+    damage_fields(w, k);
+    with_and_without(w, "theta", k.theta_pounding, k.free.finite() ? k.free.theta : NAN);
+    with_and_without(w, "probability", k.probability_pounding, k.probability_free);
+    with_and_without(w, "cmr", k.cmr_pounding, k.cmr_free);
+    w.end_object();
+  }
   w.end_array();
-  w.key("notes").begin_array();
-  for (const auto& n : r.notes) w.value(n);
-  w.end_array();
-  w.key("files").begin_array();
-  for (const auto& f : run.files) w.value(f);
-  w.end_array();
+  w.key("notes").array(r.notes);
+  w.key("files").array(run.files);
   w.end_object();
   return w.str();
 }
