@@ -13,7 +13,10 @@ namespace pound {
 // floors, compiled for AVX2 and the baseline (no fused multiply-add, so the same bits), instead
 // of a bound and a branch per quintic (peaks_over_step refines only where a bound could raise a
 // peak).
-__attribute__((target_clones("avx2", "default"))) void RunRecorder::peak_bounds(
+// A file-local function: clang refuses target_clones on a member whose declaration the header
+// has already used (peaks_over_step), so RunRecorder::peak_bounds forwards to it.
+namespace {
+__attribute__((target_clones("avx2", "default"))) void peak_bounds_kernel(
     int n, const double* __restrict u0, const double* __restrict u1, const double* __restrict v0,
     const double* __restrict v1, const double* __restrict a0, const double* __restrict a1,
     const double* __restrict below, double h, double h2, double* __restrict out) {
@@ -29,6 +32,13 @@ __attribute__((target_clones("avx2", "default"))) void RunRecorder::peak_bounds(
                        h * v0[i] - w * (h * v0[i - 1]), h * v1[i] - w * (h * v1[i - 1]),
                        h2 * a0[i] - w * (h2 * a0[i - 1]), h2 * a1[i] - w * (h2 * a1[i - 1]));
   }
+}
+}  // namespace
+
+void RunRecorder::peak_bounds(int n, const double* u0, const double* u1, const double* v0,
+                              const double* v1, const double* a0, const double* a1,
+                              const double* below, double h, double h2, double* out) {
+  peak_bounds_kernel(n, u0, u1, v0, v1, a0, a1, below, h, h2, out);
 }
 
 RunRecorder::RunRecorder(const AssembledRow& row, const std::vector<RowStorey>& storeys,
