@@ -13,7 +13,7 @@ checking the study and the record, both simulations, the JSON text; measured in 
 rest, the module's overhead (arguments, GIL, json.loads, the result's objects). The target of
 issue 25: overhead under 5 % of a sample's own cost. Thread speed-up: the serial loop's wall
 time over the threaded one (target: 1.9 on two cores), the calls handed out one by one by a
-ThreadPoolExecutor, and made in a loop by each thread. On a shared machine the threads compete
+ThreadPoolExecutor (its map, and submit then wait), and made in a loop by each thread. On a shared machine the threads compete
 with other work: the load average is printed, and for the serial and the threaded loop the
 cores other processes kept busy meanwhile (/proc/stat less this process's CPU time).
 """
@@ -26,7 +26,7 @@ import subprocess
 import sys
 import threading
 import time
-from concurrent.futures import ThreadPoolExecutor
+from concurrent.futures import ThreadPoolExecutor, wait
 from pathlib import Path
 
 import pound
@@ -86,6 +86,19 @@ def threaded(study, n, threads):
     return time.perf_counter() - start
 
 
+def submitted(study, n, threads):
+    """Wall time of n calls submitted to a ThreadPoolExecutor at once, then waited for
+    (concurrent.futures.wait) and their results taken: the main thread sleeps until the last
+    call ends, where pool.map's generator wakes it at each result, and on two cores the woken
+    main thread takes turns with the two workers."""
+    start = time.perf_counter()
+    with ThreadPoolExecutor(max_workers=threads) as pool:
+        futures = [pool.submit(pound.simulate, study) for _ in range(n)]
+        wait(futures)
+        [f.result() for f in futures]
+    return time.perf_counter() - start
+
+
 def looping(study, n, threads):
     """Wall time of n calls in `threads` threads that each make n / threads calls in a loop
     (no executor: its bookkeeping per task runs under the GIL, ~30 us)."""
@@ -133,6 +146,9 @@ def main():
     t_threads = threaded(a.study, n, a.threads)
     other_threads = other.cores()
     other = OtherLoad()
+    t_submit = submitted(a.study, n, a.threads)
+    other_submit = other.cores()
+    other = OtherLoad()
     t_loops = looping(a.study, n, a.threads)
     other_loops = other.cores()
     t_proc = processes(a.binary, a.study, a.processes) if a.processes else float("nan")
@@ -154,6 +170,9 @@ def main():
     print(f"  pound.simulate, {a.threads} threads     {t_threads / n * ms:8.3f} ms per call "
           f"({t_threads:.2f} s in all; others {other_threads:.2f} cores): speed-up "
           f"{t_serial / t_threads:.2f} with ThreadPoolExecutor.map (target >= 1.9 on two cores)")
+    print(f"                                {t_submit / n * ms:8.3f} ms per call "
+          f"({t_submit:.2f} s in all; others {other_submit:.2f} cores): speed-up "
+          f"{t_serial / t_submit:.2f} with ThreadPoolExecutor.submit and wait")
     print(f"                                {t_loops / n * ms:8.3f} ms per call "
           f"({t_loops:.2f} s in all; others {other_loops:.2f} cores): speed-up "
           f"{t_serial / t_loops:.2f} with a loop in each thread")
