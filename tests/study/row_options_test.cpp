@@ -84,6 +84,29 @@ TEST(RowOptions, KFactorMultipliesTheLargestStoreyStiffnessOfTheRow) {
   EXPECT_DOUBLE_EQ(c.params.e, 0.65);  // the documented default
 }
 
+// A study of one building has no pair and so no contact: the stiffness-based default model
+// (lve) must not ask for contact.k there, and must still ask for it in a row of two.
+TEST(RowOptions, OneBuildingNeedsNoContactStiffness) {
+  const std::vector<std::string> one = {"--building1.masses", "1e3", "--building1.stiffnesses",
+                                        "2e6"};
+  const Options o = parsed(one);
+  const BuildingRow row = row_from_options(o);
+  ASSERT_EQ(row.buildings.size(), 1u);
+  const ContactSpec c = contact_from_options(o, row);
+  EXPECT_EQ(c.model, "lve");
+  EXPECT_EQ(c.params.k, 0.0);  // never used
+  std::vector<std::string> two = one;
+  two.insert(two.end(), {"--building2.masses", "1e3", "--building2.stiffnesses", "2e6",
+                         "--pair1.gap", "0.01"});
+  const Options o2 = parsed(two);
+  try {
+    contact_from_options(o2, row_from_options(o2));
+    ADD_FAILURE() << "a pair without contact.k was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("contact.k': missing"), std::string::npos) << e.what();
+  }
+}
+
 TEST(RowOptions, ErrorsNameTheKeyAndWhatIsValid) {
   EXPECT_NE(error_of({"--pair1.gap", "0.01,0.02,0.03"})
                 .find("--pair1.gap = '0.01,0.02,0.03': expected one gap or 2"),
