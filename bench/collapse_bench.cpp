@@ -1,4 +1,5 @@
-// Collapse benchmark of issue 23 (docs/speed.md, "Collapse"): on one core, samples of
+// Case 6 of bench_speed, the collapse benchmark of issue 23 (docs/speed.md, "Deteriorating
+// storeys and the stop at collapse"): on one core, samples of
 // studies/fragility-default.ini as it is (imk storeys with P-Delta and tangent damping; a run
 // stops at collapse) against
 //   1. the same samples with bilinear storeys (the same P-Delta, damping, collapse rule and
@@ -10,10 +11,12 @@
 //      strength under P-Delta runs away until the solver gives up, which can take minutes).
 // Each sample's time is the process CPU time of the whole sample (motion, run with pounding,
 // run without), the smallest of REPEAT runs.
-// Usage: bench_collapse [source dir [N [REPEAT [imk|bilinear|both [--key value ...]]]]]
-// (defaults: the source tree it was built from, 60 samples = four per stripe, 1 run each); with
+// Usage: bench_speed SOURCE collapse [N [REPEAT [imk|bilinear|both [--key value ...]]]]
+// (defaults: 60 samples = four per stripe, 1 run each); with
 // imk or bilinear, only the samples of that law are run, without the table (for profiling under
 // callgrind); further arguments are study options (e.g. --building1.damping_stiffness initial).
+#include "collapse_bench.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -57,23 +60,23 @@ const char* status_text(const SampleOutcome& o) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  const std::string src = argc > 1 ? argv[1] : POUND_SOURCE_DIR;
-  const long samples = argc > 2 ? std::stol(argv[2]) : 60;
-  const int repeat = argc > 3 ? std::stoi(argv[3]) : 1;
+int collapse_case(const std::string& src, const std::vector<std::string>& arguments) {
+  const auto arg = [&](std::size_t k) { return k < arguments.size() ? arguments[k] : ""; };
+  const long samples = arguments.size() > 0 ? std::stol(arg(0)) : 60;
+  const int repeat = arguments.size() > 1 ? std::stoi(arg(1)) : 1;
   Options oc("campaign", "collapse benchmark", campaign_option_specs());
   std::vector<std::string> args = {"--config", src + "/studies/fragility-default.ini"};
-  if (argc > 5) args.insert(args.end(), argv + 5, argv + argc);
+  if (arguments.size() > 3) args.insert(args.end(), arguments.begin() + 3, arguments.end());
   oc.parse(args);
   const CampaignStudy study = campaign_from_options(oc, samples, -1);
   CampaignStudy bilinear = study, no_stop = study;
   for (auto& b : bilinear.row.buildings) b.hysteresis = "bilinear";
   no_stop.collapse_drift_ratio = std::numeric_limits<double>::infinity();
   SampleRunner run_imk(study), run_bil(bilinear), run_nostop(no_stop);
-  if (argc > 4 && std::string(argv[4]) != "both") {  // profiling: one law's samples alone
-    const std::string law = argv[4];
+  if (arguments.size() > 2 && arg(2) != "both") {  // profiling: one law's samples alone
+    const std::string law = arg(2);
     if (law != "imk" && law != "bilinear") {
-      std::fprintf(stderr, "bench_collapse: law '%s': valid: imk, bilinear, both\n", law.c_str());
+      std::fprintf(stderr, "bench_speed collapse: law '%s': valid: imk, bilinear, both\n", law.c_str());
       return 2;
     }
     SampleOutcome o;
@@ -85,7 +88,7 @@ int main(int argc, char** argv) {
   }
 
   std::printf(
-      "collapse benchmark (issue 23): studies/fragility-default.ini, samples 0-%ld, storeys %s, "
+      "\n6. collapse (issue 23): studies/fragility-default.ini, samples 0-%ld, storeys %s, "
       "P-Delta %s, collapse at drift ratio %g; process CPU time per sample, the smallest of %d\n",
       samples - 1, study.row.buildings[0].hysteresis.c_str(),
       study.row.buildings[0].p_delta ? "on" : "off", study.collapse_drift_ratio, repeat);

@@ -10,8 +10,11 @@
 // Times are process CPU times (one thread), robust on a shared machine; wall times beside.
 //   4. yielding buildings: samples of the default study against elastic storeys and the reference.
 //   5. the cost of a default-study sample per contact model, its motion apart (issue 13).
+//   6. imk storeys against bilinear ones on the default study, and the time the stop at
+//      collapse saves (issue 23; bench/collapse_bench.cpp).
 // Usage: bench_speed [source dir [quick | lumped [check] | sample ID | inelastic [N] |
-// samples [N [REPEAT [MODEL [spectral|none]]]] | ch8 | fine-step | contact-steps]] (default:
+// samples [N [REPEAT [MODEL [spectral|none]]]] | collapse [N [REPEAT [imk|bilinear|both
+// [--key value ...]]]] | ch8 | fine-step | contact-steps]] (default:
 // the source tree it was built from; "quick": only the event-driven chapter 8 run, for profiling;
 // "fine-step": the event path's fine step against the fixed path; "contact-steps": the longer
 // steps through smooth contact forces at several sears.contact_step_tolerance values;
@@ -28,6 +31,7 @@
 #include <vector>
 
 #include "campaign/campaign_study.hpp"
+#include "collapse_bench.hpp"
 #include "campaign/sample.hpp"
 #include "contact/registry.hpp"
 #include "io/options.hpp"
@@ -451,6 +455,8 @@ int main(int argc, char** argv) {
                  std::vector<std::string>(argv + std::min(argc, 7), argv + argc));
     return 0;
   }
+  if (argc > 2 && std::string(argv[2]) == "collapse")  // case 6 alone
+    return collapse_case(src, std::vector<std::string>(argv + 3, argv + argc));
   if (argc > 2 && std::string(argv[2]) == "inelastic") {  // case 4 alone
     inelastic_case(src, argc > 3 ? std::stol(argv[3]) : 24);
     return 0;
@@ -608,5 +614,5 @@ int main(int argc, char** argv) {
       study.motion_duration, study.generator.dt, cpu_motion / kSamples);
   inelastic_case(src, 24);
   samples_case(src, 48, 3);
-  return 0;
+  return collapse_case(src, {});
 }
