@@ -76,7 +76,8 @@ int collapse_case(const std::string& src, const std::vector<std::string>& argume
   if (arguments.size() > 2 && arg(2) != "both") {  // profiling: one law's samples alone
     const std::string law = arg(2);
     if (law != "imk" && law != "bilinear") {
-      std::fprintf(stderr, "bench_speed collapse: law '%s': valid: imk, bilinear, both\n", law.c_str());
+      std::fprintf(stderr, "bench_speed collapse: law '%s': valid: imk, bilinear, both\n",
+                   law.c_str());
       return 2;
     }
     SampleOutcome o;

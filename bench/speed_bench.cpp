@@ -31,8 +31,8 @@
 #include <vector>
 
 #include "campaign/campaign_study.hpp"
-#include "collapse_bench.hpp"
 #include "campaign/sample.hpp"
+#include "collapse_bench.hpp"
 #include "contact/registry.hpp"
 #include "io/options.hpp"
 #include "motion/simqke.hpp"
