@@ -31,7 +31,10 @@ const char* const kExitStatusHelp =
     "\nExit status: 0 finished (RUN.h5 complete, or already complete); 2 bad input, or a file\n"
     "that cannot be written (read-only, no permission: the journal is kept); 4 finished with\n"
     "failed samples (their messages are in RUN.h5); 75 (EX_TEMPFAIL) stopped early by\n"
-    "SIGTERM, SIGUSR1, SIGINT or a full disk, the journal kept: run again with --resume.\n";
+    "SIGTERM, SIGUSR1, SIGINT or a full disk, the journal kept: run again with --resume.\n"
+    "Under mpirun the status is mpirun's: it passes 75 on when the ranks are signalled, or\n"
+    "when mpirun gets SIGUSR1 (which it forwards); Ctrl-C or SIGTERM to mpirun itself stops\n"
+    "the ranks the same way, journal kept, but mpirun then exits 1.\n";
 
 bool exists(const std::string& p) {
   struct stat s;

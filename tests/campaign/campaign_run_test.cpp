@@ -288,6 +288,39 @@ TEST(CampaignRun, SigtermStopsCleanlyAndTheRunResumes) {
   expect_same_numbers(ref, cut);
 }
 
+// Under mpirun the exit status a script sees is mpirun's. SIGUSR1 sent to mpirun itself (the
+// way to stop a run by hand, docs/campaign.md) is forwarded to the ranks, which stop cleanly,
+// and mpirun passes their 75 on; the journal resumes to the uninterrupted file.
+TEST(CampaignRun, SigusrToMpirunStopsTheRanksAndMpirunExitsSeventyFive) {
+  const std::string ref = dir() + "/ref_usr.h5", cut = dir() + "/usr.h5";
+  const std::string n = "--samples 160";
+  ASSERT_EQ(sh(pound(n + " --out " + ref)), 0);
+  const std::string started = dir() + "/usr.started";
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    ::execl("/bin/sh", "sh", "-c",
+            ("exec mpirun -np 2 --oversubscribe " +
+             pound(n + " --out " + cut + " --started-file " + started))
+                .c_str(),
+            nullptr);
+    ::_exit(127);
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  while (!fs::exists(started) && std::chrono::steady_clock::now() - t0 < std::chrono::seconds(120))
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  ASSERT_TRUE(fs::exists(started)) << "the campaign did not start within 120 s";
+  const int status = signal_and_wait(pid, SIGUSR1);
+  ASSERT_TRUE(WIFEXITED(status));
+  if (fs::exists(cut + ".journal")) {  // stopped before the end (the usual case)
+    EXPECT_EQ(WEXITSTATUS(status), 75) << "mpirun passes the ranks' EX_TEMPFAIL on";
+    EXPECT_FALSE(fs::exists(cut));
+    ASSERT_EQ(sh(pound(n + " --out " + cut + " --resume")), 0);
+  } else {
+    EXPECT_EQ(WEXITSTATUS(status), 0) << "the run finished before the signal";
+  }
+  expect_same_numbers(ref, cut);
+}
+
 TEST(CampaignRun, PartsOfASplitCampaignMergeIntoTheSingleRun) {
   // Three sample ranges (as three jobs of a Slurm array would run them), merged. Two contact
   // models and a collapse limit that the stronger stripes pass: the collapse shares and the
