@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "../support/campaign_process.hpp"
 #include "../support/scratch_dir.hpp"
 #include "../support/shell.hpp"
 
@@ -34,14 +35,7 @@ int sh(const std::string& cmd) {
 
 // A 40-sample campaign of the smoke study (four PGA stripes), made once.
 const std::string& campaign() {
-  static const std::string out = [] {
-    const std::string o = dir() + "/run.h5";
-    const std::string cmd = std::string(POUND_BINARY) + " campaign --config " + POUND_SOURCE_DIR +
-                            "/studies/campaign-smoke.ini --samples 40 --quiet --out " + o + " 2>" +
-                            dir() + "/campaign.log";
-    EXPECT_EQ(sh(cmd), 0) << slurp(dir() + "/campaign.log");
-    return o;
-  }();
+  static const std::string out = pound::test::make_smoke_campaign(dir() + "/run.h5", 40);
   return out;
 }
 
@@ -120,16 +114,10 @@ TEST(CmdFragility, JsonCurvesFilesAndUntouchedCampaign) {
 // ductility, building 2 has none) and residual drift and ductility limits in the study's
 // [fragility] section.
 const std::string& inelastic_campaign() {
-  static const std::string out = [] {
-    const std::string o = dir() + "/duct.h5";
-    const std::string cmd = std::string(POUND_BINARY) + " campaign --config " + POUND_SOURCE_DIR +
-                            "/studies/campaign-smoke.ini --samples 40 --quiet"
-                            " --building1.yield_shears 150 --fragility.ductility_limits 1.5"
-                            " --fragility.residual_drift_limits 0.002 --out " +
-                            o + " 2>" + dir() + "/duct.log";
-    EXPECT_EQ(sh(cmd), 0) << slurp(dir() + "/duct.log");
-    return o;
-  }();
+  static const std::string out = pound::test::make_smoke_campaign(
+      dir() + "/duct.h5", 40,
+      "--building1.yield_shears 150 --fragility.ductility_limits 1.5"
+      " --fragility.residual_drift_limits 0.002");
   return out;
 }
 

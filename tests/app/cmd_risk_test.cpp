@@ -10,6 +10,7 @@
 #include <sstream>
 #include <string>
 
+#include "../support/campaign_process.hpp"
 #include "../support/scratch_dir.hpp"
 #include "../support/shell.hpp"
 
@@ -30,15 +31,7 @@ int sh(const std::string& cmd) {
 
 // A 48-sample campaign of the smoke study (stripes 0.1-0.4 g), made once.
 const std::string& campaign() {
-  static const std::string out = [] {
-    const std::string o = dir() + "/run.h5";
-    EXPECT_EQ(sh(std::string(POUND_BINARY) + " campaign --config " + POUND_SOURCE_DIR +
-                 "/studies/campaign-smoke.ini --samples 48 --quiet --out " + o + " 2>" + dir() +
-                 "/campaign.log"),
-              0)
-        << slurp(dir() + "/campaign.log");
-    return o;
-  }();
+  static const std::string out = pound::test::make_smoke_campaign(dir() + "/run.h5", 48);
   return out;
 }
 

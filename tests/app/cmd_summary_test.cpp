@@ -10,6 +10,7 @@
 #include <sstream>
 #include <string>
 
+#include "../support/campaign_process.hpp"
 #include "../support/scratch_dir.hpp"
 #include "../support/shell.hpp"
 
@@ -29,11 +30,9 @@ int sh(const std::string& cmd) {
 }
 
 TEST(CmdSummary, StoredAndRecomputedStatisticsAgree) {
-  const std::string run = dir() + "/sum.h5", log = dir() + "/sum.log";
-  ASSERT_EQ(sh(std::string(POUND_BINARY) + " campaign --config " + POUND_SOURCE_DIR +
-               "/studies/campaign-smoke.ini --samples 40 --quiet --out " + run + " 2>" + log),
-            0)
-      << slurp(log);
+  const std::string run = pound::test::make_smoke_campaign(dir() + "/sum.h5", 40);
+  ASSERT_FALSE(::testing::Test::HasFailure());
+  const std::string log = dir() + "/sum.log";
   const std::string a = dir() + "/a.json", b = dir() + "/b.json", old = dir() + "/old.h5";
   ASSERT_EQ(sh(std::string(POUND_BINARY) + " summary --input " + run + " --json > " + a), 0);
   fs::copy_file(run, old, fs::copy_options::overwrite_existing);
@@ -81,14 +80,11 @@ TEST(CmdSummary, StoredAndRecomputedStatisticsAgree) {
 // the file's own datasets; without the collapse arrays (a file older than issue 23) the same
 // output without them; a group written before them is completed in memory.
 TEST(CmdSummary, CollapseSharesAndPerModelTables) {
-  const std::string run = dir() + "/models.h5", log = dir() + "/models.log";
-  ASSERT_EQ(sh(std::string(POUND_BINARY) + " campaign --config " + POUND_SOURCE_DIR +
-               "/studies/campaign-smoke.ini --samples 40 --quiet --out " + run +
-               " --sample.model 'discrete(hc-linear: 1, lve: 1)'"
-               " --simulation.collapse_drift_ratio 0.01 2>" +
-               log),
-            0)
-      << slurp(log);
+  const std::string run = pound::test::make_smoke_campaign(
+      dir() + "/models.h5", 40,
+      "--sample.model 'discrete(hc-linear: 1, lve: 1)' --simulation.collapse_drift_ratio 0.01");
+  ASSERT_FALSE(::testing::Test::HasFailure());
+  const std::string log = dir() + "/models.log";
   const std::string a = dir() + "/models-a.json", b = dir() + "/models-b.json";
   const std::string c = dir() + "/models-c.json";
   const std::string older = dir() + "/models-older.h5", partial = dir() + "/models-partial.h5";

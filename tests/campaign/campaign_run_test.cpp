@@ -18,6 +18,7 @@
 #include <thread>
 #include <vector>
 
+#include "../support/campaign_process.hpp"
 #include "../support/scratch_dir.hpp"
 
 namespace {
@@ -40,50 +41,8 @@ int sh(const std::string& cmd) {
   return WIFEXITED(s) ? WEXITSTATUS(s) : -1;
 }
 
-std::vector<char> read_raw(const std::string& file, const std::string& path) {
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  const hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-  EXPECT_GE(f, 0) << file;
-  const hid_t d = H5Dopen2(f, path.c_str(), H5P_DEFAULT);
-  EXPECT_GE(d, 0) << path;
-  const hid_t t = H5Dget_type(d);
-  const hid_t s = H5Dget_space(d);
-  const std::size_t n = static_cast<std::size_t>(H5Sget_simple_extent_npoints(s)) * H5Tget_size(t);
-  std::vector<char> buf(n);
-  H5Dread(d, t, H5S_ALL, H5S_ALL, H5P_DEFAULT, buf.data());
-  H5Sclose(s);
-  H5Tclose(t);
-  H5Dclose(d);
-  H5Fclose(f);
-  return buf;
-}
-
-void expect_same_numbers(const std::string& a, const std::string& b) {
-  for (const char* p : {"/samples/id",
-                        "/samples/status",
-                        "/samples/im",
-                        "/samples/scale",
-                        "/samples/e",
-                        "/samples/gap",
-                        "/samples/k_factor",
-                        "/response/peak_disp_pounding",
-                        "/response/peak_disp_free",
-                        "/response/peak_drift_pounding",
-                        "/response/peak_drift_free",
-                        "/response/peak_accel_pounding",
-                        "/response/peak_accel_free",
-                        "/response/residual_drift_pounding",
-                        "/response/residual_drift_free",
-                        "/response/ductility_pounding",
-                        "/response/ductility_free",
-                        "/response/hysteretic_energy_pounding",
-                        "/response/hysteretic_energy_free",
-                        "/response/peak_force",
-                        "/response/impacts",
-                        "/response/approach_free"}) {
-    EXPECT_EQ(read_raw(a, p), read_raw(b, p)) << p << " differs between " << a << " and " << b;
-  }
-}
+using pound::test::expect_same_numbers;
+using pound::test::read_raw;
 
 // The "units" attribute of a dataset ("" when absent).
 std::string units_of(const std::string& file, const std::string& path) {
@@ -161,11 +120,12 @@ TEST(CampaignRun, SameNumbersOnOneAndTwoRanksWithSpectralVariability) {
   EXPECT_NE(read_raw(one, "/samples/scale"), read_raw(none, "/samples/scale"));
 }
 
-// Starts `pound campaign` with these arguments in the background.
-pid_t start_campaign(const std::string& args) {
+// Starts `pound campaign` with these arguments in the background, under `launcher` (e.g.
+// "mpirun -np 2") when one is given: the process returned is the launcher's.
+pid_t start_campaign(const std::string& args, const std::string& launcher = "") {
   const pid_t pid = ::fork();
   if (pid == 0) {
-    ::execl("/bin/sh", "sh", "-c", ("exec " + pound(args)).c_str(), nullptr);
+    ::execl("/bin/sh", "sh", "-c", ("exec " + launcher + " " + pound(args)).c_str(), nullptr);
     ::_exit(127);
   }
   return pid;
@@ -264,19 +224,22 @@ TEST(CampaignRun, KilledBatchedRunOnThreeRanksResumesToTheUninterruptedFile) {
   expect_same_numbers(ref, cut);
 }
 
-TEST(CampaignRun, SigtermStopsCleanlyAndTheRunResumes) {
-  const std::string ref = dir() + "/ref2.h5", cut = dir() + "/term.h5";
+// Starts `launcher pound campaign ...` of 160 samples writing NAME.h5, sends `sig` to the started
+// process once the campaign says that it has started (every rank runs with its handlers),
+// however long MPI start-up takes on this machine, and expects a clean stop with exit status 75
+// whose --resume gives the uninterrupted file (or, rarely, a run that finished first: 0).
+void expect_signal_stops_and_resumes(const std::string& launcher, int sig,
+                                     const std::string& name) {
+  const std::string ref = dir() + "/" + name + "_ref.h5", cut = dir() + "/" + name + ".h5";
   const std::string n = "--samples 160";
   ASSERT_EQ(sh(pound(n + " --out " + ref)), 0);
-  // SIGTERM once the campaign says that it has started (every rank runs with its handlers),
-  // however long MPI start-up takes on this machine.
-  const std::string started = dir() + "/term.started";
-  const pid_t pid = start_campaign(n + " --out " + cut + " --started-file " + started);
+  const std::string started = dir() + "/" + name + ".started";
+  const pid_t pid = start_campaign(n + " --out " + cut + " --started-file " + started, launcher);
   const auto t0 = std::chrono::steady_clock::now();
   while (!fs::exists(started) && std::chrono::steady_clock::now() - t0 < std::chrono::seconds(120))
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   ASSERT_TRUE(fs::exists(started)) << "the campaign did not start within 120 s";
-  const int status = signal_and_wait(pid, SIGTERM);
+  const int status = signal_and_wait(pid, sig);
   ASSERT_TRUE(WIFEXITED(status));
   if (fs::exists(cut + ".journal")) {  // stopped before the end (the usual case)
     EXPECT_EQ(WEXITSTATUS(status), 75) << "stopped early: EX_TEMPFAIL, resumable";
@@ -288,37 +251,15 @@ TEST(CampaignRun, SigtermStopsCleanlyAndTheRunResumes) {
   expect_same_numbers(ref, cut);
 }
 
+TEST(CampaignRun, SigtermStopsCleanlyAndTheRunResumes) {
+  expect_signal_stops_and_resumes("", SIGTERM, "term");
+}
+
 // Under mpirun the exit status a script sees is mpirun's. SIGUSR1 sent to mpirun itself (the
 // way to stop a run by hand, docs/campaign.md) is forwarded to the ranks, which stop cleanly,
-// and mpirun passes their 75 on; the journal resumes to the uninterrupted file.
+// and mpirun passes their 75 on.
 TEST(CampaignRun, SigusrToMpirunStopsTheRanksAndMpirunExitsSeventyFive) {
-  const std::string ref = dir() + "/ref_usr.h5", cut = dir() + "/usr.h5";
-  const std::string n = "--samples 160";
-  ASSERT_EQ(sh(pound(n + " --out " + ref)), 0);
-  const std::string started = dir() + "/usr.started";
-  const pid_t pid = ::fork();
-  if (pid == 0) {
-    ::execl("/bin/sh", "sh", "-c",
-            ("exec mpirun -np 2 --oversubscribe " +
-             pound(n + " --out " + cut + " --started-file " + started))
-                .c_str(),
-            nullptr);
-    ::_exit(127);
-  }
-  const auto t0 = std::chrono::steady_clock::now();
-  while (!fs::exists(started) && std::chrono::steady_clock::now() - t0 < std::chrono::seconds(120))
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  ASSERT_TRUE(fs::exists(started)) << "the campaign did not start within 120 s";
-  const int status = signal_and_wait(pid, SIGUSR1);
-  ASSERT_TRUE(WIFEXITED(status));
-  if (fs::exists(cut + ".journal")) {  // stopped before the end (the usual case)
-    EXPECT_EQ(WEXITSTATUS(status), 75) << "mpirun passes the ranks' EX_TEMPFAIL on";
-    EXPECT_FALSE(fs::exists(cut));
-    ASSERT_EQ(sh(pound(n + " --out " + cut + " --resume")), 0);
-  } else {
-    EXPECT_EQ(WEXITSTATUS(status), 0) << "the run finished before the signal";
-  }
-  expect_same_numbers(ref, cut);
+  expect_signal_stops_and_resumes("mpirun -np 2 --oversubscribe", SIGUSR1, "usr");
 }
 
 TEST(CampaignRun, PartsOfASplitCampaignMergeIntoTheSingleRun) {

@@ -1,6 +1,7 @@
 #pragma once
-// Runs `pound campaign` as a separate process for the tests of how a campaign stops
-// (tests/campaign/campaign_stop*_test.cpp), and compares the numbers of two result files.
+// Runs `pound campaign` as a separate process (the tests of how a campaign stops and resumes in
+// tests/campaign, the small campaigns of the command tests in tests/app), and compares the
+// numbers of two result files.
 #include <gtest/gtest.h>
 #include <hdf5.h>
 #include <stdlib.h>
@@ -33,6 +34,20 @@ inline std::string campaign_command(const std::string& args) {
   return std::string(POUND_BINARY) + " campaign --config " + kSmokeStudy + " --quiet " + args;
 }
 
+/// Makes `out`: a campaign of the smoke study with `samples` samples and the further arguments
+/// `extra`, its stderr in out + ".log" (shown when it fails, which fails the calling test).
+/// Returns `out`.
+inline std::string make_smoke_campaign(const std::string& out, int samples,
+                                       const std::string& extra = "") {
+  const std::string log = out + ".log";
+  EXPECT_EQ(run_command(campaign_command("--samples " + std::to_string(samples) + " " + extra +
+                                         " --out " + out) +
+                        " 2>" + log),
+            0)
+      << slurp(log);
+  return out;
+}
+
 /// Runs `cmd` through sh with stderr to `log` (sh -c 'exec CMD 2>LOG'). Returns the wait status.
 inline int run_shell(const std::string& cmd, const std::string& log) {
   ::setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
@@ -59,6 +74,7 @@ inline std::vector<char> read_raw(const std::string& file, const std::string& pa
   const hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   EXPECT_GE(f, 0) << file;
   const hid_t d = H5Dopen2(f, path.c_str(), H5P_DEFAULT);
+  EXPECT_GE(d, 0) << path;
   const hid_t t = H5Dget_type(d);
   const hid_t s = H5Dget_space(d);
   std::vector<char> buf(static_cast<std::size_t>(H5Sget_simple_extent_npoints(s)) * H5Tget_size(t));
@@ -72,11 +88,28 @@ inline std::vector<char> read_raw(const std::string& file, const std::string& pa
 
 /// The sampled inputs and the responses of two result files agree bit for bit.
 inline void expect_same_numbers(const std::string& a, const std::string& b) {
-  for (const char* p :
-       {"/samples/id", "/samples/status", "/samples/im", "/samples/scale", "/samples/e",
-        "/samples/gap", "/samples/k_factor", "/response/peak_disp_pounding",
-        "/response/peak_drift_free", "/response/peak_accel_pounding",
-        "/response/ductility_pounding", "/response/peak_force", "/response/impacts"})
+  for (const char* p : {"/samples/id",
+                        "/samples/status",
+                        "/samples/im",
+                        "/samples/scale",
+                        "/samples/e",
+                        "/samples/gap",
+                        "/samples/k_factor",
+                        "/response/peak_disp_pounding",
+                        "/response/peak_disp_free",
+                        "/response/peak_drift_pounding",
+                        "/response/peak_drift_free",
+                        "/response/peak_accel_pounding",
+                        "/response/peak_accel_free",
+                        "/response/residual_drift_pounding",
+                        "/response/residual_drift_free",
+                        "/response/ductility_pounding",
+                        "/response/ductility_free",
+                        "/response/hysteretic_energy_pounding",
+                        "/response/hysteretic_energy_free",
+                        "/response/peak_force",
+                        "/response/impacts",
+                        "/response/approach_free"})
     EXPECT_EQ(read_raw(a, p), read_raw(b, p)) << p << " differs between " << a << " and " << b;
 }
 
