@@ -244,7 +244,9 @@ def damping_table(work):
 
 def model_facts(work):
     """What the two sampled contact models do differently: the median acceleration amplification
-    of the 5-storey's third floor per stripe, per model (from the campaign file)."""
+    of the 5-storey's third floor per stripe, per model (from the campaign file), over the
+    samples in which the building's pounding run was not stopped by the other's collapse (as
+    /amplification and pound summary)."""
     import h5py
     import numpy as np
     out = []
@@ -253,18 +255,21 @@ def model_facts(work):
         model = np.array([m.decode() if isinstance(m, bytes) else m for m in h["/samples/model"][()]])
         ok = h["/samples/status"][()] == 0
         ap, af = h["/response/peak_accel_pounding"][()], h["/response/peak_accel_free"][()]
+        cp = h["/response/collapsed_pounding"][()]
+        # standing[:, b]: building b's pounding run was not stopped by the other's collapse
+        standing = np.stack([~((cp[:, b] != 1) & (cp[:, 1 - b] == 1)) for b in (0, 1)], axis=1)
         amp = ap[:, 0, 2] / af[:, 0, 2]
         for m in ("sears", "hc-linear", None):
             cells = []
             for level in np.unique(im[ok]):
-                sel = ok & (im == level) & ((model == m) if m else True)
-                cells.append(f"{np.nanmedian(amp[sel]):.2f}")
+                sel = ok & standing[:, 0] & (im == level) & ((model == m) if m else True)
+                cells.append(f"{np.nanmedian(amp[sel]):.2f}" if sel.any() else "-")
             out.append(f"- 5-storey floor 3 acceleration amplification, median per stripe "
                        f"({m or 'pooled'}): " + ", ".join(cells))
         for m in ("sears", "hc-linear"):
             sel = ok & (model == m) & (im >= 0.3) & (im <= 0.6)
             for b, f in ((0, 2), (1, 2)):
-                r = ap[sel, b, f] / af[sel, b, f]
+                r = ap[sel & standing[:, b], b, f] / af[sel & standing[:, b], b, f]
                 out.append(f"- {m}, 0.3-0.6 g, building {b + 1} floor {f + 1}: acceleration "
                            f"amplification median {np.nanmedian(r):.2f}, 16/84 % "
                            f"{np.nanpercentile(r, 16):.2f}/{np.nanpercentile(r, 84):.2f}")

@@ -5,9 +5,11 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 
 #include "campaign/amplification_file.hpp"
 #include "campaign/campaign_rows.hpp"
+#include "campaign/collapse_flags.hpp"
 #include "core/error.hpp"
 #include "io/h5.hpp"
 #include "io/options.hpp"
@@ -66,6 +68,8 @@ struct Pass {
   SampleRows& rows;
   const IntensityGrouping& grouping;
   std::vector<long> successful;  // per group: successful samples the filter keeps
+  // /response/collapsed_pounding [samples, buildings], null in a file older than issue 23.
+  const RowBlocks* collapsed = nullptr;
 
   // The group of row i of the last block read; -1 for a sample not used (failed, in no group,
   // or of another model).
@@ -75,20 +79,31 @@ struct Pass {
     return grouping.group(rows.id[i], ok, rows.im[i]);
   }
   // Block by block, the columns [a0, a0 + na) of two datasets of the same layout (RowBlocks::
-  // rows), and f(k, x, y) for each row in a group k (group_of >= 0), x and y its values.
+  // rows), and f(k, x, y) for each row in a group k (group_of >= 0), x and y its values. With
+  // `standing` = a building's index, the rows where that building's pounding run was stopped
+  // by another building's collapse are left out (stopped_by_another: its pounding peaks cover
+  // only part of the record, its free peaks all of it).
   template <class F>
-  void each_used_row(const RowBlocks& a, const RowBlocks& b, hsize_t a0, hsize_t na, F&& f) const {
-    std::vector<double> va, vb;
+  void each_used_row(const RowBlocks& a, const RowBlocks& b, hsize_t a0, hsize_t na, F&& f,
+                     long standing = -1) const {
+    std::vector<double> va, vb, vc;
     const hsize_t n = rows.rows();
+    // (collapse_statistics refuses a file whose flags are not [samples, buildings])
+    const bool censor = standing >= 0 && collapsed != nullptr && collapsed->dims().size() == 2 &&
+                        collapsed->dims()[0] == n && hsize_t(standing) < collapsed->dims()[1];
+    const std::size_t nb = censor ? collapsed->dims()[1] : 0;
     for (hsize_t row = 0; row < n; row += kBlockRows) {
       const hsize_t count = std::min(kBlockRows, n - row);
       rows.read(row, count);
       a.rows(row, count, a0, na, va);
       b.rows(row, count, a0, na, vb);
+      if (censor) collapsed->rows(row, count, 0, nb, vc);
       const std::size_t width = va.size() / count;
       for (hsize_t i = 0; i < count; ++i)
-        if (const int k = group_of(i); k >= 0)
+        if (const int k = group_of(i); k >= 0) {
+          if (censor && stopped_by_another(vc.data() + i * nb, nb, std::size_t(standing))) continue;
           f(std::size_t(k), va.data() + i * width, vb.data() + i * width);
+        }
     }
   }
 };
@@ -106,7 +121,8 @@ IntensityGroups tally_groups(SampleRows& rows, const IntensityGrouping& grouping
   return tally.result(levels);
 }
 
-// The statistics of one building's ratios pounding / free of measure `out` [G, B, F].
+// The statistics of one building's ratios pounding / free of measure `out` [G, B, F], over the
+// samples in which its pounding run was not stopped by another building's collapse.
 void building_ratios(const Pass& p, const RowBlocks& pd, const RowBlocks& fd, std::size_t b,
                      AmplificationTable& t, AmplificationMeasure& out) {
   const std::size_t G = t.groups, F = t.floors;
@@ -115,12 +131,15 @@ void building_ratios(const Pass& p, const RowBlocks& pd, const RowBlocks& fd, st
     for (std::size_t fl = 0; fl < F; ++fl)
       cells.emplace_back(p.successful[k], cell_capacity(G * F));
   // Failed samples are counted, not used.
-  p.each_used_row(pd, fd, b, 1, [&](std::size_t k, const double* bp, const double* bf) {
-    for (std::size_t f = 0; f < F; ++f) {
-      const double x = bp[f], q = bf[f];
-      if (std::isfinite(x) && std::isfinite(q) && q > 0.0) cells[k * F + f].add(x / q);
-    }
-  });
+  p.each_used_row(
+      pd, fd, b, 1,
+      [&](std::size_t k, const double* bp, const double* bf) {
+        for (std::size_t f = 0; f < F; ++f) {
+          const double x = bp[f], q = bf[f];
+          if (std::isfinite(x) && std::isfinite(q) && q > 0.0) cells[k * F + f].add(x / q);
+        }
+      },
+      long(b));
   for (std::size_t k = 0; k < G; ++k)
     for (std::size_t f = 0; f < F; ++f) {
       const ValueSummary s = cells[k * F + f].summary();
@@ -221,8 +240,6 @@ void collapse_statistics(const Pass& p, AmplificationTable& t) {
   p.each_used_row(cp, cf, 0, B, [&](std::size_t k, const double* bp, const double* bf) {
     // The pounding run stops at the row's first collapse: a building standing then, beside
     // one that collapsed, was stopped.
-    bool any = false;
-    for (std::size_t b = 0; b < B; ++b) any = any || bp[b] > 0.5;
     for (std::size_t b = 0; b < B; ++b) {
       const double x = bp[b], y = bf[b];
       if (!std::isfinite(x) || !std::isfinite(y)) continue;
@@ -230,7 +247,7 @@ void collapse_statistics(const Pass& p, AmplificationTable& t) {
       ++t.collapse_count[at];
       with[at] += x > 0.5;  // 1 collapsed, 0 standing
       without[at] += y > 0.5;
-      stopped[at] += any && !(x > 0.5);
+      stopped[at] += stopped_by_another(bp, B, b);
     }
   });
   t.collapsed_pounding.assign(S, kNaN);
@@ -258,6 +275,11 @@ AmplificationTable table_of(hid_t file, const std::string& path, SampleRows& row
   t.failed = g.failed;
   t.failed_total = g.failed_total;
   Pass p{file, path, rows, grouping, {}};
+  std::unique_ptr<RowBlocks> collapsed;
+  if (H5Lexists(file, "/response/collapsed_pounding", H5P_DEFAULT) > 0) {
+    collapsed = std::make_unique<RowBlocks>(file, "/response/collapsed_pounding", path);
+    p.collapsed = collapsed.get();
+  }
   for (std::size_t k = 0; k < t.groups; ++k) p.successful.push_back(g.samples[k] - g.failed[k]);
   measure_statistics(p, t);
   contact_statistics(p, t);

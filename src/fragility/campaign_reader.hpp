@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "campaign/collapse_flags.hpp"
+
 namespace pound {
 
 /// Responses per sample, building and floor, row-major [samples][buildings][floors]
@@ -79,10 +81,9 @@ struct CampaignData {
   /// Whether the pounding run of sample s stopped at another building's collapse while
   /// building b stood: b's later response is unknown (the run stops at its first collapse).
   bool censored(std::size_t s, std::size_t b) const {
-    if (collapsed(s, b, true)) return false;
-    for (std::size_t o = 0; o < buildings; ++o)
-      if (o != b && collapsed(s, o, true)) return true;
-    return false;
+    const auto it = building_arrays.find("collapsed_pounding");
+    return it != building_arrays.end() &&
+           stopped_by_another(it->second.data() + s * buildings, buildings, b);
   }
   /// Each sample's contact model when the study samples it (/samples/model), else empty.
   std::vector<std::string> model;

@@ -143,10 +143,13 @@ void rank_sensitivity(const CampaignData& c, const std::vector<std::size_t>& use
   for (std::size_t b = 0; b < c.buildings; ++b)
     for (const Edp e : {Edp::disp, Edp::drift}) {
       if (!c.has(dataset_of(e, true)) || !c.has(dataset_of(e, false))) continue;
-      // Amplification = pounding / free, on the samples where both are finite and free > 0.
+      // Amplification = pounding / free, on the samples where both are finite and free > 0 and
+      // the pounding run was not stopped by another building's collapse (CampaignData::
+      // censored: its pounding peak would cover only part of the record).
       std::vector<std::size_t> rows;
       std::vector<double> y;
       for (std::size_t k = 0; k < used.size(); ++k) {
+        if (c.censored(used[k], b)) continue;
         const double p = edp_value(c, e, true, used[k], b), f = edp_value(c, e, false, used[k], b);
         if (std::isfinite(p) && std::isfinite(f) && f > 0) rows.push_back(k), y.push_back(p / f);
       }

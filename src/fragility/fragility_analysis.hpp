@@ -57,8 +57,9 @@ struct FragilityCurve {
   /// Analyses left out of this curve [-]: their EDP is not finite (the ductility of a building
   /// without yield_shears is NaN) or they are censored (below); the fit uses the others.
   std::size_t left_out = 0;
-  /// Of those, the pounding run's analyses stopped at another building's collapse before this
-  /// building exceeded the limit (right-censored: the outcome is unknown) [-].
+  /// Of those, the pounding run's analyses stopped at another building's collapse while this
+  /// building stood (right-censored: its later response is unknown), all left out, also those
+  /// in which it had exceeded the limit before the stop (docs/fragility.md, "Collapse") [-].
   std::size_t censored = 0;
   LognormalFit fit;
   Interval theta_ci, beta_ci;                   ///< bootstrap percentile bands
