@@ -7,8 +7,9 @@
 #           frag.h5 --samples 400000
 #
 # Prints "ARRAYJOBID MERGEJOBID" on stdout. Each chunk job exits with pound campaign's status
-# (0 complete, 4 complete with failed samples, 75 stopped early with its journal kept, else an
-# error); the merge runs only when every chunk exited 0 (afterok), otherwise Slurm cancels it.
+# (0 complete, also when some samples failed: pound campaign's 4, logged; 75 stopped early with
+# its journal kept, else an error); the merge runs only when every chunk exited 0 (afterok),
+# otherwise Slurm cancels it.
 # Running the same command again after some chunks stopped early (time limit) or failed
 # resumes them: finished chunks end at once (exit 0), the others continue from their journals,
 # and a new merge job follows.

@@ -17,6 +17,14 @@ from ._options import Keys, arguments
 _RECORD_KEYS = Keys(_engine.record_keys())
 _TARGET_KEYS = Keys(_engine.target_keys())
 _GENERATE_KEYS = Keys(_engine.generate_keys())
+# `pound motion spectrum`'s keys that read and process a record file: response_spectrum takes
+# the record as (dt, ag) and would otherwise leave them without effect.
+_PROCESSED = ("the record is given as (dt, ag), already read: pound.motion.read_record(path, "
+              "scale=..., truncate=..., baseline=...) reads and processes a file")
+_SPECTRUM_REFUSED = {k: _PROCESSED for k in ("input", "format", "units", "dt", "truncate",
+                                             "scale", "baseline")}
+_SPECTRUM_REFUSED.update({"accept-any-pga": "use check_pga=False",
+                          "json": "the result is returned"})
 
 
 class Record(NamedTuple):
@@ -66,7 +74,7 @@ def response_spectrum(motion, periods=None, damping=None, substep=None, check_pg
     """
     dt, accel = motion[0], motion[1]
     keys = dict(keys, periods=periods, damping=damping, substep=substep)
-    args = arguments(_RECORD_KEYS, None, keys)
+    args = arguments(_RECORD_KEYS, None, keys, _SPECTRUM_REFUSED)
     if not check_pga:
         args.append("--accept-any-pga")
     return _engine.response_spectrum(args, float(dt), np.asarray(accel, dtype=float), "motion",

@@ -8,17 +8,6 @@
 #include "sears/step_rule.hpp"
 
 namespace pound::sears {
-namespace {
-
-double shortest_building_period(const AssembledRow& a) {
-  double t = std::numeric_limits<double>::infinity();
-  for (const auto& p : a.periods)
-    for (int i = 0; i < p.size(); ++i)
-      if (p(i) > 0.0 && std::isfinite(p(i))) t = std::min(t, p(i));
-  return t;
-}
-
-}  // namespace
 
 void count_impacts(SiteContacts& c, double fraction) {
   double largest = 0.0;
@@ -50,7 +39,7 @@ StepLimits row_step_limits(const BuildingRow& row, const GroundMotion* motion,
   const double t_min = w_max > 0.0 ? 2.0 * M_PI / w_max : std::numeric_limits<double>::infinity();
   StepLimits lim = step_limits(t_min, t_c);
   // Buildings: 20 steps per shortest period; ground motion: no step over a record sample.
-  lim.auto_dt_s = std::min(lim.auto_dt_s, shortest_building_period(a) / 20.0);
+  lim.auto_dt_s = std::min(lim.auto_dt_s, shortest_period(a) / 20.0);
   if (motion) lim.auto_dt_s = std::min(lim.auto_dt_s, motion->dt);
   if (!std::isfinite(lim.auto_dt_s))
     throw InputError("damped Sears model: no time scale (no contacts, springs or record); give dt");
@@ -69,7 +58,7 @@ SearsSteps sears_row_steps(const BuildingRow& row, const GroundMotion* motion,
   st.fine_s = st.coarse_s = choose_step(lim, model.dt_s);
   if (model.stepping == SearsStepping::fixed) return st;
   // The coarse step: Newmark accuracy for the buildings, and no step over a record sample.
-  double hc = shortest_building_period(assemble(row)) * kCoarseStepPerBuildingPeriod;
+  double hc = shortest_period(assemble(row)) * kCoarseStepPerBuildingPeriod;
   if (motion && motion->dt > 0.0) hc = std::min(hc, motion->dt);
   constexpr double kMaxRatio = 1e5;  // no building period and no record: free floors
   if (!std::isfinite(hc)) hc = kMaxRatio * st.fine_s;

@@ -115,8 +115,7 @@ void RowSwitches::apply_storey(RowDynamics& dyn, int k, double t, const Eigen::V
   });
   st.law->on_switch(w.local, st.p, dyn.storey[w.dof], dyn.drift(y, 0, w.dof),
                     dyn.continuous_states(y, w.dof));
-  dyn.storey_changed(w.dof);
-  storey_changed(w.dof, dyn.storey[w.dof]);
+  // The caller (RowRun::apply_event) updates the lines, safe intervals and exact steps once.
 }
 
 }  // namespace pound

@@ -44,8 +44,8 @@ class RowSwitches {
                  const Eigen::VectorXd& dy0, const Eigen::VectorXd& dy1, double h,
                  double& theta) const;
 
-  /// Applies storey switch k (k >= sites()) at state y: the law's new branch; `what` names the
-  /// storey for a chatter error.
+  /// Applies storey switch k (k >= sites()) at state y: the law's new branch (the caller then
+  /// updates what depends on it: RowRun::storey_changed); a chatter error names the storey.
   void apply_storey(RowDynamics& dyn, int k, double t, const Eigen::VectorXd& y);
   /// After storey `dof` changed branch: the drift interval in which its switches cannot fire.
   void storey_changed(int dof, const StoreyState& s);

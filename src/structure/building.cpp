@@ -202,6 +202,11 @@ BuildingMatrices assemble(const Building& b) {
     const Eigen::MatrixXd Phi = s.asDiagonal() * eig.eigenvectors();
     const Eigen::VectorXd d = 2.0 * xi * w;
     out.C = out.M * Phi * d.asDiagonal() * Phi.transpose() * out.M;
+  } else if (n == 1 && b.damping_stiffness == DampingStiffness::tangent) {
+    // One mode: the same ratio from the stiffness alone, C = a1 k0 with a1 = 2 xi / w (Chopra
+    // 11.4.1 with a0 = 0), so that the tangent stiffness has a damping to change.
+    out.rayleigh_a1 = 2.0 * xi / w(0);
+    out.C(0, 0) = out.rayleigh_a1 * out.K(0, 0);
   } else if (n == 1) {
     out.C(0, 0) = 2.0 * xi * w(0) * b.masses[0];
     out.rayleigh_a0 = 2.0 * xi * w(0);

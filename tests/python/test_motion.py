@@ -110,3 +110,18 @@ def test_a_generated_motion_drives_a_simulation():
 def test_log_spaced_periods():
     p = pound.motion.log_spaced_periods(0.1, 10, 3)
     assert p[0] == 0.1 and p[2] == 10 and p[1] == pytest.approx(1.0, rel=1e-15)
+
+
+def test_response_spectrum_refuses_the_keys_that_process_a_record_file():
+    # They act on reading a file; the array is already read: silently dropped, scale=2 gave the
+    # unscaled spectrum. read_record(path, scale=2) scales, and its spectrum doubles.
+    rec = pound.motion.read_record(ELCENTRO)
+    for key, value in (("scale", 2), ("truncate", 8), ("baseline", True), ("dt", 0.01),
+                       ("units", "g"), ("accept_any_pga", True)):
+        with pytest.raises(pound.Error, match=key.replace("_", "-") if key == "accept_any_pga"
+                           else key):
+            pound.motion.response_spectrum(rec, periods=[0.5], **{key: value})
+    one = pound.motion.response_spectrum(rec, periods=[0.5])["psa_mps2"][0]
+    two = pound.motion.response_spectrum(pound.motion.read_record(ELCENTRO, scale=2),
+                                         periods=[0.5])["psa_mps2"][0]
+    assert two == pytest.approx(2 * one, rel=1e-12)

@@ -39,6 +39,25 @@ TEST(Building, RayleighAndModalDampingGiveTheRatioOnTheirModes) {
   }
 }
 
+// One storey: mass-proportional damping, or with damping_stiffness = tangent (whose changes act
+// on the stiffness-proportional part) stiffness-proportional; the same ratio xi on its mode.
+TEST(Building, OneStoreyIsDampedByItsMassOrWithTangentDampingByItsStiffness) {
+  for (DampingStiffness ds : {DampingStiffness::initial, DampingStiffness::tangent}) {
+    Building b = uniform_building(1, 2000.0, 3e6, 0.05);
+    b.damping_stiffness = ds;
+    const BuildingMatrices bm = assemble(b);
+    const double w = std::sqrt(3e6 / 2000.0);
+    EXPECT_NEAR(bm.C(0, 0) / (2 * w * 2000.0), 0.05, 1e-14);
+    if (ds == DampingStiffness::tangent) {
+      EXPECT_EQ(bm.rayleigh_a0, 0.0);
+      EXPECT_NEAR(bm.rayleigh_a1, 2 * 0.05 / w, 1e-15);
+    } else {
+      EXPECT_NEAR(bm.rayleigh_a0, 2 * 0.05 * w, 1e-12);
+      EXPECT_EQ(bm.rayleigh_a1, 0.0);
+    }
+  }
+}
+
 TEST(BuildingRow, UnequalHeightsCollideUpToTheLowerRoof) {
   // A 5-storey building between a 3-storey and a 4-storey one (a row, thesis chapter 2).
   BuildingRow row;
