@@ -94,10 +94,38 @@ ExceedanceDesign exceedance_design(const CampaignData& c, std::vector<std::size_
 }
 
 // Observed fractions for the plots: the stripes, or about ten equal-count IM bins (geometric
-// mean IM of each bin) when the intensity is continuous.
+// mean IM of each bin) when the intensity is continuous. With `bins_of` (the pounding curve's
+// outcomes, for its free curve) the bins are those of its analyses, each from its smallest IM
+// up to the next bin's, so that observations.csv pairs the two curves bin by bin.
 std::vector<Observation> observed_fractions(const ExceedanceDesign& d,
-                                            const std::vector<char>& exceed) {
+                                            const std::vector<char>& exceed,
+                                            const std::vector<char>* bins_of) {
   if (d.stripes()) return observations(d, exceed);
+  if (bins_of) {
+    const std::vector<Observation> ref = observed_fractions(d, *bins_of);
+    std::vector<double> first;  // the smallest IM of each reference bin after the first
+    std::vector<std::size_t> order;
+    for (std::size_t i = 0; i < d.im.size(); ++i)
+      if ((*bins_of)[i] != kLeftOut) order.push_back(i);
+    std::sort(order.begin(), order.end(),
+              [&](std::size_t a, std::size_t b) { return d.im[a] < d.im[b]; });
+    const std::size_t bins = ref.size();
+    if (bins == 0) return {};  // the reference curve kept no analysis
+    for (std::size_t k = 1; k < bins; ++k) first.push_back(d.im[order[k * order.size() / bins]]);
+    std::vector<Observation> out(bins);
+    std::vector<double> log_sum(bins, 0.0);
+    for (std::size_t i = 0; i < d.im.size(); ++i) {
+      if (exceed[i] == kLeftOut) continue;
+      const std::size_t k =
+          std::size_t(std::upper_bound(first.begin(), first.end(), d.im[i]) - first.begin());
+      ++out[k].n;
+      out[k].z += exceed[i] ? 1 : 0;
+      log_sum[k] += std::log(d.im[i]);
+    }
+    for (std::size_t k = 0; k < bins; ++k)
+      out[k].im = out[k].n ? std::exp(log_sum[k] / double(out[k].n)) : ref[k].im;
+    return out;
+  }
   std::vector<std::size_t> order;
   for (std::size_t i = 0; i < d.im.size(); ++i)
     if (exceed[i] != kLeftOut) order.push_back(i);
@@ -282,7 +310,8 @@ void fit_set(const CampaignData& c, const FragilitySettings& s, const AnalysisSe
             fc.censored += z[k] == kLeftOut && pounding && c.censored(set.used[k], b);
           }
           fc.fit = fit_lognormal(observations(set.d, z));
-          fc.observed = observed_fractions(set.d, z);
+          // A free curve's bins are its pounding curve's (pushed just before it).
+          fc.observed = observed_fractions(set.d, z, pounding ? nullptr : &outcomes.back());
           r.curves.push_back(fc);
           if (!pounding && r.curves.size() >= 2 && r.curves[r.curves.size() - 2].censored > 0) {
             // The pounding curve just before: its censored analyses left out here too.

@@ -123,8 +123,11 @@ ExceedanceDesign exceedance_design(const CampaignData& c, std::vector<std::size_
 
 /// Observed fractions for reports and plots: per stripe, or (continuous intensities) about ten
 /// equal-count IM bins at the geometric mean IM of each; analyses marked kLeftOut not counted.
+/// With `bins_of`, the bins of those outcomes (a pounding curve's, for its free curve: the two
+/// then share their bins, bin j of one beside bin j of the other) [-].
 std::vector<Observation> observed_fractions(const ExceedanceDesign& d,
-                                            const std::vector<char>& exceed);
+                                            const std::vector<char>& exceed,
+                                            const std::vector<char>* bins_of = nullptr);
 
 /// Throws InputError when no sample succeeded, the limits are not positive or the file lacks
 /// the dataset of an EDP with limits (naming the file and the dataset).

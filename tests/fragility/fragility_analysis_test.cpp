@@ -163,5 +163,38 @@ TEST(FragilityAnalysis, AFileWithoutTheDatasetsFailsOnlyWhenTheirCurvesAreAskedF
   EXPECT_THROW(analyse_fragility(old, s), InputError);
 }
 
+// A continuous intensity: a free curve's observed fractions use its pounding curve's IM bins,
+// so that observations.csv sets bin j of one beside bin j of the other, even when the pounding
+// curve leaves analyses out (censored) and so bins fewer of them.
+TEST(FragilityAnalysis, AFreeCurveIsBinnedInItsPoundingCurvesBins) {
+  ExceedanceDesign d;  // no stripes: IM i + 1 for analysis i
+  const std::size_t n = 400;
+  std::vector<char> pounding(n), free(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    d.im.push_back(double(i + 1));
+    d.stripe.push_back(-1);
+    free[i] = i % 3 == 0;
+    pounding[i] = i >= 200 && i % 2 ? kLeftOut : char(i % 4 == 0);  // 100 of the strong left out
+  }
+  const auto p = observed_fractions(d, pounding), f = observed_fractions(d, free, &pounding);
+  ASSERT_EQ(p.size(), 10u);  // 300 analyses: ten bins of 30
+  ASSERT_EQ(f.size(), p.size());
+  // The pounding bins: 30 analyses each, IM 1-30, 31-60, ..., 151-180, then IM 181-200 with
+  // the odd 201-219 (the strong analyses with an even IM are left out), then from IM 221 on.
+  // Bin k of the free curve counts its analyses from the pounding bin's smallest IM up to the
+  // next one's: bins 0-5 the same 30 (IM 1-180), bin 6 the 40 of IM 181-220, ...
+  long total = 0;
+  for (std::size_t k = 0; k < f.size(); ++k) {
+    EXPECT_EQ(p[k].n, 30) << k;
+    if (k < 6) {
+      EXPECT_EQ(f[k].n, 30) << k;
+      EXPECT_NEAR(f[k].im, p[k].im, 1e-12 * p[k].im) << k;  // the same analyses
+    }
+    total += f[k].n;
+  }
+  EXPECT_EQ(f[6].n, 40);      // IM 181 to 220
+  EXPECT_EQ(total, long(n));  // every free analysis in some bin
+}
+
 }  // namespace
 }  // namespace pound
