@@ -396,6 +396,15 @@ void ImkStorey::on_switch(int i, const StoreyParameters& p, StoreyState& s, doub
 
 bool ImkStorey::branch_line(const StoreyParameters& p, const StoreyState& s, double& slope,
                             double& offset) const {
+  if (s.branch == kFailed) {
+    slope = offset = 0.0;
+    return true;
+  }
+  if (const Line l = line_of(s); l.ku != 0.0) {  // the current line (Imk::shear(0), no Imk)
+    slope = l.slope;
+    offset = l.v_anchor + l.slope * (0.0 - s.d_anchor);
+    return true;
+  }
   const Imk m(p, s);
   if (m.failed()) {
     slope = offset = 0.0;
@@ -408,6 +417,15 @@ bool ImkStorey::branch_line(const StoreyParameters& p, const StoreyState& s, dou
 
 bool ImkStorey::safe_drift(const StoreyParameters& p, const StoreyState& s, double& lo,
                            double& hi) const {
+  if (s.branch != kFailed) {
+    if (const Line l = line_of(s); l.ku != 0.0) {  // the current line, no Imk
+      const int kind = s.branch < 0 ? -s.branch : s.branch;
+      if (kind != kElastic && kind != kUnload) return false;  // see below
+      lo = std::min(l.d_end, l.d_back);
+      hi = std::max(l.d_end, l.d_back);
+      return true;
+    }
+  }
   const Imk m(p, s);
   if (m.failed()) {  // no switch ever: anywhere (finite, for the solver's round-off margin)
     lo = -1e30;
