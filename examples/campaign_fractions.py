@@ -63,7 +63,7 @@ def fractions(df, limit):
     return pd.DataFrame(rows), names
 
 
-def plot(table, names, limit, has_collapse, path):
+def plot(table, names, limit, has_collapse, path, im_label="PGA"):
     measures = ["drift_exceeded"] + (["collapsed"] if has_collapse else [])
     fig, axes = plt.subplots(len(measures), len(names), figsize=(5 * len(names),
                                                                   3.6 * len(measures)),
@@ -75,7 +75,7 @@ def plot(table, names, limit, has_collapse, path):
                 t = table[(table["building"] == name) & (table["run"] == run)]
                 ax.plot(t["im_g"], t[measure], style, ms=4, label=f"{run}")
             ax.set_ylim(-0.02, 1.02)
-            ax.set_xlabel("PGA [g]")
+            ax.set_xlabel(f"{im_label} [g]")
             what = (f"P(peak drift ratio > {limit:g})" if measure == "drift_exceeded"
                     else "P(collapse)")
             ax.set_ylabel(what)
@@ -98,7 +98,8 @@ def main():
     out = Path(a.out)
     out.mkdir(parents=True, exist_ok=True)
     table.to_csv(out / "campaign_fractions.csv", index=False)
-    plot(table, names, limit, has_collapse, out / "campaign_fractions.png")
+    im_label = "Sa(T1)" if df.attrs.get("intensity_measure") == "sa" else "PGA"
+    plot(table, names, limit, has_collapse, out / "campaign_fractions.png", im_label)
     failed = int((df["status"] != 0).sum())
     print(f"campaign_fractions: {a.campaign}: {len(df)} samples ({failed} failed), drift limit "
           f"{limit:g}; collapse: "

@@ -12,6 +12,7 @@
 
 #include "app/commands.hpp"
 #include "app/help.hpp"
+#include "app/limit_text.hpp"
 #include "app/table_number.hpp"
 #include "core/error.hpp"
 #include "fragility/campaign_reader.hpp"
@@ -23,14 +24,6 @@
 
 namespace pound::app {
 namespace {
-
-// A limit for people: drift ratios in %, ductility as a number, the others in their SI unit.
-std::string limit_text(Edp e, double x) {
-  if (e == Edp::collapse) return "-";
-  if (e == Edp::drift || e == Edp::residual_drift) return fmt("%.3g %%", 100 * x);
-  if (e == Edp::ductility) return fmt("%.4g", x);
-  return fmt("%.4g ", x) + unit_of(e);
-}
 
 // Width of the edp column: the longest name shown (at least that of "drift" and "disp").
 int edp_width(const FragilityReport& r) {

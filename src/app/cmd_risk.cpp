@@ -13,6 +13,7 @@
 
 #include "app/commands.hpp"
 #include "app/help.hpp"
+#include "app/limit_text.hpp"
 #include "app/table_number.hpp"
 #include "core/error.hpp"
 #include "fragility/campaign_reader.hpp"
@@ -29,13 +30,6 @@ namespace {
 
 std::string pair_name(const CampaignData& c, std::size_t p) {
   return c.building_name(p) + " | " + c.building_name(p + 1);
-}
-
-std::string limit_text(Edp e, double x) {
-  if (e == Edp::collapse) return "-";
-  if (e == Edp::drift || e == Edp::residual_drift) return fmt("%.3g %%", 100 * x);
-  if (e == Edp::ductility) return fmt("%.4g", x);
-  return fmt("%.4g ", x) + unit_of(e);
 }
 
 constexpr const char* kLikeForLike =
