@@ -5,7 +5,7 @@
 #include "app/table_number.hpp"
 #include "fragility/fragility_analysis.hpp"
 
-namespace pound {
+namespace pound::app {
 
 /// "-" for collapse, drift ratios in %, a ductility as a number, others with their SI unit.
 inline std::string limit_text(Edp e, double x) {
@@ -15,4 +15,4 @@ inline std::string limit_text(Edp e, double x) {
   return fmt("%.4g ", x) + unit_of(e);
 }
 
-}  // namespace pound
+}  // namespace pound::app
