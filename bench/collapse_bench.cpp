@@ -71,7 +71,7 @@ int collapse_case(const std::string& src, const std::vector<std::string>& argume
   const CampaignStudy study = campaign_from_options(oc, samples, -1);
   CampaignStudy bilinear = study, no_stop = study;
   for (auto& b : bilinear.row.buildings) b.hysteresis = "bilinear";
-  no_stop.collapse_drift_ratio = std::numeric_limits<double>::infinity();
+  no_stop.simulation.collapse_drift_ratio = std::numeric_limits<double>::infinity();
   SampleRunner run_imk(study), run_bil(bilinear), run_nostop(no_stop);
   if (arguments.size() > 2 && arg(2) != "both") {  // profiling: one law's samples alone
     const std::string law = arg(2);
@@ -92,7 +92,7 @@ int collapse_case(const std::string& src, const std::vector<std::string>& argume
       "\n6. collapse (issue 23): studies/fragility-default.ini, samples 0-%ld, storeys %s, "
       "P-Delta %s, collapse at drift ratio %g; process CPU time per sample, the smallest of %d\n",
       samples - 1, study.row.buildings[0].hysteresis.c_str(),
-      study.row.buildings[0].p_delta ? "on" : "off", study.collapse_drift_ratio, repeat);
+      study.row.buildings[0].p_delta ? "on" : "off", study.simulation.collapse_drift_ratio, repeat);
   std::printf("%4s %-10s %7s %9s %9s %6s %9s %9s %10s\n", "id", "model", "PGA[g]", "imk[s]",
               "bilin[s]", "ratio", "collapse", "bilinear", "no-stop[s]");
   struct Sum {

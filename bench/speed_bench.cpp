@@ -123,7 +123,7 @@ void lumped_case(const std::string& ch8, const BuildingRow& row, const GroundMot
                  bool reference) {
   const Options o2 = row_study(ch8, {"--motion.duration", "1e9", "--contact.model", "hc-linear",
                                      "--contact.k_factor", "50"});
-  const ContactSpec contact = contact_from_options(o2, row);
+  const ContactSpec contact = contact_from_options(o2, row, single_model_use(o2));
   IntegratorSettings ad = integrator_from_options(o2), fi = ad;
   ad.control = StepControl::adaptive;
   fi.control = StepControl::fixed;

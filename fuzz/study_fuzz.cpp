@@ -24,6 +24,7 @@
 #include "fuzz_support.hpp"
 #include "io/options.hpp"
 #include "study/row_options.hpp"
+#include "study/row_study.hpp"
 #include "study/sears_row_options.hpp"
 
 namespace {
@@ -67,12 +68,7 @@ std::string with_args(std::string ini, std::initializer_list<const char*> args) 
 
 // As `pound simulate` reads a study.
 void resolve_simulate(const Options& o) {
-  const BuildingRow row = row_from_options(o);
-  integrator_from_options(o);
-  if (is_sears_model(o.get_string("contact.model")))
-    sears_row_from_options(o, row);
-  else
-    contact_from_options(o, row);
+  read_row_study(o);
   if (o.given("motion.file")) motion_from_options(o);
 }
 

@@ -125,40 +125,16 @@ void read_sampling(const Options& opt, long samples_override, long seed_override
   st.batch = read_batch(opt);
 }
 
-// The contact model: the fixed keys, checked for what the models in use need (the fixed
-// contact.model, or the labels of a sampled model).
-void read_contact(const Options& opt, CampaignStudy& st) {
-  const std::string fixed = opt.get_string("contact.model");
-  bool uses_sears = is_sears_model(fixed);
-  bool uses_lumped = !uses_sears;
-  for (const auto& p : st.parameters)
-    if (p.is_contact_model()) {
-      uses_sears = uses_lumped = false;
-      for (const auto& l : p.distribution.labels())
-        (is_sears_model(l) ? uses_sears : uses_lumped) = true;
-    }
-  if (uses_sears) {
-    st.has_sears = true;
-    st.sears = sears_row_from_options(opt, st.row);
+// The contact models a campaign uses: the fixed contact.model, or the labels of a sampled
+// model; and whether a sampled parameter gives the lumped models their stiffness.
+ContactUse campaign_contact_use(const Options& opt, const std::vector<SampledParameter>& params) {
+  ContactUse use = single_model_use(opt);
+  for (const auto& p : params) {
+    if (p.is_contact_model()) use.models = p.distribution.labels();
+    use.k_sampled = use.k_sampled || p.spec->sets_contact_k;
   }
-  bool k_sampled = false;
-  for (const auto& p : st.parameters) k_sampled |= p.spec->sets_contact_k;
-  st.contact.model = fixed;
-  if (uses_lumped && !k_sampled && !is_sears_model(fixed)) {
-    st.contact = contact_from_options(opt, st.row);
-    return;
-  }
-  // The sampled k (or the Sears model) replaces the stiffness per sample.
-  if (!is_sears_model(fixed)) find_contact_model(fixed, opt.where("contact.model"));
-  st.contact.params.e = opt.get_double("contact.e");
-  if (!(st.contact.params.e > 0 && st.contact.params.e <= 1))
-    throw opt.invalid("contact.e", "valid: e in (0, 1]");
-  st.contact.params.v0_min = opt.get_positive("contact.v0_min");
-  st.contact.params.xi_relation = opt.get_string("contact.xi_relation");
-  if (uses_lumped && !k_sampled)
-    throw InputError(opt.where("contact.k") +
-                     ": missing; the lumped models need contact.k, "
-                     "contact.k_factor or a sampled sample.k / sample.k_factor");
+  use.k_alternative = "a sampled sample.k / sample.k_factor";
+  return use;
 }
 
 // motion.source = generated: the target spectrum and the generator ([generator]).
@@ -270,14 +246,15 @@ void read_intensity(const Options& opt, CampaignStudy& st) {
 
 CampaignStudy campaign_from_options(const Options& opt, long samples_override, long seed_override) {
   CampaignStudy st;
-  st.row = row_from_options(opt);
-  st.integrator = integrator_from_options(opt);
-  st.extra_time = opt.get_nonnegative("simulation.extra_time");
-  st.collapse_drift_ratio = opt.get_positive("simulation.collapse_drift_ratio");
+  // The row as `pound simulate` reads it; the sampled parameters, in a fixed (sorted) order
+  // (sampled_parameters.hpp), say which contact models the campaign uses.
+  std::vector<SampledParameter> params;
+  static_cast<RowStudy&>(st) = read_row_study(opt, [&](const BuildingRow& row) {
+    params = read_sampled_parameters(opt, row);
+    return campaign_contact_use(opt, params);
+  });
+  st.parameters = std::move(params);
   read_sampling(opt, samples_override, seed_override, st);
-  // Sampled parameters, in a fixed (sorted) order (sampled_parameters.hpp).
-  st.parameters = read_sampled_parameters(opt, st.row);
-  read_contact(opt, st);
   const std::string src = opt.get_string("motion.source");
   if (src == "generated")
     read_generated_motions(opt, st);

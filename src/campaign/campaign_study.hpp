@@ -17,6 +17,7 @@
 #include "simulation/contact_spec.hpp"
 #include "solver/integrator_settings.hpp"
 #include "structure/building_row.hpp"
+#include "study/row_study.hpp"
 
 namespace pound {
 
@@ -24,18 +25,9 @@ enum class SamplingMethod { monte_carlo, latin_hypercube };
 enum class IntensityMeasure { pga, sa };
 enum class MotionSource { generated, records };
 
-struct CampaignStudy {
-  // What is simulated (the fixed values; sampled parameters override them per sample).
-  BuildingRow row;
-  ContactSpec contact;
-  IntegratorSettings integrator;
-  bool has_sears = false;      ///< slabs given: the damped Sears model can be used
-  sears::SearsRowModel sears;  ///< its fixed options (chi and D may be sampled)
-  double extra_time = 0.0;     ///< free vibration after the record [s]
-  /// A building whose storey drift ratio passes this has collapsed ([simulation]
-  /// collapse_drift_ratio; RowSimulationOptions::collapse_drift_ratio) [-].
-  double collapse_drift_ratio = 0.1;
-
+/// The row's keys are read by the study reader that `pound simulate` uses (study/row_study.hpp);
+/// the sampled parameters override the fixed values per sample.
+struct CampaignStudy : RowStudy {
   // Sampling.
   long samples = 100;  ///< number of samples of the campaign [-]
   /// The ids this run simulates, [range_lo, range_hi) (default: all). A part of a campaign

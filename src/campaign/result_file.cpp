@@ -11,6 +11,7 @@
 #include "campaign/floor_arrays.hpp"
 #include "campaign/journal.hpp"
 #include "core/error.hpp"
+#include "core/format.hpp"
 #include "io/h5.hpp"
 #include "pound/version.hpp"
 
@@ -187,6 +188,15 @@ void write_result_file(const std::string& path, const CampaignStudy& st,
   std::string names;
   for (const auto& b : st.row.buildings) names += (names.empty() ? "" : ", ") + b.name;
   h5::attribute(fid, "/", "building_names", names);
+  // Each building's first mode with the study's fixed (not sampled) properties, for `pound
+  // risk`'s code rules, which then need not read the study again (issue 31).
+  std::string periods, damping;
+  for (const auto& b : st.row.buildings) {
+    periods += (periods.empty() ? "" : ", ") + format_number(assemble(b).periods(0), "%.17g");
+    damping += (damping.empty() ? "" : ", ") + format_number(b.damping_ratio, "%.17g");
+  }
+  h5::attribute(fid, "/", "first_periods_s", periods);
+  h5::attribute(fid, "/", "damping_ratios", damping);
   // The amplification statistics, read back from the rows just written (in blocks).
   write_amplification(fid, compute_amplification(fid, path));
   f.close();  // a failed write (disk full) is reported here, before the file is renamed

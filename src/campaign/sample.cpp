@@ -6,12 +6,11 @@
 
 #include "campaign/building_arrays.hpp"
 #include "campaign/floor_arrays.hpp"
-#include "contact/registry.hpp"
 #include "core/error.hpp"
 #include "motion/motion_processing.hpp"
 #include "motion/response_spectrum.hpp"
 #include "sampling/counter_rng.hpp"
-#include "simulation/simulate_row.hpp"
+#include "study/simulation_run.hpp"
 
 namespace pound {
 namespace {
@@ -116,15 +115,8 @@ SampleOutcome SampleRunner::run(const SampleDraw& d) {
     out.im = im0 * out.scale;
     g = scale(g, out.scale);
 
-    RowSimulationOptions so;
-    so.extra_time = st_.extra_time;
-    so.collapse_drift_ratio = st_.collapse_drift_ratio;
-    RowSimulation sim;
-    if (is_sears_model(d.model)) {
-      sim = sears::simulate_sears_row(row, g, sm.sears, so).base;
-    } else {
-      sim = simulate_row(row, g, sm.contact, st_.integrator, so);
-    }
+    const RowSimulation sim =
+        simulate_model(row, g, sm.contact, sm.sears, st_.integrator, st_.simulation).sim;
     for (const auto& f : sim.floors) {
       const std::size_t i = static_cast<std::size_t>(f.building * nf + f.floor - 1);
       for (const auto& a : floor_array_fields()) (out.*a.member)[i] = f.*a.source;

@@ -186,6 +186,11 @@ CampaignData read_campaign(const std::string& path) {
   const std::string period = r.text_attribute("im_period_s");
   c.im_period = period.empty() ? 0.0 : std::atof(period.c_str());
   c.building_names = split_building_names(r.text_attribute("building_names"), c.buildings);
+  for (auto [name, to] : {std::pair{"first_periods_s", &c.first_periods},
+                          std::pair{"damping_ratios", &c.damping_ratios}}) {
+    const std::string text = r.text_attribute(name);
+    if (!text.empty()) *to = parse_number_list(text, path + ": attribute " + name);
+  }
   const std::string levels = r.text_attribute("im_levels_mps2");
   if (!levels.empty()) c.levels = parse_number_list(levels, path + ": attribute im_levels_mps2");
   return c;

@@ -41,6 +41,9 @@ struct CampaignData {
   double im_period = 0.0;         ///< T1 of Sa(T1) [s] (0 for PGA)
   std::string seed;               ///< study seed (root attribute)
   std::vector<std::string> building_names;
+  /// Each building's first period [s] and damping ratio [-] with the study's fixed properties
+  /// (root attributes first_periods_s, damping_ratios); empty in a file written before them.
+  std::vector<double> first_periods, damping_ratios;
   /// The name of building b (0-based), or "building<b+1>" when the file names none.
   std::string building_name(std::size_t b) const {
     return b < building_names.size() ? building_names[b] : "building" + std::to_string(b + 1);

@@ -7,11 +7,8 @@
 
 #include "campaign/amplification.hpp"
 #include "core/error.hpp"
-#include "io/ini.hpp"
-#include "io/options.hpp"
 #include "motion/ground_motion.hpp"
 #include "risk/risk_integral.hpp"
-#include "study/row_options.hpp"
 
 namespace pound {
 namespace {
@@ -216,24 +213,14 @@ const char* to_string(TargetStatus s) {
 }
 
 std::vector<BuildingMode> study_first_modes(const CampaignData& c) {
-  // The stored study's building and pair keys, through the options of `pound simulate`.
-  std::vector<std::string> args;
-  const auto specs = row_option_specs();
-  for (const auto& e : parse_ini(c.study, c.path + " (stored study)")) {
-    if (e.key.rfind("building", 0) != 0 && e.key.rfind("pair", 0) != 0) continue;
-    bool declared = false;
-    for (const auto& sp : specs) declared |= Options::matches(sp.key, e.key);
-    if (!declared) continue;
-    args.push_back("--" + e.key);
-    args.push_back(e.value);
-  }
-  Options opt("risk", "", specs);
-  opt.parse(args);
-  const BuildingRow row = row_from_options(opt);
-  const AssembledRow a = assemble(row);
+  if (c.first_periods.size() != c.buildings || c.damping_ratios.size() != c.buildings)
+    throw InputError(c.path +
+                     ": no root attributes first_periods_s and damping_ratios (one per "
+                     "building); the file was written by a pound without them: run the "
+                     "campaign again with this version to get them");
   std::vector<BuildingMode> modes;
-  for (std::size_t b = 0; b < row.buildings.size(); ++b)
-    modes.push_back({a.periods[b](0), row.buildings[b].damping_ratio});
+  for (std::size_t b = 0; b < c.buildings; ++b)
+    modes.push_back({c.first_periods[b], c.damping_ratios[b]});
   return modes;
 }
 

@@ -38,8 +38,9 @@ struct BuildingMode {
   double damping = 0.05;
 };
 
-/// The first modes of the study's buildings with their nominal (not sampled) properties, from
-/// the study text stored in the campaign file.
+/// The first modes of the study's buildings with their nominal (not sampled) properties, as the
+/// campaign file stores them (root attributes first_periods_s, damping_ratios); throws
+/// InputError naming the file when it lacks them.
 std::vector<BuildingMode> study_first_modes(const CampaignData& c);
 
 /// Throws InputError (naming the hazard file) when its measure is not the campaign's: PGA

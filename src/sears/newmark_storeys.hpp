@@ -58,8 +58,8 @@ class NewmarkStoreys {
   double shear(const Eigen::VectorXd& u, int i) const;
   /// Hysteretic energy dissipated by floor DOF i's storey (committed) [J].
   double dissipated(const Eigen::VectorXd& u, int i) const;
-  /// Whether floor DOF i's storey has failed (committed; StoreyLaw::failed).
-  bool failed(int i) const { return storeys_[i].law->failed(storeys_[i].p, committed_[i]); }
+  /// The committed discrete state of floor DOF i's storey.
+  const StoreyState& committed(int i) const { return committed_[i]; }
   /// Recoverable strain energy of all storeys (committed), with P-Delta's -P d^2 / (2 h) [J].
   double stored(const Eigen::VectorXd& u) const;
 

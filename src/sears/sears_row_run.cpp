@@ -342,31 +342,20 @@ SearsRowResult SearsRowRun::run() {
 }
 
 void SearsRowRun::check_failures(double t) {
-  for (int i = 0; i < n; ++i) {
-    const RowStorey& st = assembled.storeys[i];
-    if (st.kg > 0.0 && !rec.collapsed(st.building) && storeys.failed(i))
-      rec.collapse(st.building, i - assembled.offset[st.building] + 1, t,
-                   CollapseCause::failed_storey);
-  }
+  for (int i = 0; i < n; ++i)
+    rec.check_failed_storey(i, assembled.storeys[i], storeys.committed(i), t);
 }
 
 bool SearsRowRun::on_collapse() {
-  if (p.contacts) {
-    rec.result().stopped = true;
-    return true;
-  }
-  if (p.track_energy && !energy_held) {
-    held_energy = energy_now();
-    energy_held = true;
-  }
-  bool all = false;
-  for (int i : rec.hold_collapsed(all)) {
+  std::vector<int> hold;
+  const bool stop = rec.apply_collapse_policy(
+      p.track_energy, [this] { return energy_now(); }, hold);
+  for (int i : hold) {
     held_dofs.push_back(i);
     v(i) = 0.0;
     acc(i) = 0.0;
   }
-  if (all) rec.result().stopped = true;
-  return all;
+  return stop;
 }
 
 EnergyBalance SearsRowRun::energy_now() const {
@@ -376,7 +365,9 @@ EnergyBalance SearsRowRun::energy_now() const {
   e.contact = e_contact;
   e.kinetic = 0.5 * v.dot(assembled.M * v);
   e.strain = storeys.stored(u);
-  for (int k = 0; k < n; ++k) e.hysteretic += storeys.dissipated(u, k);
+  Eigen::VectorXd dissipated(n);
+  for (int k = 0; k < n; ++k) dissipated(k) = storeys.dissipated(u, k);
+  e.hysteretic = dissipated.sum();
   return e;
 }
 
@@ -389,19 +380,7 @@ void SearsRowRun::finish() {
   r.steps = out.counts.fine + out.counts.coarse;
   r.hysteretic_energy.resize(n);
   for (int k = 0; k < n; ++k) r.hysteretic_energy(k) = storeys.dissipated(u, k);
-  if (p.track_energy) {
-    EnergyBalance& e = r.energy;
-    if (energy_held) {
-      e = held_energy;
-    } else {
-      e.input = e_input;
-      e.damping = e_damping;
-      e.contact = e_contact;
-      e.kinetic = 0.5 * v.dot(assembled.M * v);
-      e.strain = storeys.stored(u);
-      e.hysteretic = r.hysteretic_energy.sum();
-    }
-  }
+  if (p.track_energy) r.energy = rec.final_energy(energy_now());
   out.row = std::move(r);
 }
 

@@ -151,8 +151,6 @@ class SearsRowRun {
   bool failure_check = false;
   double current_t = 0.0;  // the time reached [s]
   std::vector<int> held_dofs;
-  bool energy_held = false;
-  EnergyBalance held_energy;
 };
 
 }  // namespace pound::sears::detail

@@ -27,7 +27,7 @@
 #include "motion/ground_motion.hpp"
 #include "sears/slab_contact_law.hpp"
 #include "simulation/simulate_row.hpp"
-#include "solver/row_solver.hpp"
+#include "solver/row_result.hpp"
 #include "structure/building_row.hpp"
 
 namespace pound::sears {

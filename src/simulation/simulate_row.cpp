@@ -3,6 +3,8 @@
 #include <cmath>
 #include <limits>
 
+#include "solver/row_solver.hpp"
+
 namespace pound {
 
 RowSimulation summarize_runs(const BuildingRow& row, RowResult free, RowResult pounding) {

@@ -8,7 +8,7 @@
 #include "motion/ground_motion.hpp"
 #include "simulation/contact_spec.hpp"
 #include "solver/integrator_settings.hpp"
-#include "solver/row_solver.hpp"
+#include "solver/row_result.hpp"
 #include "structure/building_row.hpp"
 
 namespace pound {

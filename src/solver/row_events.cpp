@@ -151,7 +151,8 @@ void RowRun::apply_event(int k, double t, Eigen::VectorXd& y) {
   }
   switches_.apply_storey(dyn_, k, t, y);
   storey_changed(switches_.storey_dof(k));
-  check_failure(switches_.storey_dof(k), t);
+  const int dof = switches_.storey_dof(k);
+  rec_.check_failed_storey(dof, storeys_[dof], dyn_.storey[dof], t);
 }
 
 void RowRun::apply_contact_event(int i, double t, Eigen::VectorXd& y) {

@@ -238,40 +238,26 @@ void RowRun::finish() {
   for (int i = 0; i < ns_; ++i) r.sites[i].impulse = y_(at.impulses + i);
   dyn_.storey_energies(y_, r.hysteretic_energy);
   if (!track_) return;
-  r.energy = energy_held_ ? held_energy_ : energy_now();
+  r.energy = rec_.final_energy(energy_now());
 }
 
 bool RowRun::on_collapse() {
-  RowResult& r = rec_.result();
-  if (dyn_.pounding()) {
-    r.stopped = true;
-    return true;
-  }
-  if (track_ && !energy_held_) {
-    held_energy_ = energy_now();
-    energy_held_ = true;
-  }
+  std::vector<int> hold;
+  const bool stop = rec_.apply_collapse_policy(
+      track_, [this] { return energy_now(); }, hold);
+  if (dyn_.pounding()) return stop;
   // The pounding run must stop at this collapse: if it has not forked yet, it is solved alone.
   if (fork_armed_ && !fork_) {
     fork_armed_ = false;
     own_pounding_run_ = true;
   }
-  bool all = false;
-  for (int i : rec_.hold_collapsed(all)) {
+  for (int i : hold) {
     dyn_.hold(i);
     y_(n_ + i) = 0.0;
   }
   exact_.disable();  // the propagators would move the held floors
   rhs(t_, y_, k1_);
-  if (all) r.stopped = true;
-  return all;
-}
-
-// A storey that failed (StoreyLaw::failed) under its P-Delta load collapses its building.
-void RowRun::check_failure(int dof, double t) {
-  const RowStorey& st = storeys_[dof];
-  if (st.kg > 0.0 && st.law->failed(st.p, dyn_.storey[dof]))
-    rec_.collapse(st.building, dof - row_.offset[st.building] + 1, t, CollapseCause::failed_storey);
+  return stop;
 }
 
 RowResult RowRun::run() {

@@ -83,7 +83,6 @@ class RowRun {
   // After collapses: a run with contacts stops (true); a run without holds each collapsed
   // building still and keeps its energy balance of the first collapse; true when all collapsed.
   bool on_collapse();
-  void check_failure(int dof, double t);
   EnergyBalance energy_now() const;
   void finish();
   void update_peaks(const Eigen::VectorXd& y0, const Eigen::VectorXd& y1,
@@ -120,9 +119,6 @@ class RowRun {
   bool fork_armed_ = false;
   std::shared_ptr<RowRun> fork_;
   bool own_pounding_run_ = false;
-  // The energy balance at a free run's first collapse (held buildings leave the balance).
-  bool energy_held_ = false;
-  EnergyBalance held_energy_;
 
   // Integration state: time, next step and largest step [s], record spacing [s], the fixed
   // grid's and the record's last points passed, the state y and its derivative k1, the trial

@@ -82,6 +82,7 @@ void RunRecorder::start(const Eigen::VectorXd& u0) {
   new_collapses_ = 0;
   held_.assign(n_, 0);
   any_held_ = false;
+  energy_held_ = false;
   for (int k = 0; k < n_ && check_collapse_; ++k)
     last_drift_[k] = below_[k] >= 0 ? u0(k) - u0(below_[k]) : u0(k);
   r_.peak_disp.setZero(n_);

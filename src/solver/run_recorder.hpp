@@ -90,6 +90,35 @@ class RunRecorder {
   /// building has collapsed.
   std::vector<int> hold_collapsed(bool& all);
   bool held(int dof) const { return any_held_ && held_[dof]; }
+  /// The collapse policy of both solvers (issue 23), at new collapses: a run with contacts
+  /// stops (the pounding run ends at its first collapse); a run without keeps its energy
+  /// balance as it was at its first collapse (`energy_now()` is called then, when the run tracks
+  /// energy) and holds every collapsed building's floors still from now on, stopping when all
+  /// have collapsed. Returns whether the run stops here (result().stopped); `hold` gets the
+  /// floor DOFs to hold from now on, whose velocities (and accelerations) the caller zeroes.
+  template <class EnergyNow>
+  bool apply_collapse_policy(bool track_energy, EnergyNow energy_now, std::vector<int>& hold) {
+    hold.clear();
+    if (contacts_) return r_.stopped = true;
+    if (track_energy && !energy_held_) {
+      held_energy_ = energy_now();
+      energy_held_ = true;
+    }
+    bool all = false;
+    hold = hold_collapsed(all);
+    if (all) r_.stopped = true;
+    return all;
+  }
+  /// The energy balance to report: `now`, or the one held at a free run's first collapse.
+  const EnergyBalance& final_energy(const EnergyBalance& now) const {
+    return energy_held_ ? held_energy_ : now;
+  }
+  /// A storey that failed (StoreyLaw::failed, in its discrete state `s`) under its P-Delta load
+  /// collapses its building at time t [s] (when the run checks collapse).
+  void check_failed_storey(int dof, const RowStorey& st, const StoreyState& s, double t) {
+    if (check_collapse_ && st.kg > 0.0 && !collapsed(building_[dof]) && st.law->failed(st.p, s))
+      collapse(building_[dof], storey_no_[dof], t, CollapseCause::failed_storey);
+  }
 
   // --- Contact sites -------------------------------------------------------------------------
   /// A contact phase starts at site s at time t [s].
@@ -157,6 +186,8 @@ class RunRecorder {
   std::vector<int> building_, storey_no_;
   bool any_held_ = false;
   std::vector<char> held_;
+  bool energy_held_ = false;  // the energy balance at a free run's first collapse
+  EnergyBalance held_energy_;
   RowResult r_;
 };
 

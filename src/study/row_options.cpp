@@ -313,33 +313,54 @@ BuildingRow row_from_options(const Options& opt) {
   return row;
 }
 
-ContactSpec contact_from_options(const Options& opt, const BuildingRow& row) {
+bool ContactUse::sears() const {
+  return std::any_of(models.begin(), models.end(), is_sears_model);
+}
+
+bool ContactUse::lumped() const {
+  return std::any_of(models.begin(), models.end(),
+                     [](const std::string& m) { return !is_sears_model(m); });
+}
+
+ContactUse single_model_use(const Options& opt) {
+  ContactUse use;
+  use.models.push_back(opt.get_string("contact.model"));
+  return use;
+}
+
+ContactSpec contact_from_options(const Options& opt, const BuildingRow& row,
+                                 const ContactUse& use) {
   ContactSpec c;
   c.model = opt.get_string("contact.model");
-  const auto& info = find_contact_model(c.model, opt.where("contact.model"));
+  if (!is_sears_model(c.model)) find_contact_model(c.model, opt.where("contact.model"));
   c.params.e = opt.get_double("contact.e");
   if (!(c.params.e > 0 && c.params.e <= 1)) throw opt.invalid("contact.e", "valid: e in (0, 1]");
-  if (!info.stiffness_unit.empty()) {
-    if (opt.given("contact.k")) {
-      c.params.k = opt.get_positive("contact.k");
-    } else if (opt.given("contact.k_factor")) {
-      double kmax = 0;
-      for (const auto& b : row.buildings)
-        for (double k : b.stiffnesses) kmax = std::max(kmax, k);
-      c.params.k = opt.get_positive("contact.k_factor") * kmax;
-    } else if (row.buildings.size() < 2) {
-      // One building: no pair, no contact; the law is never called, so k is not asked for.
-    } else {
-      throw InputError(
-          opt.where("contact.k") + ": missing; model '" + c.model +
-          "' needs a contact stiffness k [" + info.stiffness_unit +
-          "] or k_factor (a multiple of the larger storey stiffness, commonly 20-100)");
-    }
-  }
   c.params.v0_min = opt.get_positive("contact.v0_min");
   c.params.xi_relation = opt.get_string("contact.xi_relation");
   if (c.params.xi_relation != "exact" && c.params.xi_relation != "published")
     throw opt.invalid("contact.xi_relation", "valid: exact or published");
+  // The stiffness: of the first model of `use` that has one (the lumped models share k).
+  const ContactModelInfo* needs_k = nullptr;
+  for (const auto& m : use.models)
+    if (!is_sears_model(m) && !needs_k) {
+      const auto& info = find_contact_model(m, opt.where("contact.model"));
+      if (!info.stiffness_unit.empty()) needs_k = &info;
+    }
+  if (opt.given("contact.k")) {
+    c.params.k = opt.get_positive("contact.k");
+  } else if (opt.given("contact.k_factor")) {
+    double kmax = 0;
+    for (const auto& b : row.buildings)
+      for (double k : b.stiffnesses) kmax = std::max(kmax, k);
+    c.params.k = opt.get_positive("contact.k_factor") * kmax;
+  } else if (needs_k && !use.k_sampled && row.buildings.size() >= 2) {
+    // One building: no pair, no contact; the law is never called, so k is not asked for.
+    const std::string model = use.models.size() == 1 ? use.models[0] : needs_k->name;
+    throw InputError(opt.where("contact.k") + ": missing; model '" + model +
+                     "' needs a contact stiffness k [" + needs_k->stiffness_unit +
+                     "] or k_factor (a multiple of the larger storey stiffness, commonly 20-100)" +
+                     (use.k_alternative.empty() ? "" : " or " + use.k_alternative));
+  }
   return c;
 }
 
@@ -368,6 +389,13 @@ IntegratorSettings integrator_from_options(const Options& opt) {
   else
     throw opt.invalid("integrator.free_steps", "valid: exact or dopri5");
   return s;
+}
+
+RowSimulationOptions simulation_from_options(const Options& opt) {
+  RowSimulationOptions o;
+  o.extra_time = opt.get_nonnegative("simulation.extra_time");
+  o.collapse_drift_ratio = opt.get_positive("simulation.collapse_drift_ratio");
+  return o;
 }
 
 MotionFileSpec motion_file_spec(const Options& opt, const std::string& path) {

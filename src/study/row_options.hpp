@@ -2,12 +2,14 @@
 // The study-file keys shared by every command that simulates buildings in a row
 // (`pound simulate`, later `pound campaign`), and their translation into the library's
 // structs. Every key carries its unit and default; see docs/study-file.md.
+#include <string>
 #include <vector>
 
 #include "io/options.hpp"
 #include "motion/ground_motion.hpp"
 #include "motion/motion_reader.hpp"
 #include "simulation/contact_spec.hpp"
+#include "simulation/simulate_row.hpp"
 #include "solver/integrator_settings.hpp"
 #include "structure/building_row.hpp"
 
@@ -29,10 +31,29 @@ void read_storey_law_keys(const Options& opt, const std::string& prefix, Buildin
 /// Buildings and gaps. Needs building1 (and building2.. for a row); validates masses,
 /// stiffnesses, heights, damping and gaps with errors naming file, line and key.
 BuildingRow row_from_options(const Options& opt);
-/// The contact model and its parameters (k may be given as k_factor times the larger storey
-/// stiffness of the row).
-ContactSpec contact_from_options(const Options& opt, const BuildingRow& row);
+/// The contact models a study may simulate: `pound simulate` its contact.model; a campaign its
+/// contact.model or, when it samples the model (sample.model), every label of it.
+struct ContactUse {
+  std::vector<std::string> models;  ///< model names (lumped, or kSearsModelName)
+  /// A sampled parameter (sample.k, sample.k_factor) gives the lumped models their stiffness.
+  bool k_sampled = false;
+  /// Said after "or" when a lumped model lacks its stiffness (a campaign: its sampled keys).
+  std::string k_alternative;
+  bool sears() const;   ///< the damped Sears model is among the models
+  bool lumped() const;  ///< a lumped model is among them
+};
+/// The use of `pound simulate`: its contact.model alone.
+ContactUse single_model_use(const Options& opt);
+
+/// The [contact] keys, read and validated here alone for every command (issue 31): the model
+/// (a lumped one or sears), e, v0_min and xi_relation always; k (or k_factor times the larger
+/// storey stiffness of the row) when a lumped model of `use` needs a stiffness and none is
+/// sampled. The model name stays contact.model's (the campaign replaces it per sample).
+ContactSpec contact_from_options(const Options& opt, const BuildingRow& row, const ContactUse& use);
 IntegratorSettings integrator_from_options(const Options& opt);
+/// The [simulation] keys: extra_time and collapse_drift_ratio (histories and the energy balance
+/// are the caller's).
+RowSimulationOptions simulation_from_options(const Options& opt);
 /// The record file's format, units, dt and plausibility check from the [motion] keys.
 MotionFileSpec motion_file_spec(const Options& opt, const std::string& path);
 /// A read record truncated (motion.duration), scaled (motion.scale) and, with motion.baseline,

@@ -4,6 +4,7 @@
 
 #include "contact/registry.hpp"
 #include "study/row_options.hpp"
+#include "study/row_study.hpp"
 #include "study/sears_row_options.hpp"
 
 namespace pound {
@@ -46,20 +47,16 @@ GroundMotion record_of(const Options& opt, const RecordValues* record) {
 
 SimulationSetup prepare_simulation(const Options& opt, const RecordValues* record) {
   SimulationSetup s;
-  s.row = row_from_options(opt);
-  s.is_sears = is_sears_model(opt.get_string("contact.model"));
-  if (s.is_sears) {
-    s.contact.model = kSearsModelName;
-    s.sears_model = sears_row_from_options(opt, s.row);
-  } else {
-    s.contact = contact_from_options(opt, s.row);
-  }
-  s.integrator = integrator_from_options(opt);
+  RowStudy study = read_row_study(opt);  // the reader the campaign uses too
+  s.row = std::move(study.row);
+  s.contact = std::move(study.contact);
+  s.is_sears = is_sears_model(s.contact.model);
+  s.sears_model = std::move(study.sears);
+  s.integrator = study.integrator;
   s.motion = record_of(opt, record);
-  s.options.extra_time = opt.get_nonnegative("simulation.extra_time");
+  s.options = study.simulation;
   s.options.record_history = opt.given("histories");
   s.options.track_energy = true;
-  s.options.collapse_drift_ratio = opt.get_positive("simulation.collapse_drift_ratio");
   if (s.is_sears) {
     // The step limits need the motion: a too large --dt fails here, before any output.
     const std::string dt_key = opt.given("dt") ? "dt" : "sears.dt";
@@ -74,18 +71,26 @@ SimulationSetup prepare_simulation(const Options& opt, const RecordValues* recor
   return s;
 }
 
-SimulationRun run_simulation(const SimulationSetup& setup) {
+SimulationRun simulate_model(const BuildingRow& row, const GroundMotion& motion,
+                             const ContactSpec& contact, const sears::SearsRowModel& sears,
+                             const IntegratorSettings& integrator,
+                             const RowSimulationOptions& options) {
   SimulationRun r;
-  if (setup.is_sears) {
-    auto ss = sears::simulate_sears_row(setup.row, setup.motion, setup.sears_model, setup.options);
+  if (is_sears_model(contact.model)) {
+    auto ss = sears::simulate_sears_row(row, motion, sears, options);
     r.sim = std::move(ss.base);
     r.slabs = std::move(ss.slabs);
     r.phases = std::move(ss.contacts);
     r.sears_dt_s = ss.dt_s;
   } else {
-    r.sim = simulate_row(setup.row, setup.motion, setup.contact, setup.integrator, setup.options);
+    r.sim = simulate_row(row, motion, contact, integrator, options);
   }
   return r;
+}
+
+SimulationRun run_simulation(const SimulationSetup& setup) {
+  return simulate_model(setup.row, setup.motion, setup.contact, setup.sears_model, setup.integrator,
+                        setup.options);
 }
 
 }  // namespace pound

@@ -61,7 +61,16 @@ struct SimulationRun {
   double sears_dt_s = 0.0;                  ///< damped Sears model: its (fine) step [s]
 };
 
-/// Simulates the setup (both runs). Throws NumericalError on a numerical failure.
+/// The row under `motion` with and without pounding: by the damped Sears model (`sears`) when
+/// contact.model is sears, else by the lumped solver with contact's law and `integrator`. The
+/// one place that chooses between the two solvers (`pound simulate`, the Python module and the
+/// campaign's samples). Throws NumericalError on a numerical failure.
+SimulationRun simulate_model(const BuildingRow& row, const GroundMotion& motion,
+                             const ContactSpec& contact, const sears::SearsRowModel& sears,
+                             const IntegratorSettings& integrator,
+                             const RowSimulationOptions& options);
+
+/// Simulates the setup (both runs, simulate_model). Throws NumericalError on a numerical failure.
 SimulationRun run_simulation(const SimulationSetup& setup);
 
 }  // namespace pound

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "study/row_study.hpp"
 
 namespace pound {
 namespace {
@@ -52,7 +53,7 @@ std::string error_of(const std::vector<std::string>& extra) {
   }
   try {
     const Options o = parsed(args);
-    contact_from_options(o, row_from_options(o));
+    read_row_study(o).contact;
   } catch (const InputError& e) {
     return e.what();
   }
@@ -78,7 +79,7 @@ TEST(RowOptions, KFactorMultipliesTheLargestStoreyStiffnessOfTheRow) {
   std::vector<std::string> args = kRow;
   args.insert(args.end(), {"--contact.model", "hc-linear", "--contact.k_factor", "40"});
   const Options o = parsed(args);
-  const ContactSpec c = contact_from_options(o, row_from_options(o));
+  const ContactSpec c = read_row_study(o).contact;
   EXPECT_EQ(c.model, "hc-linear");
   EXPECT_DOUBLE_EQ(c.params.k, 40 * 5e6);
   EXPECT_DOUBLE_EQ(c.params.e, 0.65);  // the documented default
@@ -92,7 +93,7 @@ TEST(RowOptions, OneBuildingNeedsNoContactStiffness) {
   const Options o = parsed(one);
   const BuildingRow row = row_from_options(o);
   ASSERT_EQ(row.buildings.size(), 1u);
-  const ContactSpec c = contact_from_options(o, row);
+  const ContactSpec c = contact_from_options(o, row, single_model_use(o));
   EXPECT_EQ(c.model, "lve");
   EXPECT_EQ(c.params.k, 0.0);  // never used
   std::vector<std::string> two = one;
@@ -100,7 +101,7 @@ TEST(RowOptions, OneBuildingNeedsNoContactStiffness) {
                          "--pair1.gap", "0.01"});
   const Options o2 = parsed(two);
   try {
-    contact_from_options(o2, row_from_options(o2));
+    read_row_study(o2).contact;
     ADD_FAILURE() << "a pair without contact.k was accepted";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("contact.k': missing"), std::string::npos) << e.what();

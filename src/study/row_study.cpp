@@ -1,0 +1,21 @@
+#include "study/row_study.hpp"
+
+#include "study/sears_row_options.hpp"
+
+namespace pound {
+
+RowStudy read_row_study(const Options& opt, const ContactUseOf& use_of) {
+  RowStudy s;
+  s.row = row_from_options(opt);
+  const ContactUse use = use_of ? use_of(s.row) : single_model_use(opt);
+  s.contact = contact_from_options(opt, s.row, use);
+  if (use.sears()) {
+    s.has_sears = true;
+    s.sears = sears_row_from_options(opt, s.row);
+  }
+  s.integrator = integrator_from_options(opt);
+  s.simulation = simulation_from_options(opt);
+  return s;
+}
+
+}  // namespace pound
