@@ -244,7 +244,7 @@ void fine_step_study(const BuildingRow& row, const GroundMotion& motion,
   const sears::SearsRowSimulation r = sears::simulate_sears_row(row, motion, ref);
   model.stepping = sears::SearsStepping::event;
   model.dt_s = 0.0;
-  const sears::SearsSteps automatic = sears::sears_row_steps(row, &motion, model);
+  const sears::SearsSteps automatic = sears::sears_row_steps(row, motion.dt, model);
   std::printf(
       "fine step of the event path vs the fixed path at %g s (chapter 8, sears N = %d, %.2f s); "
       "coarse step %.4g s, automatic fine step %.4g s (ratio %ld); largest relative "

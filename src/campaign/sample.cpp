@@ -115,8 +115,9 @@ SampleOutcome SampleRunner::run(const SampleDraw& d) {
     out.im = im0 * out.scale;
     g = scale(g, out.scale);
 
-    const RowSimulation sim =
-        simulate_model(row, g, sm.contact, sm.sears, st_.integrator, st_.simulation).sim;
+    const RowSimulation sim = simulate_model(row, RowGround::uniform(g, nb), sm.contact, sm.sears,
+                                             st_.integrator, st_.simulation)
+                                  .sim;
     for (const auto& f : sim.floors) {
       const std::size_t i = static_cast<std::size_t>(f.building * nf + f.floor - 1);
       for (const auto& a : floor_array_fields()) (out.*a.member)[i] = f.*a.source;

@@ -37,7 +37,7 @@ void SearsRowRun::predict_overlaps() {
     const auto& site = assembled.sites[s];
     const double wl = slabs.predicted_right_upper(left_slab(s));
     const double wr = slabs.predicted_left_lower(right_slab(s));
-    delta_pred(s) = u_hat(site.dof_left) - u_hat(site.dof_right) + wl - wr - site.gap;
+    delta_pred(s) = u_hat(site.dof_left) - u_hat(site.dof_right) + wl - wr - site.gap + gd_next[s];
   }
 }
 
@@ -98,6 +98,7 @@ long SearsRowRun::fine_step(long i) {
     op = static_cast<int>(m - 1);
     const StepOperators& o = ops[op];
     floors.predict(o.h, o.nm, ag_at((i + m) * dt), a_next);
+    ground_at((i + m) * dt, gd_next, gv_next);
     hold_still(a_next);
     if (storeys.linear()) {
       u_hat = u + o.h * v + (0.25 * o.h * o.h) * (acc + a_next);

@@ -25,7 +25,8 @@ SearsRowRun::SearsRowRun(const SearsRowProblem& p_in, const SearsRowModel& model
       model(model_in),
       row(*p_in.row),
       assembled(assemble(row)),
-      stepping(sears_row_steps(row, p.motion, model)),
+      ground(assembled, p_in.ground),
+      stepping(sears_row_steps(row, p_in.ground ? p_in.ground->dt() : 0.0, model)),
       dt(stepping.fine_s),
       hc(stepping.coarse_s),
       steps(static_cast<long>(std::ceil(p.t_end / dt - 1e-9))),
@@ -34,8 +35,8 @@ SearsRowRun::SearsRowRun(const SearsRowProblem& p_in, const SearsRowModel& model
       n(assembled.dofs()),
       ns(static_cast<int>(assembled.sites.size())),
       nf(static_cast<int>(layout.floors.size())),
-      nm_coarse(assembled, Eigen::LLT<Eigen::MatrixXd>(newmark_matrix(assembled, hc))),
-      bound(assembled, p.motion ? p.motion->pga() : 0.0),
+      nm_coarse(assembled, Eigen::LLT<Eigen::MatrixXd>(newmark_matrix(assembled, hc)), ground),
+      bound(assembled, p_in.ground ? p_in.ground->pga() : 0.0),
       storeys(assembled, p.u0.size() ? p.u0 : Eigen::VectorXd::Zero(assembled.dofs())),
       u(floors.u),
       v(floors.v),
@@ -61,7 +62,7 @@ void SearsRowRun::build_operators() {
     const Eigen::LLT<Eigen::MatrixXd> mt(newmark_matrix(assembled, h));
     if (m > 1)
       for (auto& b : layout.banks) b.add_step(h);
-    StepOperators o{h, NewmarkOperator(assembled, mt), mt.solve(Dsites), {}, {}};
+    StepOperators o{h, NewmarkOperator(assembled, mt, ground), mt.solve(Dsites), {}, {}};
     o.S = (0.25 * h * h) * Dsites.transpose() * o.H +
           modal_compliance(layout, static_cast<int>(m - 1));
     if (!storeys.linear()) o.R = storeys.influence(mt);
@@ -71,18 +72,19 @@ void SearsRowRun::build_operators() {
 
 void SearsRowRun::initial_state() {
   const AssembledRow& a = assembled;
-  const Eigen::VectorXd m_ones = a.M * Eigen::VectorXd::Ones(n);
+  // M ag at t = 0 (the ground's acceleration under each floor).
+  const Eigen::VectorXd m_ag = a.M * Eigen::Map<const Eigen::VectorXd>(ground.acc(0.0), n);
   u = p.u0.size() ? p.u0 : Eigen::VectorXd::Zero(n);
   v = p.v0.size() ? p.v0 : Eigen::VectorXd::Zero(n);
   if (storeys.linear()) {
-    acc = a.M.ldlt().solve(-m_ones * ag_at(0.0) - a.C * v - a.K * u);
+    acc = a.M.ldlt().solve(-m_ag - a.C * v - a.K * u);
   } else {
     // f = K u - B r (sears/newmark_storeys.hpp).
     R_coarse = storeys.influence(Eigen::LLT<Eigen::MatrixXd>(newmark_matrix(a, hc)));
     Eigen::VectorXd Br = storeys.correction();
     for (int j = 0; j < n; ++j)
       if (a.storeys[j].below >= 0) Br(a.storeys[j].below) -= storeys.correction()(j);
-    acc = a.M.ldlt().solve(-m_ones * ag_at(0.0) - a.C * v - a.K * u + Br);
+    acc = a.M.ldlt().solve(-m_ag - a.C * v - a.K * u + Br);
     r_next = storeys.correction();
   }
   F = Eigen::VectorXd::Zero(ns);
@@ -93,8 +95,10 @@ void SearsRowRun::initial_state() {
   u_hat.resize(n);
   a_next.resize(n);
   floors.work.resize(2 * n);
+  for (auto* g : {&gd, &gv, &gd_next, &gv_next}) g->assign(ns, 0.0);
+  ground_at(0.0, gd, gv);
   for (int s = 0; s < ns; ++s)
-    delta(s) = u(a.sites[s].dof_left) - u(a.sites[s].dof_right) - a.sites[s].gap;
+    delta(s) = u(a.sites[s].dof_left) - u(a.sites[s].dof_right) - a.sites[s].gap + gd[s];
   out.dt_s = dt;
   out.coarse_dt_s = hc;
   rec.set_collapse(a.storeys, p.collapse_drift_ratio);
@@ -116,14 +120,14 @@ void SearsRowRun::initial_state() {
   guarded.assign(ns, 0);
   free_approach.assign(ns, 0.0);
   free_approach_rate.assign(ns, 0.0);
-  if (p.motion && p.motion->dt > 0.0) {
-    const double x = p.motion->dt / dt;
+  if (p.ground && p.ground->dt() > 0.0) {
+    const double x = p.ground->dt() / dt;
     const long k = std::lround(x);
     if (k >= 1 && std::fabs(x - k) <= 1e-9 * x) per_sample = k;
   }
   for (int s = 0; s < ns && !p.contacts; ++s) {
     free_approach[s] = approach_bound(s);
-    free_approach_rate[s] = v(a.sites[s].dof_left) - v(a.sites[s].dof_right);
+    free_approach_rate[s] = v(a.sites[s].dof_left) - v(a.sites[s].dof_right) + gv[s];
   }
 }
 
@@ -137,13 +141,13 @@ void SearsRowRun::loads(const Eigen::VectorXd& f, std::vector<EndLoads>& to) con
 double SearsRowRun::overlap_now(int s) const {
   const auto& site = assembled.sites[s];
   return u(site.dof_left) - u(site.dof_right) + slabs.disp(left_slab(s)).right -
-         slabs.disp(right_slab(s)).left - site.gap;
+         slabs.disp(right_slab(s)).left - site.gap + gd[s];
 }
 
 double SearsRowRun::approach_bound(int s) const {
   const auto& site = assembled.sites[s];
   return u(site.dof_left) - u(site.dof_right) + slabs.right_face_upper(left_slab(s)) -
-         slabs.left_face_lower(right_slab(s));
+         slabs.left_face_lower(right_slab(s)) + gd[s];
 }
 
 void SearsRowRun::wake_site(int s) {
@@ -195,7 +199,7 @@ bool SearsRowRun::contact_free() {
   // below (waking a dormant slab changes the overlap, not the buildings' state).
   if (!holds([&](int s) {
         const auto& site = assembled.sites[s];
-        site_approach[s] = bound.approach(site.dof_left, site.dof_right, v, hc);
+        site_approach[s] = bound.approach(site.dof_left, site.dof_right, v, gv[s], hc);
         return kCoarseBoundSafety * site_approach[s] < -delta(s);
       }))
     return false;
@@ -223,7 +227,7 @@ __attribute__((always_inline)) inline void SearsRowRun::record_site(int s, bool 
     // the faces move with the floors: the approach is that of the floors, its peak between
     // the step's ends from their cubic Hermite interpolant (solver/hermite.hpp).
     const double ap = approach_bound(s);
-    const double rate = v(assembled.sites[s].dof_left) - v(assembled.sites[s].dof_right);
+    const double rate = v(assembled.sites[s].dof_left) - v(assembled.sites[s].dof_right) + gv[s];
     rec.approach_over_step(s, Hermite{free_approach[s], ap, h * free_approach_rate[s], h * rate});
     free_approach[s] = ap;
     free_approach_rate[s] = rate;
@@ -263,8 +267,8 @@ void SearsRowRun::record_sites(bool coarse, double h, double t_next) {
     ++out.counts.fine_in_contact;
 }
 
-inline void SearsRowRun::record_slab(int k, bool coarse, double ag) {
-  const double a0 = acc(layout.floors[k].dof) + ag;
+inline void SearsRowRun::record_slab(int k, bool coarse, const double* ag) {
+  const double a0 = acc(layout.floors[k].dof) + ag[layout.floors[k].dof];
   SlabPeaks& pk = out.slabs[k];
   const double lowest_peak = std::min(pk.face_accel, pk.centre_accel);
   if (slabs.dormant(k)) {
@@ -283,7 +287,7 @@ inline void SearsRowRun::record_slab(int k, bool coarse, double ag) {
     slabs.try_dormant(k, std::fabs(a0), std::min(pk.face_accel, pk.centre_accel));
 }
 
-void SearsRowRun::record_peaks(bool coarse, double ag, double t_next, double h) {
+void SearsRowRun::record_peaks(bool coarse, const double* ag, double t_next, double h) {
   // Floor peaks (relative displacement, storey drift, absolute acceleration).
   rec.sampled_peaks(u, acc.data(), ag, t_next, h);
   // Slab faces and centres: floor (rigid) + internal acceleration (Th. 7.5, 8.3).
@@ -324,8 +328,9 @@ SearsRowResult SearsRowRun::run() {
     const double t_next = i * dt;
     current_t = t_next;
     RunRecorder::check_finite(u, t_next, "damped Sears model");
-    const double ag = ag_at(t_next);
-    if (p.track_energy) add_energy(h, t_next);
+    if (p.track_energy) add_energy(h, t_next);  // before the ground moves on to t_next
+    ground_at(t_next, gd, gv);
+    const double* ag = ground.acc(t_next);
     record_sites(coarse, h, t_next);
     F = F_next;
     record_peaks(coarse, ag, t_next, h);
@@ -391,16 +396,27 @@ void SearsRowRun::finish() {
 // sum_s (F_i + F_i+1) / 2 (du_L - du_R).
 void SearsRowRun::add_energy(double h, double t_next) {
   const AssembledRow& a = assembled;
-  const double ag_avg = 0.5 * (ag_at(t_next - h) + ag_at(t_next));
-  double mdu = 0.0;
-  for (int k = 0; k < n; ++k) mdu += a.M(k, k) * (u(k) - u_prev(k));
-  e_input -= ag_avg * mdu;
+  const int m = ground_inputs(ground);
+  ag_avg_.resize(m);
+  mdu_.assign(m + 1, 0.0);
+  const double* ag0 = ag_at(t_next - h);
+  for (int c = 0; c < m; ++c) ag_avg_[c] = ag0[c];
+  const double* ag1 = ag_at(t_next);
+  for (int c = 0; c < m; ++c) ag_avg_[c] = 0.5 * (ag_avg_[c] + ag1[c]);
+  for (int k = 0; k < n; ++k)
+    mdu_[std::min(ground.channel(k), m)] += a.M(k, k) * (u(k) - u_prev(k));
+  for (int c = 0; c < m; ++c) e_input -= ag_avg_[c] * mdu_[c];
+  // The ground's relative motion does work on the contacts (issue 28): input and contact.
+  ground_at(t_next, gd_next, gv_next);
+  for (int k = 0; k < ns; ++k)
+    if (ground.differs(k)) e_input += 0.5 * (F(k) + F_next(k)) * (gd_next[k] - gd[k]);
   const Eigen::VectorXd v_avg = 0.5 * (v + v_prev);
   e_damping += h * v_avg.dot(a.C * v_avg);
   if (storeys.tangent_damping()) e_damping += storeys.damper_work(u_prev, u);
   for (int k = 0; k < ns; ++k) {
     const int l = a.sites[k].dof_left, rr = a.sites[k].dof_right;
-    e_contact += 0.5 * (F(k) + F_next(k)) * ((u(l) - u_prev(l)) - (u(rr) - u_prev(rr)));
+    e_contact += 0.5 * (F(k) + F_next(k)) *
+                 ((u(l) - u_prev(l)) - (u(rr) - u_prev(rr)) + (gd_next[k] - gd[k]));
   }
 }
 

@@ -42,7 +42,12 @@ class SearsRowRun {
   void build_operators();
   void initial_state();
   void loads(const Eigen::VectorXd& f, std::vector<EndLoads>& to) const;
-  double ag_at(double t) const { return p.motion ? p.motion->at(t) : 0.0; }
+  // Each ground channel's acceleration at t [m/s^2] (FloorGround::channel_acc).
+  const double* ag_at(double t) { return ground.channel_acc(t); }
+  // Each site's relative ground displacement and velocity at t into d, w [m], [m/s].
+  void ground_at(double t, std::vector<double>& d, std::vector<double>& w) const {
+    for (int s = 0; s < ns; ++s) ground.relative(s, t, d[s], w[s]);
+  }
   int left_slab(int s) const { return layout.site_left_floor[s]; }
   int right_slab(int s) const { return layout.site_right_floor[s]; }
   // Overlap at the start of the step at site s (both slabs awake).
@@ -75,7 +80,7 @@ class SearsRowRun {
   void add_energy(double h, double t_next);
   void record_sites(bool coarse, double h, double t_next);
   void record_site(int s, bool coarse, double h, double t_next);
-  void record_peaks(bool coarse, double ag, double t_next, double h);
+  void record_peaks(bool coarse, const double* ag, double t_next, double h);
   // Collapse (solver/row_solver.hpp): failed storeys under P-Delta; after collapses, true when
   // the run stops (contacts: the first; without: all buildings held).
   void check_failures(double t);
@@ -84,7 +89,7 @@ class SearsRowRun {
     for (int i : held_dofs) a(i) = 0.0;
   }
   EnergyBalance energy_now() const;
-  void record_slab(int k, bool coarse, double ag);
+  void record_slab(int k, bool coarse, const double* ag);
   void finish();
 
   // The layout with its modal banks for these steps.
@@ -95,6 +100,11 @@ class SearsRowRun {
   const SearsRowModel& model;
   const BuildingRow& row;
   const AssembledRow assembled;
+  // The ground under the floors and sites (issue 28), and each site's relative ground
+  // displacement ug_L - ug_R and velocity at current_t (gd, gv) and at the end of the step being
+  // solved (gd_next, gv_next) [m], [m/s]: the contacts act on absolute displacements.
+  FloorGround ground;
+  std::vector<double> gd, gv, gd_next, gv_next;
   const SearsSteps stepping;
   const double dt, hc;  // fine and coarse step [s]
   const long steps;     // fine steps in the run
@@ -119,6 +129,7 @@ class SearsRowRun {
   // end values, which Newmark's average-acceleration scheme balances exactly for linear storeys.
   Eigen::VectorXd u_prev, v_prev;
   double e_input = 0.0, e_damping = 0.0, e_contact = 0.0;
+  std::vector<double> ag_avg_, mdu_;  // per channel: mean ag [m/s^2], sum M du [kg m]
 
   // Floor state [m], [m/s], [m/s^2]; contact forces [N] and overlaps [m] per site.
   NewmarkFloors floors;

@@ -23,8 +23,7 @@ void count_impacts(SiteContacts& c, double fraction) {
 namespace {
 // The step rule's limits for this row and motion (sears/step_rule.hpp), the automatic step
 // dividing the record spacing.
-StepLimits row_step_limits(const BuildingRow& row, const GroundMotion* motion,
-                           const SearsRowModel& model) {
+StepLimits row_step_limits(const BuildingRow& row, double record_dt, const SearsRowModel& model) {
   const AssembledRow a = assemble(row);
   const RowContactLayout L = make_layout(row, a, model);
   double w_max = 0.0, t_c = std::numeric_limits<double>::infinity();
@@ -40,29 +39,28 @@ StepLimits row_step_limits(const BuildingRow& row, const GroundMotion* motion,
   StepLimits lim = step_limits(t_min, t_c);
   // Buildings: 20 steps per shortest period; ground motion: no step over a record sample.
   lim.auto_dt_s = std::min(lim.auto_dt_s, shortest_period(a) / 20.0);
-  if (motion) lim.auto_dt_s = std::min(lim.auto_dt_s, motion->dt);
+  if (record_dt > 0.0) lim.auto_dt_s = std::min(lim.auto_dt_s, record_dt);
   if (!std::isfinite(lim.auto_dt_s))
     throw InputError("damped Sears model: no time scale (no contacts, springs or record); give dt");
   if (!std::isfinite(lim.max_dt_s)) lim.max_dt_s = lim.auto_dt_s * 10.0;
   // The automatic step divides the record spacing, so that steps end on its samples.
-  if (motion && !(model.dt_s > 0.0))
-    lim.auto_dt_s = motion->dt / std::ceil(motion->dt / lim.auto_dt_s - 1e-9);
+  if (record_dt > 0.0 && !(model.dt_s > 0.0))
+    lim.auto_dt_s = record_dt / std::ceil(record_dt / lim.auto_dt_s - 1e-9);
   return lim;
 }
 }  // namespace
 
-SearsSteps sears_row_steps(const BuildingRow& row, const GroundMotion* motion,
-                           const SearsRowModel& model) {
+SearsSteps sears_row_steps(const BuildingRow& row, double record_dt, const SearsRowModel& model) {
   SearsSteps st;
-  const StepLimits lim = row_step_limits(row, motion, model);
+  const StepLimits lim = row_step_limits(row, record_dt, model);
   st.fine_s = st.coarse_s = choose_step(lim, model.dt_s);
   if (model.stepping == SearsStepping::fixed) return st;
   // The coarse step: Newmark accuracy for the buildings, and no step over a record sample.
   double hc = shortest_period(assemble(row)) * kCoarseStepPerBuildingPeriod;
-  if (motion && motion->dt > 0.0) hc = std::min(hc, motion->dt);
+  if (record_dt > 0.0) hc = std::min(hc, record_dt);
   constexpr double kMaxRatio = 1e5;  // no building period and no record: free floors
   if (!std::isfinite(hc)) hc = kMaxRatio * st.fine_s;
-  if (motion && motion->dt > 0.0) hc = motion->dt / std::ceil(motion->dt / hc - 1e-9);
+  if (record_dt > 0.0) hc = record_dt / std::ceil(record_dt / hc - 1e-9);
   if (!(hc > st.fine_s * (1.0 + 1e-9))) return st;  // the fine step is already coarse enough
   if (model.dt_s > 0.0) {                           // a given fine step is kept
     st.ratio = static_cast<long>(std::floor(std::min(hc / st.fine_s, kMaxRatio) + 1e-9));
@@ -79,11 +77,11 @@ SearsSteps sears_row_steps(const BuildingRow& row, const GroundMotion* motion,
   return st;
 }
 
-SearsRowSimulation simulate_sears_row(const BuildingRow& row, const GroundMotion& motion,
+SearsRowSimulation simulate_sears_row(const BuildingRow& row, const RowGround& ground,
                                       const SearsRowModel& model, const RowSimulationOptions& opt) {
   SearsRowProblem p;
   p.row = &row;
-  opt.apply_to(p, motion);
+  opt.apply_to(p, ground);
   p.contacts = false;
   SearsRowResult free_run = solve_sears_row(p, model);
   RowResult free = std::move(free_run.row);
@@ -97,8 +95,14 @@ SearsRowSimulation simulate_sears_row(const BuildingRow& row, const GroundMotion
   out.contacts = std::move(pounding.contacts);
   out.dt_s = pounding.dt_s;
   // Physics.md section 4, shared with the lumped models.
-  out.base = summarize_runs(row, std::move(free), std::move(pounding.row));
+  out.base = summarize_runs(row, ground, p.t_end, std::move(free), std::move(pounding.row));
   return out;
+}
+
+SearsRowSimulation simulate_sears_row(const BuildingRow& row, const GroundMotion& motion,
+                                      const SearsRowModel& model, const RowSimulationOptions& opt) {
+  return simulate_sears_row(row, RowGround::uniform(motion, static_cast<int>(row.buildings.size())),
+                            model, opt);
 }
 
 }  // namespace pound::sears

@@ -24,6 +24,7 @@
 #include <limits>
 #include <vector>
 
+#include "ground/row_ground.hpp"
 #include "motion/ground_motion.hpp"
 #include "sears/slab_contact_law.hpp"
 #include "simulation/simulate_row.hpp"
@@ -134,12 +135,13 @@ struct SlabPeaks {
 
 struct SearsRowProblem {
   const BuildingRow* row = nullptr;
-  const GroundMotion* motion = nullptr;  ///< null: no ground motion
-  double t_end = 0.0;                    ///< [s]
-  bool contacts = true;                  ///< false: the buildings vibrate independently
-  bool record_history = false;           ///< one History entry per step
-  bool track_energy = false;             ///< the energy balance (RowResult::energy)
-  Eigen::VectorXd u0, v0;                ///< initial floor state (empty: at rest) [m], [m/s]
+  /// The ground under each building (issue 28; its channels share one sample grid); null: none.
+  const RowGround* ground = nullptr;
+  double t_end = 0.0;           ///< [s]
+  bool contacts = true;         ///< false: the buildings vibrate independently
+  bool record_history = false;  ///< one History entry per step
+  bool track_energy = false;    ///< the energy balance (RowResult::energy)
+  Eigen::VectorXd u0, v0;       ///< initial floor state (empty: at rest) [m], [m/s]
   /// Collapse (issue 23), as RowProblem::collapse_drift_ratio: a run with contacts stops at the
   /// first collapse, one without holds the building still [-]; infinite: no check.
   double collapse_drift_ratio = std::numeric_limits<double>::infinity();
@@ -185,8 +187,8 @@ struct SearsSteps {
   /// step rule's largest allowed step (sears/step_rule.hpp); 1 without longer steps [-].
   long longest = 1;
 };
-SearsSteps sears_row_steps(const BuildingRow& row, const GroundMotion* motion,
-                           const SearsRowModel& model);
+/// `record_dt` the ground's sample spacing [s] (0: no ground motion).
+SearsSteps sears_row_steps(const BuildingRow& row, double record_dt, const SearsRowModel& model);
 
 /// One run. Throws InputError (bad model, too large dt) or NumericalError (non-finite state).
 SearsRowResult solve_sears_row(const SearsRowProblem& p, const SearsRowModel& model);
@@ -200,7 +202,12 @@ struct SearsRowSimulation {
   SearsStepCounts counts_free, counts_pounding;
 };
 
-/// With and without pounding (same step), and the response measures of physics.md section 4.
+/// With and without pounding (same step), and the response measures of physics.md section 4,
+/// on `ground` (one motion per building).
+SearsRowSimulation simulate_sears_row(const BuildingRow& row, const RowGround& ground,
+                                      const SearsRowModel& model,
+                                      const RowSimulationOptions& opt = {});
+/// The same with one motion under every building.
 SearsRowSimulation simulate_sears_row(const BuildingRow& row, const GroundMotion& motion,
                                       const SearsRowModel& model,
                                       const RowSimulationOptions& opt = {});

@@ -102,7 +102,8 @@ void TranslationBound::set_state(const Eigen::VectorXd& u, const Eigen::VectorXd
   }
 }
 
-double TranslationBound::approach(int l, int r, const Eigen::VectorXd& v, double h) const {
+double TranslationBound::approach(int l, int r, const Eigen::VectorXd& v, double ground_rate,
+                                  double h) const {
   auto accel = [&](int k) {
     const int b = building_of_[k];
     if (own_[b] && omega_g_[b] > 0.0) {  // P-Delta on yielding storeys: E' may grow
@@ -111,7 +112,7 @@ double TranslationBound::approach(int l, int r, const Eigen::VectorXd& v, double
     }
     return (own_[b] ? G_own_(k) : G_(k)) * (sqrt2E_[b] + sqrt_mass_[b] * ag_max_ * h);
   };
-  return std::max(0.0, v(l) - v(r)) * h + 0.5 * h * h * (accel(l) + accel(r));
+  return std::max(0.0, v(l) - v(r) + ground_rate) * h + 0.5 * h * h * (accel(l) + accel(r));
 }
 
 }  // namespace pound::sears

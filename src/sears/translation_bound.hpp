@@ -10,8 +10,9 @@
 //     |(M^-1 K u)_k| <= alpha_k sqrt(u^T K u),  alpha_k = |K^1/2 M^-1 e_k|
 //     |(M^-1 C v)_k| <= beta_k sqrt(v^T M v),   beta_k = |M^-1/2 C M^-1 e_k|
 // hence |u_k'' + ag| <= G_k sqrt(2 E_b), G_k = sqrt(alpha_k^2 + beta_k^2). For floors L, R of
-// two buildings the ground term cancels in u_L'' - u_R'', and Taylor's theorem gives
-//     (u_L - u_R)(t + tau) - (u_L - u_R)(t) <= max(0, v_L - v_R) h + h^2/2 (A_L + A_R)
+// two buildings the absolute approach x = (u_L + ug_L) - (u_R + ug_R) has x'' = (u_L'' + ag_L) -
+// (u_R'' + ag_R) (each building on its own ground, issue 28), and Taylor's theorem gives
+//     x(t + tau) - x(t) <= max(0, x'(t)) h + h^2/2 (A_L + A_R)
 // for 0 <= tau <= h, A_k the acceleration bound above at the largest energy in the step.
 // Yielding storeys (hysteresis/storey_law.hpp): with u^T K u / 2 replaced by the storeys'
 // recoverable energy U = sum U_j, both steps still hold, because every law keeps
@@ -49,9 +50,13 @@ class TranslationBound {
   /// storeys); a negative entry means u^T K u / 2 of that building.
   void set_state(const Eigen::VectorXd& u, const Eigen::VectorXd& v,
                  const std::vector<double>& strain = {});
-  /// Upper bound on the increase of u(dof_left) - u(dof_right) within h [s] of contact-free
-  /// motion from the state given to set_state() [m]. The two DOFs must be in different buildings.
-  double approach(int dof_left, int dof_right, const Eigen::VectorXd& v, double h) const;
+  /// Upper bound on the increase of the absolute approach (u + ug)(dof_left) - (u + ug)(dof_right)
+  /// within h [s] of contact-free motion from the state given to set_state() [m]; `ground_rate`
+  /// the two buildings' relative ground velocity vg_L - vg_R now [m/s] (issue 28: the bound is
+  /// on the floors' absolute accelerations, so it holds on different grounds). The two DOFs must
+  /// be in different buildings.
+  double approach(int dof_left, int dof_right, const Eigen::VectorXd& v, double ground_rate,
+                  double h) const;
 
  private:
   std::vector<int> building_of_;   // per DOF

@@ -7,7 +7,8 @@
 
 namespace pound {
 
-RowSimulation summarize_runs(const BuildingRow& row, RowResult free, RowResult pounding) {
+RowSimulation summarize_runs(const BuildingRow& row, const RowGround& ground, double t_end,
+                             RowResult free, RowResult pounding) {
   const AssembledRow a = assemble(row);
   RowSimulation out;
   out.free = std::move(free);
@@ -63,20 +64,30 @@ RowSimulation summarize_runs(const BuildingRow& row, RowResult free, RowResult p
     s.approach_free = out.free.sites[k].peak_approach;
     out.sites.push_back(s);
   }
+  for (std::size_t p = 0; p + 1 < row.buildings.size(); ++p)
+    out.ground_relative.push_back(
+        ground.peak_relative_displacement(static_cast<int>(p), static_cast<int>(p) + 1, t_end));
   return out;
 }
 
-RowSimulation simulate_row(const BuildingRow& row, const GroundMotion& motion,
+RowSimulation simulate_row(const BuildingRow& row, const RowGround& ground,
                            const ContactSpec& contact, const IntegratorSettings& integ,
                            const RowSimulationOptions& opt) {
   const AssembledRow a = assemble(row);
   const auto laws = make_site_laws(contact, row, a);
   RowProblem p;
   p.row = &a;
-  opt.apply_to(p, motion);
+  opt.apply_to(p, ground);
   for (const auto& l : laws) p.laws.push_back(l.get());
   RunPair runs = solve_free_and_pounding(p, integ);  // without and with the contacts
-  return summarize_runs(row, std::move(runs.free), std::move(runs.pounding));
+  return summarize_runs(row, ground, p.t_end, std::move(runs.free), std::move(runs.pounding));
+}
+
+RowSimulation simulate_row(const BuildingRow& row, const GroundMotion& motion,
+                           const ContactSpec& contact, const IntegratorSettings& integ,
+                           const RowSimulationOptions& opt) {
+  return simulate_row(row, RowGround::uniform(motion, static_cast<int>(row.buildings.size())),
+                      contact, integ, opt);
 }
 
 }  // namespace pound

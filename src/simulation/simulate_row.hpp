@@ -5,6 +5,7 @@
 #include <limits>
 #include <vector>
 
+#include "ground/row_ground.hpp"
 #include "motion/ground_motion.hpp"
 #include "simulation/contact_spec.hpp"
 #include "solver/integrator_settings.hpp"
@@ -51,6 +52,10 @@ struct RowSimulation {
   /// Per building: collapse in each run (issue 23; RowResult::collapse); empty without the
   /// check. The pounding run stops at its first collapse.
   std::vector<BuildingCollapse> collapse_pounding, collapse_free;
+  /// Per pair p (buildings p and p+1): the peak relative ground displacement |ug_p - ug_p+1|
+  /// over the run [m] (issue 28; 0 on one motion), which the gap must take up besides the
+  /// buildings' own motion.
+  std::vector<double> ground_relative;
 };
 
 struct RowSimulationOptions {
@@ -61,12 +66,13 @@ struct RowSimulationOptions {
   /// collapsed (RowProblem::collapse_drift_ratio); infinite: no check [-].
   double collapse_drift_ratio = std::numeric_limits<double>::infinity();
 
-  /// These settings in a run's problem (RowProblem, sears::SearsRowProblem) for `motion`:
-  /// the record and extra_time, histories, energy balance and collapse.
+  /// These settings in a run's problem (RowProblem, sears::SearsRowProblem) on `ground`: the
+  /// ground and extra_time (the run lasts until the last building's record ends plus
+  /// extra_time), histories, energy balance and collapse.
   template <class Problem>
-  void apply_to(Problem& p, const GroundMotion& motion) const {
-    p.motion = &motion;
-    p.t_end = motion.duration() + extra_time;
+  void apply_to(Problem& p, const RowGround& ground) const {
+    p.ground = &ground;
+    p.t_end = ground.duration() + extra_time;
     p.record_history = record_history;
     p.track_energy = track_energy;
     p.collapse_drift_ratio = collapse_drift_ratio;
@@ -74,9 +80,17 @@ struct RowSimulationOptions {
 };
 
 /// The response measures of physics.md section 4 from a free and a pounding run of the same
-/// row (any contact model): fills floors and sites.
-RowSimulation summarize_runs(const BuildingRow& row, RowResult free, RowResult pounding);
+/// row (any contact model) on `ground` until t_end [s]: fills floors, sites and the pairs'
+/// relative ground displacement.
+RowSimulation summarize_runs(const BuildingRow& row, const RowGround& ground, double t_end,
+                             RowResult free, RowResult pounding);
 
+/// The row on `ground` (one motion per building, ground/row_ground.hpp) with and without
+/// pounding, by the lumped solver.
+RowSimulation simulate_row(const BuildingRow& row, const RowGround& ground,
+                           const ContactSpec& contact, const IntegratorSettings& integ,
+                           const RowSimulationOptions& opt = {});
+/// The same with one motion under every building.
 RowSimulation simulate_row(const BuildingRow& row, const GroundMotion& motion,
                            const ContactSpec& contact, const IntegratorSettings& integ,
                            const RowSimulationOptions& opt = {});

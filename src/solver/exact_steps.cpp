@@ -80,17 +80,21 @@ const LinearStep* ExactSteps::propagator(const RowDynamics& dyn, const Assembled
   ExactStepCache::Entry& e = entries[config_];
   const int n = row.dofs();
   if (!e.ready) {
-    // z = [u; v], z' = A z + B w, w = [off; ag]: u' = v, v' = -M^-1 (K u + C v + off) - ag
-    // (physics.md section 1, without contact forces; docs/hysteresis.md for K_t and off).
+    // z = [u; v], z' = A z + B w, w = [off; ag_0 .. ag_m-1]: u' = v,
+    // v' = -M^-1 (K u + C v + off) - ag (physics.md section 1, without contact forces;
+    // docs/hysteresis.md for K_t and off), ag_c the acceleration of ground channel c under the
+    // floors on it (one column for a row without ground, its floors on no channel).
     const Eigen::VectorXd& im = row.inv_mass;
     Eigen::MatrixXd A = Eigen::MatrixXd::Zero(2 * n, 2 * n);
     A.topRightCorner(n, n).setIdentity();
     A.bottomLeftCorner(n, n) = -(im.asDiagonal() * e.K);
     dyn.damping_matrix(c_scratch_);  // the tangent stiffness' damping, or the initial C
     A.bottomRightCorner(n, n) = -(im.asDiagonal() * c_scratch_);
-    Eigen::MatrixXd B = Eigen::MatrixXd::Zero(2 * n, n + 1);
+    const int m = ground_inputs(dyn);
+    Eigen::MatrixXd B = Eigen::MatrixXd::Zero(2 * n, n + m);
     B.block(n, 0, n, n) = -Eigen::MatrixXd(im.asDiagonal());
-    B.block(n, n, n, 1).setConstant(-1.0);
+    for (int i = 0; i < n; ++i)
+      if (dyn.channel(i) < m) B(n + i, n + dyn.channel(i)) = -1.0;
     // Balance displacements against velocities by the row's largest frequency scale.
     const double w = std::sqrt(A.bottomLeftCorner(n, n).cwiseAbs().rowwise().sum().maxCoeff());
     Eigen::VectorXd scale = Eigen::VectorXd::Ones(2 * n);

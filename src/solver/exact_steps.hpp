@@ -83,6 +83,10 @@ class ExactSteps {
   /// response P1 [0; -M^-1] off of the branches' offsets [m, m/s].
   const LinearStep* propagator(const RowDynamics& dyn, const AssembledRow& row);
   const double* offsets_response() const { return offsets_response_.data(); }
+  /// The ramped inputs of a step: one per ground channel (one, at zero, without ground).
+  static int ground_inputs(const RowDynamics& dyn) {
+    return dyn.ground() ? dyn.ground()->channels() : 1;
+  }
 
  private:
   bool enabled_ = false;

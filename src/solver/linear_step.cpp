@@ -75,13 +75,25 @@ __attribute__((target_clones("avx2", "default"))) void apply_kernel(
     for (Eigen::Index i = 0; i < n; ++i) z1[i] += col[i] * zj;
   }
 }
+
+// A further ramped input (k >= 1), added after apply_kernel's first input and Phi z0.
+__attribute__((target_clones("avx2", "default"))) void add_input(Eigen::Index n,
+                                                                 const double* __restrict q1,
+                                                                 const double* __restrict q2,
+                                                                 double a0, double da,
+                                                                 double* __restrict z1) {
+  for (Eigen::Index i = 0; i < n; ++i) z1[i] += q1[i] * a0 + q2[i] * da;
+}
 }  // namespace
 
-void linear_step_apply(const LinearStep& L, double a0, double a1, const double* c, const double* z0,
-                       double* z1) {
+void linear_step_apply(const LinearStep& L, int r, const double* a0, const double* a1,
+                       const double* c, const double* z0, double* z1) {
   const Eigen::Index n = L.phi.rows(), m = L.p1.cols();
-  apply_kernel(n, L.phi.data(), c, L.p1.col(m - 1).data(), L.p2.col(m - 1).data(), a0, a1 - a0, z0,
-               z1);
+  const Eigen::Index first = m - r;
+  apply_kernel(n, L.phi.data(), c, L.p1.col(first).data(), L.p2.col(first).data(), a0[0],
+               a1[0] - a0[0], z0, z1);
+  for (int k = 1; k < r; ++k)
+    add_input(n, L.p1.col(first + k).data(), L.p2.col(first + k).data(), a0[k], a1[k] - a0[k], z1);
 }
 
 }  // namespace pound

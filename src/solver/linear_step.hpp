@@ -29,11 +29,13 @@ struct LinearStep {
 LinearStep linear_step(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B, double h,
                        const Eigen::VectorXd& scale);
 
-/// z1 = Phi z0 + c + P1(:, m-1) a0 + P2(:, m-1) (a1 - a0): the step with the last input ramping
-/// from a0 to a1 and the others held, their response P1 w (constant) given as c. z0, c and z1
-/// hold n = Phi.rows() values; z1 must not alias z0. Compiled for AVX2 and the baseline (the
-/// same operations in the same order, no fused multiply-add: the same bits).
-void linear_step_apply(const LinearStep& L, double a0, double a1, const double* c, const double* z0,
-                       double* z1);
+/// z1 = Phi z0 + c + sum_k [P1(:, m-r+k) a0_k + P2(:, m-r+k) (a1_k - a0_k)]: the step with the
+/// last r inputs ramping from a0_k to a1_k (k = 0..r-1; the ground accelerations of a row's
+/// channels) and the others held, their response P1 w (constant) given as c. z0, c and z1 hold
+/// n = Phi.rows() values; z1 must not alias z0. Compiled for AVX2 and the baseline (the same
+/// operations in the same order, no fused multiply-add: the same bits; one ramped input gives
+/// the bits of the one-input form before issue 28).
+void linear_step_apply(const LinearStep& L, int r, const double* a0, const double* a1,
+                       const double* c, const double* z0, double* z1);
 
 }  // namespace pound

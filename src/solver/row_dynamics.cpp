@@ -6,13 +6,14 @@
 namespace pound {
 
 RowDynamics::RowDynamics(const AssembledRow& row, const std::vector<RowStorey>& storeys,
-                         bool track_energy)
+                         bool track_energy, const RowGround* ground)
     : row_(row),
       storeys_(storeys),
       n_(row.dofs()),
       ns_(static_cast<int>(row.sites.size())),
       linear_(row.linear),
       track_(track_energy),
+      ground_(row, ground),
       forces_(row, storeys) {
   active.assign(ns_, false);
   v0.assign(ns_, 0.0);
@@ -33,15 +34,38 @@ RowDynamics::RowDynamics(const AssembledRow& row, const std::vector<RowStorey>& 
   }
   layout_.impulses = 2 * n_ + layout_.storey_states;
   layout_.energies = layout_.impulses + ns_;
-  layout_.size = layout_.energies + (track_ ? 3 : 0);
+  layout_.ground = layout_.energies + (track_ ? 3 : 0);
+  set_ground_layout();
   force_.setZero(ns_);
   scratch_.setZero(n_);
   held_.assign(n_, 0);
 }
 
+// The floors' ground channels, and the ground states of the channels that a contact site meets
+// from a building on another channel (the only ones whose displacement enters a penetration).
+void RowDynamics::set_ground_layout() {
+  const int channels = ground_.channels();
+  mv_.assign(channels + 1, 0.0);
+  layout_.ground_offset.assign(channels, -1);
+  site_ground_.assign(ns_, {-1, -1});
+  int next = layout_.ground;
+  auto state_of = [&](int c) {
+    if (layout_.ground_offset[c] < 0) {
+      layout_.ground_offset[c] = next;
+      next += 2;
+    }
+    return layout_.ground_offset[c];
+  };
+  for (int i = 0; i < ns_; ++i)
+    if (ground_.differs(i))
+      site_ground_[i] = {state_of(ground_.site_channels(i).first),
+                         state_of(ground_.site_channels(i).second)};
+  layout_.size = next;
+}
+
 void RowDynamics::rhs(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy) {
   contact_forces(y);
-  const double a_g = ag(t);
+  const double* a_g = ground_acc(t);
   dy.resize(layout_.size);
   const double* u = y.data();
   const double* v = u + n_;
@@ -66,7 +90,15 @@ void RowDynamics::rhs(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy) {
   if (any_held_)
     for (int i = 0; i < n_; ++i)
       if (held_[i]) du[i] = dv[i] = 0.0;
-  if (track_) energy_rates(y, a_g, du + layout_.energies);
+  if (track_) energy_rates(y, t, du + layout_.energies);
+  if (layout_.size == layout_.ground) return;
+  const double* agc = ground_.channel_acc(t);
+  for (int c = 0; c < ground_.channels(); ++c) {  // ug' = vg, vg' = ag
+    const int g = layout_.ground_offset[c];
+    if (g < 0) continue;
+    du[g] = y(g + 1);
+    du[g + 1] = agc[c];
+  }
 }
 
 void RowDynamics::storey_changed(int) {
@@ -81,17 +113,25 @@ void RowDynamics::damping_matrix(Eigen::MatrixXd& C) const {
     C = row_.C;
 }
 
-void RowDynamics::energy_rates(const Eigen::VectorXd& y, double a_g, double* dE) const {
+void RowDynamics::energy_rates(const Eigen::VectorXd& y, double t, double* dE) {
   const double* v = y.data() + n_;
   double* cv = scratch_.data();
   forces_.damping(v, cv);
-  double mv = 0.0, vcv = 0.0, contact = 0.0;
+  std::fill(mv_.begin(), mv_.end(), 0.0);
+  double vcv = 0.0, contact = 0.0, ground_work = 0.0;
   for (int i = 0; i < n_; ++i) {
-    mv += v[i] / row_.inv_mass(i);
+    mv_[ground_.channel(i)] += v[i] / row_.inv_mass(i);
     vcv += v[i] * cv[i];
   }
-  for (int i = 0; i < ns_; ++i) contact += force_(i) * penetration_rate(y, i);
-  dE[0] = -a_g * mv;
+  for (int i = 0; i < ns_; ++i) {
+    contact += force_(i) * penetration_rate(y, i);
+    const auto& g = site_ground_[i];
+    if (g.first >= 0) ground_work += force_(i) * (y(g.first + 1) - y(g.second + 1));
+  }
+  const double* agc = ground_.channel_acc(t);
+  double input = -agc[0] * mv_[0];
+  for (int c = 1; c <= ground_.channels(); ++c) input -= agc[c] * mv_[c];
+  dE[0] = input + ground_work;
   dE[1] = vcv;
   dE[2] = contact;
 }

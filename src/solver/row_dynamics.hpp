@@ -1,31 +1,41 @@
 #pragma once
 // The equations of motion of a row of buildings between switching events (physics.md sections
-// 1-2; docs/integration.md):
-//   u' = v,  v' = -M^-1 (C v + f(u, x)) - 1 ag + M^-1 P(u, v),  x' (storey laws),
-//   J' = contact force per site,  E' (energy rates),
-// with f = K u for linear storeys and f_j = V_j - V_{j+1} from the storey laws' shears V
-// otherwise (solver/row_forces.hpp), and P the contact forces of the active contacts. It holds
-// the discrete states the right-hand side depends on: which contacts are active (with their
+// 1-2 and 5a; docs/integration.md):
+//   u' = v,  v' = -M^-1 (C v + f(u, x)) - ag + M^-1 P(u, v, ug, vg),  x' (storey laws),
+//   J' = contact force per site,  E' (energy rates),  ug' = vg, vg' = ag (ground, per channel),
+// with u relative to each building's own ground, ag the ground acceleration under each floor
+// (its building's: ground/row_ground.hpp), f = K u for linear storeys and f_j = V_j - V_{j+1}
+// from the storey laws' shears V otherwise (solver/row_forces.hpp), and P the contact forces of
+// the active contacts, which act on absolute displacements: delta = (u_L + ug_L) - (u_R + ug_R)
+// - gap. The ground displacement and velocity of a channel are states of y where a contact
+// site joins buildings on different channels (they are the exact integrals of a piecewise-linear
+// ag, which every step integrates exactly: steps end on the record's samples). It holds the
+// discrete states the right-hand side depends on: which contacts are active (with their
 // approach velocity) and each storey law's branch; solver/row_switches.hpp changes them at
 // switching events. Kernel only: no files, no printing.
 #include <Eigen/Dense>
 #include <vector>
 
 #include "contact/contact_law.hpp"
-#include "motion/ground_motion.hpp"
+#include "ground/floor_ground.hpp"
 #include "solver/row_forces.hpp"
 #include "structure/building_row.hpp"
 
 namespace pound {
 
 /// The state vector y = [u (n); v (n); x (storey continuous states); J (impulse per site);
-/// E (energy balance: input, damping, contact, when tracked)]. The error test covers u, v, x.
+/// E (energy balance: input, damping, contact, when tracked); G (ug, vg of each ground channel
+/// that a contact site meets from a building on another channel)]. The error test covers u, v,
+/// x.
 struct StateLayout {
-  int dofs = 0;                    ///< floor DOFs n
-  int storey_states = 0;           ///< continuous states of the storey laws
-  int impulses = 0;                ///< offset of the impulses J in y
-  int energies = 0;                ///< offset of the energies E in y
-  int size = 0;                    ///< entries of y
+  int dofs = 0;           ///< floor DOFs n
+  int storey_states = 0;  ///< continuous states of the storey laws
+  int impulses = 0;       ///< offset of the impulses J in y
+  int energies = 0;       ///< offset of the energies E in y
+  int ground = 0;         ///< offset of the ground states G in y
+  int size = 0;           ///< entries of y
+  /// Per ground channel: the offset of its ug in y (vg follows), -1 when not a state.
+  std::vector<int> ground_offset;
   std::vector<int> storey_offset;  ///< per DOF: offset of its storey's states in y, -1: none
   /// Entries under the local error test: u, v, x.
   int tested() const { return 2 * dofs + storey_states; }
@@ -33,19 +43,31 @@ struct StateLayout {
 
 class RowDynamics {
  public:
-  /// `storeys` one per floor DOF of `row`; energies in the state when `track_energy`.
-  RowDynamics(const AssembledRow& row, const std::vector<RowStorey>& storeys, bool track_energy);
+  /// `storeys` one per floor DOF of `row`; energies in the state when `track_energy`; `ground`
+  /// under the row's buildings (null: none; kept by the caller).
+  RowDynamics(const AssembledRow& row, const std::vector<RowStorey>& storeys, bool track_energy,
+              const RowGround* ground);
 
-  /// The contact laws, one per site (pounding), or none (the buildings vibrate independently),
-  /// and the ground motion (null: none).
+  /// The contact laws, one per site (pounding), or none (the buildings vibrate independently).
   void set_contacts(const std::vector<const ContactLaw*>* laws) { laws_ = laws; }
-  void set_motion(const GroundMotion* motion) { motion_ = motion; }
   bool pounding() const { return laws_ != nullptr && !laws_->empty(); }
 
   const StateLayout& layout() const { return layout_; }
   bool linear() const { return linear_; }  ///< every storey linear elastic
   bool affine() const { return affine_; }  ///< every storey law piecewise linear
-  double ag(double t) const { return motion_ ? motion_->at(t) : 0.0; }
+  const RowGround* ground() const { return ground_.ground(); }
+  /// The ground acceleration under every floor DOF at t [m/s^2] (zeros without ground): the
+  /// returned array holds n values until the next call.
+  const double* ground_acc(double t) { return ground_.acc(t); }
+  /// The ground channel of floor DOF i (FloorGround::channel).
+  int channel(int i) const { return ground_.channel(i); }
+  /// The ground states of y at t [s] (exact: GroundTrace), after an exact step.
+  void set_ground_states(double t, Eigen::VectorXd& y) const {
+    for (int c = 0; c < ground_.channels(); ++c)
+      if (layout_.ground_offset[c] >= 0)
+        ground()->trace(c).kinematics(t, y(layout_.ground_offset[c] + 1),
+                                      y(layout_.ground_offset[c]));
+  }
 
   /// dy at (t, y) [SI per s]; the contact forces of y in contact_force().
   void rhs(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy);
@@ -59,14 +81,30 @@ class RowDynamics {
   }
   const Eigen::VectorXd& contact_force() const { return force_; }
 
-  /// Penetration delta = u_L - u_R - gap at site i (physics.md section 1) [m] and its rate.
+  /// Penetration delta = (u_L + ug_L) - (u_R + ug_R) - gap at site i (physics.md sections 1
+  /// and 5a) [m] and its rate; the ground terms where the site's buildings stand on different
+  /// channels.
   double penetration(const Eigen::VectorXd& y, int i) const {
     const auto& s = row_.sites[i];
-    return y(s.dof_left) - y(s.dof_right) - s.gap;
+    double d = y(s.dof_left) - y(s.dof_right) - s.gap;
+    const auto& g = site_ground_[i];
+    if (g.first >= 0) d += y(g.first) - y(g.second);
+    return d;
   }
   double penetration_rate(const Eigen::VectorXd& y, int i) const {
     const auto& s = row_.sites[i];
-    return y(n_ + s.dof_left) - y(n_ + s.dof_right);
+    double r = y(n_ + s.dof_left) - y(n_ + s.dof_right);
+    const auto& g = site_ground_[i];
+    if (g.first >= 0) r += y(g.first + 1) - y(g.second + 1);
+    return r;
+  }
+  /// The approach (u_L + ug_L) - (u_R + ug_R) of site i's floors [m]: penetration + gap.
+  double approach(const Eigen::VectorXd& y, int i) const {
+    const auto& s = row_.sites[i];
+    double d = y(s.dof_left) - y(s.dof_right);
+    const auto& g = site_ground_[i];
+    if (g.first >= 0) d += y(g.first) - y(g.second);
+    return d;
   }
   /// Drift of floor DOF `dof`'s storey in the block of y starting at `off` (0: displacements,
   /// n: velocities) [m], [m/s].
@@ -109,8 +147,11 @@ class RowDynamics {
   std::vector<double> v0;           ///< per site: approach velocity at the contact's start [m/s]
 
  private:
-  // E' = [input -ag 1^T M v, damping v^T C v, contact sum_s F_s (v_L - v_R)] [W].
-  void energy_rates(const Eigen::VectorXd& y, double ag, double* dE) const;
+  // E' = [input, damping v^T C v, contact sum_s F_s delta'_s] [W], the input being the work
+  // of the effective earthquake forces -M ag on the floors, sum_i -ag_i m_i v_i, plus that of
+  // the ground's relative motion on the contacts, sum_s F_s (vg_L - vg_R) (docs/ground.md).
+  void energy_rates(const Eigen::VectorXd& y, double t, double* dE);
+  void set_ground_layout();
 
   const AssembledRow& row_;
   const std::vector<RowStorey>& storeys_;
@@ -119,8 +160,10 @@ class RowDynamics {
   bool affine_ = false;
   StateLayout layout_;
   const std::vector<const ContactLaw*>* laws_ = nullptr;
-  const GroundMotion* motion_ = nullptr;
-  std::vector<char> held_;  // per DOF: held still (hold)
+  FloorGround ground_;                            // the ground under floors and sites
+  std::vector<std::pair<int, int>> site_ground_;  // per site: ug offsets of L and R, or -1
+  mutable std::vector<double> mv_;                // per channel: sum m_i v_i (energy rates)
+  std::vector<char> held_;                        // per DOF: held still (hold)
   bool any_held_ = false;
   Eigen::VectorXd force_;            // contact force per site [N]
   mutable Eigen::VectorXd scratch_;  // damping forces C v [N] (energy rates)

@@ -127,7 +127,7 @@ void RowForces::stiffness(bool affine, Eigen::MatrixXd& K) const {
 }
 
 void RowForces::general(const Eigen::VectorXd& y, const std::vector<StoreyState>& states,
-                        const std::vector<int>& xoff, double ag, double* dy) const {
+                        const std::vector<int>& xoff, const double* ag, double* dy) const {
   const double* u = y.data();
   const double* v = u + n_;
   double* dv = dy + n_;
@@ -146,7 +146,7 @@ void RowForces::general(const Eigen::VectorXd& y, const std::vector<StoreyState>
     }
   }
   const double* im = row_.inv_mass.data();
-  for (int i = 0; i < n_; ++i) dv[i] = -im[i] * dv[i] - ag;
+  for (int i = 0; i < n_; ++i) dv[i] = -im[i] * dv[i] - ag[i];
 }
 
 void RowForces::damping(const double* v, double* cv) const {

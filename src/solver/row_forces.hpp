@@ -1,6 +1,7 @@
 #pragma once
 // The internal forces of the floors of a row (physics.md section 1; docs/hysteresis.md): the
-// accelerations dv = -M^-1 (C v + f(u)) - ag of the row solver's right-hand side, with
+// accelerations dv = -M^-1 (C v + f(u)) - ag of the row solver's right-hand side (ag: the
+// ground acceleration under each floor DOF, its building's, issue 28), with
 //   - linear storeys: f = K u, from the bands of the tridiagonal K and Rayleigh C of shear
 //     buildings (Th. 3.6; Chopra 11.4.1), or compressed rows when C is full (modal damping);
 //   - piecewise-linear storeys (elastic, bilinear): f = K_t u + off, the bands of the current
@@ -23,17 +24,18 @@ class RowForces {
   /// `storeys` one per floor DOF of `row` (AssembledRow::storeys or elastic_storeys()).
   RowForces(const AssembledRow& row, const std::vector<RowStorey>& storeys);
 
-  /// dv = -M^-1 (C v + K u) - ag [m/s^2] (linear storeys).
-  void linear(const double* u, const double* v, double ag, double* dv) const;
+  /// dv = -M^-1 (C v + K u) - ag [m/s^2] (linear storeys); ag[i] the ground acceleration under
+  /// floor DOF i [m/s^2].
+  void linear(const double* u, const double* v, const double* ag, double* dv) const;
   /// dv = -M^-1 (C v + K_t u + off) - ag with the lines of set_lines().
-  void affine(const double* u, const double* v, double ag, double* dv) const;
+  void affine(const double* u, const double* v, const double* ag, double* dv) const;
   /// The tangent bands and offsets from every storey's current branch (branch_line()).
   void set_lines(const std::vector<StoreyState>& states);
   /// dv = -M^-1 (C v + f) - ag with f from the laws' shears at drifts d of u; the laws'
   /// continuous states are read at `x` + xoff[i] and their rates written at dy + xoff[i]
   /// (dy = the whole state derivative, dv = dy + n).
   void general(const Eigen::VectorXd& y, const std::vector<StoreyState>& states,
-               const std::vector<int>& xoff, double ag, double* dy) const;
+               const std::vector<int>& xoff, const double* ag, double* dy) const;
   /// Tangent-stiffness damping: C = C0 + sum a1 (max(k_t, 0) - k0) per such storey, from every
   /// storey's current branch.
   void set_tangent_damping(const std::vector<StoreyState>& states);
@@ -64,19 +66,19 @@ class RowForces {
 };
 
 // The two hot paths are defined here so that the solver's right-hand side inlines them.
-inline void RowForces::linear(const double* __restrict u, const double* __restrict v, double ag,
-                              double* __restrict dv) const {
+inline void RowForces::linear(const double* __restrict u, const double* __restrict v,
+                              const double* __restrict ag, double* __restrict dv) const {
   const double* im = row_.inv_mass.data();
   if (tridiagonal_ && n_ > 1) {
     const double *kl = kl_.data(), *kd = kd_.data(), *ku = ku_.data();
     const double *cl = cl_.data(), *cd = cd_.data(), *cu = cu_.data();
     const int m = n_ - 1;
-    dv[0] = -im[0] * (cd[0] * v[0] + cu[0] * v[1] + (kd[0] * u[0] + ku[0] * u[1])) - ag;
+    dv[0] = -im[0] * (cd[0] * v[0] + cu[0] * v[1] + (kd[0] * u[0] + ku[0] * u[1])) - ag[0];
     for (int i = 1; i < m; ++i)
       dv[i] = -im[i] * (cl[i] * v[i - 1] + cd[i] * v[i] + cu[i] * v[i + 1] +
                         (kl[i] * u[i - 1] + kd[i] * u[i] + ku[i] * u[i + 1])) -
-              ag;
-    dv[m] = -im[m] * (cl[m] * v[m - 1] + cd[m] * v[m] + (kl[m] * u[m - 1] + kd[m] * u[m])) - ag;
+              ag[i];
+    dv[m] = -im[m] * (cl[m] * v[m - 1] + cd[m] * v[m] + (kl[m] * u[m - 1] + kd[m] * u[m])) - ag[m];
     return;
   }
   for (int i = 0; i < n_; ++i) {
@@ -85,25 +87,25 @@ inline void RowForces::linear(const double* __restrict u, const double* __restri
       const int j = col_[e];
       f += c_val_[e] * v[j] + k_val_[e] * u[j];
     }
-    dv[i] = -im[i] * f - ag;
+    dv[i] = -im[i] * f - ag[i];
   }
 }
 
-inline void RowForces::affine(const double* __restrict u, const double* __restrict v, double ag,
-                              double* __restrict dv) const {
+inline void RowForces::affine(const double* __restrict u, const double* __restrict v,
+                              const double* __restrict ag, double* __restrict dv) const {
   const double* im = row_.inv_mass.data();
   const double *tl = tl_.data(), *td = td_.data(), *tu = tu_.data(), *off = off_.data();
   if (tridiagonal_ && n_ > 1) {
     const double *cl = cl_.data(), *cd = cd_.data(), *cu = cu_.data();
     const int m = n_ - 1;
-    dv[0] = -im[0] * (cd[0] * v[0] + cu[0] * v[1] + (td[0] * u[0] + tu[0] * u[1]) + off[0]) - ag;
+    dv[0] = -im[0] * (cd[0] * v[0] + cu[0] * v[1] + (td[0] * u[0] + tu[0] * u[1]) + off[0]) - ag[0];
     for (int i = 1; i < m; ++i)
       dv[i] = -im[i] * (cl[i] * v[i - 1] + cd[i] * v[i] + cu[i] * v[i + 1] +
                         (tl[i] * u[i - 1] + td[i] * u[i] + tu[i] * u[i + 1]) + off[i]) -
-              ag;
+              ag[i];
     dv[m] =
         -im[m] * (cl[m] * v[m - 1] + cd[m] * v[m] + (tl[m] * u[m - 1] + td[m] * u[m]) + off[m]) -
-        ag;
+        ag[m];
     return;
   }
   double* cv = cv_.data();
@@ -111,7 +113,7 @@ inline void RowForces::affine(const double* __restrict u, const double* __restri
   for (int i = 0; i < n_; ++i) {
     const double ku =
         td[i] * u[i] + (i > 0 ? tl[i] * u[i - 1] : 0.0) + (i + 1 < n_ ? tu[i] * u[i + 1] : 0.0);
-    dv[i] = -im[i] * (cv[i] + ku + off[i]) - ag;
+    dv[i] = -im[i] * (cv[i] + ku + off[i]) - ag[i];
   }
 }
 

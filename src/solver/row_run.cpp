@@ -21,14 +21,15 @@ RowRun::RowRun(const RowProblem& p, const IntegratorSettings& s)
       storeys_(*storeys_owner_),
       track_(p.track_energy),
       fixed_(s.control == StepControl::fixed),
-      dyn_(row_, storeys_, track_),
+      dyn_(row_, storeys_, track_, p.ground),
       switches_(row_, storeys_),
       rec_(row_, storeys_, !p.laws.empty(), p.record_history) {
   rec_.set_collapse(storeys_, p.collapse_drift_ratio);
   if (!p.laws.empty() && static_cast<int>(p.laws.size()) != ns_)
     throw std::logic_error("one contact law per site expected");
   dyn_.set_contacts(&p.laws);
-  dyn_.set_motion(p.motion);
+  step_a0_.assign(ExactSteps::ground_inputs(dyn_), 0.0);
+  step_a1_ = step_a0_;
   work_.resize(dyn_.layout().size);
 }
 
@@ -84,7 +85,7 @@ double RowRun::error_norm(const Eigen::VectorXd& y0, const Eigen::VectorXd& y1,
 void RowRun::set_step_limits() {
   const double tmin_period = shortest_period(row_);
   h_max_ = s_.h_max > 0 ? s_.h_max : tmin_period / 20.0;
-  rec_dt_ = p_->motion ? p_->motion->dt : 0.0;
+  rec_dt_ = p_->ground ? p_->ground->dt() : 0.0;
   if (s_.h_max <= 0 && rec_dt_ > 0) h_max_ = std::min(h_max_, rec_dt_);
   const bool h_max_known = std::isfinite(h_max_);
   if (!h_max_known) h_max_ = std::max(p_->t_end, 1e-6);
@@ -148,15 +149,22 @@ bool RowRun::exact_step() {
   if (!L) return false;
   const double t1 = exact_.next_point();
   const double h = t1 - t_;
-  // ag over the step: linear between its ends (the grid holds every record sample); zero on a
-  // step after the record's last sample (GroundMotion::at).
-  double a0 = 0.0, a1 = 0.0;
-  if (p_->motion && t_ + 0.5 * h < p_->motion->duration()) {
-    a0 = p_->motion->at(std::max(t_, 0.0));
-    a1 = p_->motion->at(std::min(t1, p_->motion->duration()));
+  // Each channel's ag over the step: linear between its ends (the grid holds every record
+  // sample); zero on a step after the channel's last sample (GroundMotion::at).
+  const int m = ExactSteps::ground_inputs(dyn_);
+  for (int c = 0; c < m; ++c) {
+    step_a0_[c] = step_a1_[c] = 0.0;
+    if (!p_->ground) continue;
+    const GroundTrace& g = p_->ground->trace(c);
+    if (t_ + 0.5 * h < g.duration()) {
+      step_a0_[c] = g.acc(std::max(t_, 0.0));
+      step_a1_[c] = g.acc(std::min(t1, g.duration()));
+    }
   }
   y1_ = y_;
-  linear_step_apply(*L, a0, a1, exact_.offsets_response(), y_.data(), y1_.data());
+  linear_step_apply(*L, m, step_a0_.data(), step_a1_.data(), exact_.offsets_response(), y_.data(),
+                    y1_.data());
+  dyn_.set_ground_states(t1, y1_);
   rhs(t1, y1_, k7_);
   check_finite(t1, y1_);
   if (switches_.any(dyn_)) {
@@ -326,7 +334,7 @@ RowResult RowRun::advance() {
 
 void RowRun::record(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& dy) {
   // Absolute acceleration u'' + ag = M^-1 (P - C v - f): dy already holds u'' = that - ag.
-  const double ag = dyn_.ag(t);
+  const double* ag = dyn_.ground_acc(t);
   rec_.accel_peaks(dy.data() + n_, ag);
   dyn_.contact_forces(y);
   const Eigen::VectorXd& force = dyn_.contact_force();
@@ -354,9 +362,8 @@ void RowRun::update_peaks(const Eigen::VectorXd& y0, const Eigen::VectorXd& y1,
   // events are located on (find_event), so that a pounding run of this motion touches at a
   // site exactly when this peak exceeds its gap (up to the location tolerance).
   for (int i = 0; i < ns_ && !pounding; ++i) {
-    const auto& s = row_.sites[i];
-    const Hermite c{y0(s.dof_left) - y0(s.dof_right), y1(s.dof_left) - y1(s.dof_right),
-                    h * dyn_.penetration_rate(y0, i), h * dyn_.penetration_rate(y1, i)};
+    const Hermite c{dyn_.approach(y0, i), dyn_.approach(y1, i), h * dyn_.penetration_rate(y0, i),
+                    h * dyn_.penetration_rate(y1, i)};
     rec_.approach_over_step(i, c);
   }
 }

@@ -126,6 +126,7 @@ class RowRun {
   double t_ = 0.0, h_ = 0.0, h_max_ = 0.0, rec_dt_ = 0.0;
   long grid_ = 0, next_sample_ = 1;
   bool any_contact_ = false;
+  std::vector<double> step_a0_, step_a1_;  // each channel's ag at an exact step's ends [m/s^2]
   Eigen::VectorXd y_, y1_, err_, k1_, k7_, ytry_, etry_, ktry_;
 };
 

@@ -5,13 +5,15 @@
 // penetration delta crosses zero are found by Illinois iteration on re-taken Runge-Kutta steps,
 // so no step straddles the start or end of a contact, where the force (and for the
 // stereomechanical model the velocity) is discontinuous. Steps also end on every sample of the
-// ground-motion record, where ag(t) has kinks. Kernel only: no files, no printing.
+// ground motions, where ag(t) has kinks; each building has its own ground (ground/row_ground.hpp)
+// and the contacts act on absolute displacements (physics.md section 5a). Kernel only: no files, no
+// printing.
 #include <Eigen/Dense>
 #include <limits>
 #include <vector>
 
 #include "contact/contact_law.hpp"
-#include "motion/ground_motion.hpp"
+#include "ground/row_ground.hpp"
 #include "solver/exact_steps.hpp"
 #include "solver/integrator_settings.hpp"
 #include "solver/row_result.hpp"
@@ -21,7 +23,8 @@ namespace pound {
 
 struct RowProblem {
   const AssembledRow* row = nullptr;
-  const GroundMotion* motion = nullptr;  ///< null: no ground motion
+  /// The ground under each building (issue 28; its channels share one sample grid); null: none.
+  const RowGround* ground = nullptr;
   /// One law per contact site; empty: no pounding (the buildings move independently).
   std::vector<const ContactLaw*> laws;
   Eigen::VectorXd u0, v0;  ///< initial state (empty: at rest) [m], [m/s]

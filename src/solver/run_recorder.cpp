@@ -146,10 +146,11 @@ void RunRecorder::step_collapse(int k, const QuinticHermite& d, double t0, doubl
 }
 
 void RunRecorder::history(double t, const Eigen::VectorXd& u, const Eigen::VectorXd& a_rel,
-                          double ag, const Eigen::VectorXd& force, const Eigen::VectorXd& shear) {
+                          const double* ag, const Eigen::VectorXd& force,
+                          const Eigen::VectorXd& shear) {
   r_.history.t.push_back(t);
   r_.history.u.push_back(u);
-  r_.history.a_abs.push_back(a_rel.array() + ag);
+  r_.history.a_abs.push_back(a_rel + Eigen::Map<const Eigen::VectorXd>(ag, a_rel.size()));
   r_.history.force.push_back(force);
   r_.history.shear.push_back(shear);
 }

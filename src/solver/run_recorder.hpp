@@ -40,24 +40,25 @@ class RunRecorder {
   const RowResult& result() const { return r_; }
 
   // --- Floors ------------------------------------------------------------------------------
-  /// Peak absolute accelerations from the relative ones a_rel [m/s^2] and the ground's ag
-  /// (held buildings excepted).
-  void accel_peaks(const double* a_rel, double ag) {
+  /// Peak absolute accelerations from the relative ones a_rel [m/s^2] and the ground's ag under
+  /// each floor (held buildings excepted).
+  void accel_peaks(const double* a_rel, const double* ag) {
     for (int i = 0; i < n_; ++i) {
       if (any_held_ && held_[i]) continue;
-      const double a = a_rel[i] + ag;
+      const double a = a_rel[i] + ag[i];
       r_.peak_abs_accel(i) = std::max(r_.peak_abs_accel(i), std::fabs(a));
     }
   }
   /// Peak displacements and storey drifts [m] and absolute accelerations (from the relative
-  /// ones a_rel and the ground's ag [m/s^2]) sampled at the end t [s] of a step of h [s]; a
-  /// storey past its collapse drift collapses its building at the time its drift, linear over
-  /// the step, passed it.
-  void sampled_peaks(const Eigen::VectorXd& u, const double* a_rel, double ag, double t, double h) {
+  /// ones a_rel and the ground's ag under each floor [m/s^2]) sampled at the end t [s] of a step
+  /// of h [s]; a storey past its collapse drift collapses its building at the time its drift,
+  /// linear over the step, passed it.
+  void sampled_peaks(const Eigen::VectorXd& u, const double* a_rel, const double* ag, double t,
+                     double h) {
     for (int k = 0; k < n_; ++k) {
       if (any_held_ && held_[k]) continue;
       const int b = below_[k];
-      const double a = a_rel[k] + ag, d = b >= 0 ? u(k) - u(b) : u(k);
+      const double a = a_rel[k] + ag[k], d = b >= 0 ? u(k) - u(b) : u(k);
       r_.peak_disp(k) = std::max(r_.peak_disp(k), std::fabs(u(k)));
       r_.peak_drift(k) = std::max(r_.peak_drift(k), std::fabs(d));
       r_.peak_abs_accel(k) = std::max(r_.peak_abs_accel(k), std::fabs(a));
@@ -145,9 +146,9 @@ class RunRecorder {
 
   // --- Histories -----------------------------------------------------------------------------
   bool keeps_history() const { return history_; }
-  /// One entry: time t [s], displacements u [m], relative accelerations a_rel and ground ag
-  /// [m/s^2], contact forces [N], storey shears [N].
-  void history(double t, const Eigen::VectorXd& u, const Eigen::VectorXd& a_rel, double ag,
+  /// One entry: time t [s], displacements u [m], relative accelerations a_rel and the ground's
+  /// ag under each floor [m/s^2], contact forces [N], storey shears [N].
+  void history(double t, const Eigen::VectorXd& u, const Eigen::VectorXd& a_rel, const double* ag,
                const Eigen::VectorXd& force, const Eigen::VectorXd& shear);
 
   // --- The end -------------------------------------------------------------------------------

@@ -54,6 +54,7 @@ SimulationSetup prepare_simulation(const Options& opt, const RecordValues* recor
   s.sears_model = std::move(study.sears);
   s.integrator = study.integrator;
   s.motion = record_of(opt, record);
+  s.ground = RowGround::uniform(s.motion, static_cast<int>(s.row.buildings.size()));
   s.options = study.simulation;
   s.options.record_history = opt.given("histories");
   s.options.track_energy = true;
@@ -61,7 +62,7 @@ SimulationSetup prepare_simulation(const Options& opt, const RecordValues* recor
     // The step limits need the motion: a too large --dt fails here, before any output.
     const std::string dt_key = opt.given("dt") ? "dt" : "sears.dt";
     try {
-      sears::sears_row_steps(s.row, &s.motion, s.sears_model);
+      sears::sears_row_steps(s.row, s.ground.dt(), s.sears_model);
     } catch (const InputError& e) {
       if (!opt.given(dt_key)) throw;
       throw opt.invalid(dt_key, e.what());
@@ -71,25 +72,25 @@ SimulationSetup prepare_simulation(const Options& opt, const RecordValues* recor
   return s;
 }
 
-SimulationRun simulate_model(const BuildingRow& row, const GroundMotion& motion,
+SimulationRun simulate_model(const BuildingRow& row, const RowGround& ground,
                              const ContactSpec& contact, const sears::SearsRowModel& sears,
                              const IntegratorSettings& integrator,
                              const RowSimulationOptions& options) {
   SimulationRun r;
   if (is_sears_model(contact.model)) {
-    auto ss = sears::simulate_sears_row(row, motion, sears, options);
+    auto ss = sears::simulate_sears_row(row, ground, sears, options);
     r.sim = std::move(ss.base);
     r.slabs = std::move(ss.slabs);
     r.phases = std::move(ss.contacts);
     r.sears_dt_s = ss.dt_s;
   } else {
-    r.sim = simulate_row(row, motion, contact, integrator, options);
+    r.sim = simulate_row(row, ground, contact, integrator, options);
   }
   return r;
 }
 
 SimulationRun run_simulation(const SimulationSetup& setup) {
-  return simulate_model(setup.row, setup.motion, setup.contact, setup.sears_model, setup.integrator,
+  return simulate_model(setup.row, setup.ground, setup.contact, setup.sears_model, setup.integrator,
                         setup.options);
 }
 

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "ground/row_ground.hpp"
 #include "io/options.hpp"
 #include "motion/ground_motion.hpp"
 #include "sears/sears_simulation.hpp"
@@ -42,6 +43,7 @@ struct SimulationSetup {
   sears::SearsRowModel sears_model;  ///< is_sears: slabs and model options
   IntegratorSettings integrator;     ///< the lumped models' integrator
   GroundMotion motion;               ///< read, truncated, scaled, baseline-corrected [m/s^2]
+  RowGround ground;                  ///< the motion under each building (issue 28)
   RowSimulationOptions options;  ///< extra time, histories (--histories given), energy, collapse
   /// "WHERE is not used by contact model M": given keys the chosen model does not read.
   std::vector<std::string> unused_keys;
@@ -61,11 +63,11 @@ struct SimulationRun {
   double sears_dt_s = 0.0;                  ///< damped Sears model: its (fine) step [s]
 };
 
-/// The row under `motion` with and without pounding: by the damped Sears model (`sears`) when
+/// The row on `ground` with and without pounding: by the damped Sears model (`sears`) when
 /// contact.model is sears, else by the lumped solver with contact's law and `integrator`. The
 /// one place that chooses between the two solvers (`pound simulate`, the Python module and the
 /// campaign's samples). Throws NumericalError on a numerical failure.
-SimulationRun simulate_model(const BuildingRow& row, const GroundMotion& motion,
+SimulationRun simulate_model(const BuildingRow& row, const RowGround& ground,
                              const ContactSpec& contact, const sears::SearsRowModel& sears,
                              const IntegratorSettings& integrator,
                              const RowSimulationOptions& options);

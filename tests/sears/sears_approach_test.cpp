@@ -24,7 +24,9 @@ TEST(SearsApproach, WithoutContactsTheFacesMoveWithTheFloors) {
   const test::StudyRun s = chapter8(0.0);
   SearsRowProblem p;
   p.row = &s.row;
-  p.motion = &s.motion;
+  const RowGround p_ground =
+      RowGround::uniform(s.motion, static_cast<int>(p.row->buildings.size()));
+  p.ground = &p_ground;
   p.t_end = s.motion.duration();
   p.contacts = false;
   p.record_history = true;

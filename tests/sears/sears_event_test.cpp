@@ -129,7 +129,8 @@ TEST(SearsEvent, TranslationBoundHoldsUnderGroundMotion) {
   for (int trial = 0; trial < 10; ++trial) {
     SearsRowProblem p;
     p.row = &row;
-    p.motion = &gm;
+    const RowGround p_ground = RowGround::uniform(gm, static_cast<int>(p.row->buildings.size()));
+    p.ground = &p_ground;
     p.t_end = h;
     p.contacts = false;
     p.record_history = true;
@@ -143,7 +144,7 @@ TEST(SearsEvent, TranslationBoundHoldsUnderGroundMotion) {
       const double rel0 = p.u0(l) - p.u0(rr);
       double rise = 0.0;
       for (const auto& u : r.row.history.u) rise = std::max(rise, u(l) - u(rr) - rel0);
-      const double b = bound.approach(l, rr, p.v0, h);
+      const double b = bound.approach(l, rr, p.v0, 0.0, h);
       EXPECT_LE(rise, b) << trial;
       tightest = std::max(tightest, rise / b);
     }
@@ -315,7 +316,9 @@ TEST(SearsEvent, ContactsStartAndEndInFineSteps) {
   StudyRun s = read_study("ch8-five-three.ini", {"--motion.duration", "3"});
   SearsRowProblem p;
   p.row = &s.row;
-  p.motion = &s.motion;
+  const RowGround p_ground =
+      RowGround::uniform(s.motion, static_cast<int>(p.row->buildings.size()));
+  p.ground = &p_ground;
   p.t_end = s.motion.duration();
   p.record_history = true;
   const SearsRowResult r = solve_sears_row(p, s.model);
@@ -463,7 +466,9 @@ TEST(SearsEvent, TimeLoopDoesNotAllocate) {
   auto count = [](const StudyRun& s, long& steps) {
     SearsRowProblem p;
     p.row = &s.row;
-    p.motion = &s.motion;
+    const RowGround p_ground =
+        RowGround::uniform(s.motion, static_cast<int>(p.row->buildings.size()));
+    p.ground = &p_ground;
     p.t_end = s.motion.duration();
     test::CountAllocations c;
     const SearsRowResult r = solve_sears_row(p, s.model);

@@ -150,7 +150,8 @@ TEST(SearsRow, WithoutContactsNewmarkMatchesTheRowSolver) {
   model.stepping = SearsStepping::fixed;  // Newmark at the fine step; event stepping below
   SearsRowProblem p;
   p.row = &row;
-  p.motion = &gm;
+  const RowGround p_ground = RowGround::uniform(gm, static_cast<int>(p.row->buildings.size()));
+  p.ground = &p_ground;
   p.t_end = gm.duration();
   const SearsRowResult r = solve_sears_row(p, model);
   model.stepping = SearsStepping::event;  // coarse steps throughout (no contact possible)
@@ -161,7 +162,8 @@ TEST(SearsRow, WithoutContactsNewmarkMatchesTheRowSolver) {
   const AssembledRow a = assemble(row);
   RowProblem q;
   q.row = &a;
-  q.motion = &gm;
+  const RowGround q_ground = RowGround::uniform(gm, static_cast<int>(q.row->offset.size()));
+  q.ground = &q_ground;
   q.t_end = gm.duration();
   IntegratorSettings s;
   s.rtol = 1e-10;

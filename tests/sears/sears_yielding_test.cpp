@@ -133,7 +133,8 @@ TEST(SearsYielding, NewmarkStepOfAnElasticPerfectlyPlasticSdofMatchesTheClosedFo
   model.dt_s = 2 * M_PI / std::sqrt(1e3) / 20000;
   SearsRowProblem p;
   p.row = &row;
-  p.motion = &g;
+  const RowGround p_ground = RowGround::uniform(g, static_cast<int>(p.row->buildings.size()));
+  p.ground = &p_ground;
   p.t_end = g.duration();
   p.contacts = false;
   const SearsRowResult r = solve_sears_row(p, model);

@@ -99,7 +99,7 @@ TEST(LinearStep, TwoHalfStepsOfARampAreOneStep) {
   EXPECT_GT((one - z0).cwiseAbs().maxCoeff(), 1e-3);  // the state did move
   // And the apply kernel gives the same numbers, the held input folded into c.
   Eigen::VectorXd c = L2.p1.col(0) * F, z1(2 * n);
-  linear_step_apply(L2, a0, a2, c.data(), z0.data(), z1.data());
+  linear_step_apply(L2, 1, &a0, &a2, c.data(), z0.data(), z1.data());
   EXPECT_LT((z1 - one).cwiseAbs().maxCoeff(), 1e-15 * one.cwiseAbs().maxCoeff() + 1e-17);
 }
 

@@ -72,7 +72,8 @@ TEST(RowSolver, SdofStepGroundAccelerationMatchesClosedForm) {
   const AssembledRow a = assemble(sdof(xi));
   RowProblem p;
   p.row = &a;
-  p.motion = &g;
+  const RowGround p_ground = RowGround::uniform(g, static_cast<int>(p.row->offset.size()));
+  p.ground = &p_ground;
   p.t_end = g.duration();
   IntegratorSettings s;
   s.rtol = 1e-10;
@@ -167,7 +168,8 @@ TEST(RowSolver, WideGapGivesNoImpactsAndIdenticalResponse) {
   const auto law = find_contact_model("hc-linear", "t").make(cp);
   RowProblem p;
   p.row = &a;
-  p.motion = &g;
+  const RowGround p_ground = RowGround::uniform(g, static_cast<int>(p.row->offset.size()));
+  p.ground = &p_ground;
   p.t_end = g.duration();
   const RowResult free = solve(p, {});
   p.laws = {law.get()};
@@ -189,7 +191,8 @@ TEST(RowSolver, IdenticalBuildingsNeverCollide) {
   const auto law = find_contact_model("lve", "t").make(cp);
   RowProblem p;
   p.row = &a;
-  p.motion = &g;
+  const RowGround p_ground = RowGround::uniform(g, static_cast<int>(p.row->offset.size()));
+  p.ground = &p_ground;
   p.t_end = g.duration();
   p.laws = {law.get()};
   const RowResult r = solve(p, {});
@@ -241,7 +244,8 @@ TEST(RowSolver, TimeLoopDoesNotAllocate) {
       g.accel.push_back(3.0 * std::sin(2 * M_PI * i * g.dt / 0.4));
     RowProblem p;
     p.row = &a;
-    p.motion = &g;
+    const RowGround p_ground = RowGround::uniform(g, static_cast<int>(p.row->offset.size()));
+    p.ground = &p_ground;
     p.t_end = g.duration();
     p.laws = {law.get()};
     test::CountAllocations c;
@@ -285,7 +289,8 @@ ForkedRuns forked_and_apart(double gap, bool yielding) {
   const auto law = find_contact_model("hc-linear", "t").make(cp);
   RowProblem p;
   p.row = &a;
-  p.motion = &g;
+  const RowGround p_ground = RowGround::uniform(g, static_cast<int>(p.row->offset.size()));
+  p.ground = &p_ground;
   p.t_end = g.duration() + 1.0;
   p.record_history = true;
   p.laws.assign(a.sites.size(), law.get());

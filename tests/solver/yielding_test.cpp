@@ -43,7 +43,8 @@ GroundMotion force_record(double P0, double t_off, double dt, double duration) {
 RowResult solve_tight(const AssembledRow& a, const GroundMotion& g) {
   RowProblem p;
   p.row = &a;
-  p.motion = &g;
+  const RowGround p_ground = RowGround::uniform(g, static_cast<int>(p.row->offset.size()));
+  p.ground = &p_ground;
   p.t_end = g.duration();
   IntegratorSettings s;
   s.rtol = 1e-11;
@@ -113,7 +114,7 @@ TEST(Yielding, ElasticPerfectlyPlasticSdofUnderARectangularPulse) {
   // The residual the simulation reports (drift at the end, over the storey height) equals the
   // closed form's u(t_end).
   RowResult free = r;
-  const RowSimulation sim = summarize_runs(epp_sdof(), free, r);
+  const RowSimulation sim = summarize_runs(epp_sdof(), RowGround(), t_end, free, r);
   EXPECT_NEAR(sim.floors[0].residual_drift_ratio_free, u_end / 3.0, 1e-9);
   EXPECT_NEAR(sim.floors[0].ductility_free, x.um / x.uy, 1e-7);
 }
@@ -135,7 +136,8 @@ TEST(Yielding, LocatedYieldKinksKeepTheFifthOrderOfDormandPrince) {
       g.accel.push_back(25.0 * std::sin(2 * M_PI * i * g.dt / 0.35));
     RowProblem p;
     p.row = &a;
-    p.motion = &g;
+    const RowGround p_ground = RowGround::uniform(g, static_cast<int>(p.row->offset.size()));
+    p.ground = &p_ground;
     p.t_end = g.duration();
     auto run = [&](double h) {
       IntegratorSettings s;

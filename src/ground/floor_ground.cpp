@@ -1,0 +1,35 @@
+#include "ground/floor_ground.hpp"
+
+#include <stdexcept>
+#include <string>
+
+namespace pound {
+
+FloorGround::FloorGround(const AssembledRow& a, const RowGround* ground) : ground_(ground) {
+  const int n = a.dofs(), nb = static_cast<int>(a.offset.size());
+  channels_ = ground_ ? ground_->channels() : 0;
+  if (ground_ && ground_->buildings() != nb)
+    throw std::logic_error("the ground has " + std::to_string(ground_->buildings()) +
+                           " buildings, the row " + std::to_string(nb));
+  agc_.assign(channels_ + 1, 0.0);  // agc_[channels_] stays 0: floors on no ground
+  ag_.assign(n, 0.0);
+  dof_channel_.assign(n, channels_);
+  for (int b = 0; b < nb && ground_; ++b) {
+    const int end = b + 1 < nb ? a.offset[b + 1] : n;
+    for (int i = a.offset[b]; i < end; ++i) dof_channel_[i] = ground_->channel(b);
+  }
+  for (const auto& s : a.sites)
+    site_channels_.emplace_back(dof_channel_[s.dof_left], dof_channel_[s.dof_right]);
+}
+
+void FloorGround::relative(int s, double t, double& du, double& dv) const {
+  du = dv = 0.0;
+  if (!differs(s)) return;
+  double vl, ul, vr, ur;
+  ground_->trace(site_channels_[s].first).kinematics(t, vl, ul);
+  ground_->trace(site_channels_[s].second).kinematics(t, vr, ur);
+  du = ul - ur;
+  dv = vl - vr;
+}
+
+}  // namespace pound
