@@ -97,6 +97,16 @@ bool deterioration(const Constants& k, double e_i, double e_h, double& beta) {
   return beta <= 1.0;
 }
 
+// Whether a monotone path toward dir (+1, -1) that ends at drift d1 leaves the branch whose end
+// toward dir is `end` [m]: d1 past the end, or at it when the end is the ultimate drift theta_u h
+// (d_u [m], dir end >= d_u). Reaching theta_u h is failure, as OpenSees' IMKPeakOriented fails
+// the storey at a drift Ui >= Uu (its July 2020 code: ui >= Uu_pos; its September 2023 code:
+// dU > 0 && Ui >= posUu_0), not only past it.
+bool leaves(double d1, double end, int dir, double d_u) {
+  const double beyond = dir * (d1 - end);
+  return beyond > 0.0 || (beyond == 0.0 && dir * end >= d_u);
+}
+
 // A storey's IMK state, unpacked from StoreyState, with the rules of imk.hpp as transitions.
 // Drifts and shears are actual ones unless named "side" values (primed in the comments).
 class Imk {
@@ -148,7 +158,7 @@ class Imk {
       const double w = work(x);
       if (dir == s) {  // back at the reversal point: on toward the global peak
         after_local(s, x, w);
-      } else if (-s * unload_zero() > k_.d_u) {  // theta_u before the shear reaches zero
+      } else if (-s * unload_zero() >= k_.d_u) {  // theta_u reached before the shear is zero
         fail(x, w);
       } else {  // the shear crosses zero: a new excursion toward -s
         excursion(-s, x, w);
@@ -156,7 +166,7 @@ class Imk {
       return;
     }
     const double x = h_.line.d_end, w = work(x);
-    if (natural_end() > k_.d_u) {  // the drift passes theta_u h
+    if (natural_end() >= k_.d_u) {  // the drift reaches theta_u h (see leaves())
       fail(x, w);
       return;
     }
@@ -278,7 +288,7 @@ class Imk {
   void enter_backbone(int s, double xs, double x, double w) {
     Side& sd = at(s);
     sd.yielded = 1.0;
-    if (xs > k_.d_u) return fail(x, w);
+    if (xs >= k_.d_u) return fail(x, w);
     const double uy = sd.fy / k_.k0;
     if (xs < sd.d_cap)
       return set_line(s * kPostYield, x, s * (sd.fy + sd.kp * (xs - uy)), sd.kp, w);
@@ -335,7 +345,10 @@ class Imk {
     const double x0 = n * u0;
     if (!(sd.d_global > x0)) return enter_backbone(n, x0, u0, w);  // G not ahead of u0
     const double k_global = sd.f_global / (sd.d_global - x0);
-    if (x0 < sd.d_local && sd.f_local <= sd.f_global && sd.f_local / (sd.d_local - x0) > k_global)
+    // The last reversal point L first when it lies ahead of u0, below the global peak's shear
+    // (strictly, as OpenSees' posFlocal < posFglobal: a tie, both on the residual plateau, aims
+    // at G) and above the line from u0 to G (Klocal > Kglobal).
+    if (x0 < sd.d_local && sd.f_local < sd.f_global && sd.f_local / (sd.d_local - x0) > k_global)
       set_line(n * kToLocal, u0, 0.0, sd.f_local / (sd.d_local - x0), w);
     else
       set_line(n * kToGlobal, u0, 0.0, k_global, w);
@@ -459,13 +472,14 @@ double ImkStorey::advance(const StoreyParameters& p, const StoreyState& committe
     trial = committed;
     return shear(p, committed, d1, nullptr);
   }
+  const double d_u = p.ultimate_drift_ratio * p.h;
   const Line l = line_of(committed);
   if (l.ku != 0.0) {  // d1 on the current branch: nothing changes (most Newmark passes)
     const int kind = committed.branch < 0 ? -committed.branch : committed.branch;
     const int side = committed.branch >= 0 ? 1 : -1;
     const bool two_ended = kind == kElastic || kind == kUnload;
     const double end = !two_ended ? l.d_end : (dir == side ? l.d_end : l.d_back);
-    if ((two_ended || dir == side) && !(dir * (d1 - end) > 0.0)) {
+    if ((two_ended || dir == side) && !leaves(d1, end, dir, d_u)) {
       trial = committed;
       return l.v_anchor + l.slope * (d1 - committed.d_anchor);
     }
@@ -480,7 +494,7 @@ double ImkStorey::advance(const StoreyParameters& p, const StoreyState& committe
       continue;
     }
     const double end = m.end_toward(dir);
-    if (!(dir * (d1 - end) > 0.0)) break;  // d1 lies on the current branch
+    if (!leaves(d1, end, dir, d_u)) break;  // d1 lies on the current branch
     m.cross(dir);
     d = end;
   }

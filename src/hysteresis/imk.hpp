@@ -4,8 +4,9 @@
 // Struct. Dyn. 34(12), 1489-1511; Lignos & Krawinkler 2011, "Deterioration modeling of steel
 // components in support of collapse prediction of steel moment frames under earthquake
 // loading", J. Struct. Eng. 137(11), 1291-1302), with the rules of OpenSees' uniaxial material
-// IMKPeakOriented (A. Elkady, H. Eljisr and K. Ichinohe; its branch form of October 2022,
-// SRC/material/uniaxial/IMKPeakOriented.cpp), written here as exact piecewise-linear branches.
+// IMKPeakOriented (A. Elkady, H. Eljisr and K. Ichinohe; its branch form of October 2022 and the
+// September 2023 revision, SRC/material/uniaxial/IMKPeakOriented.cpp), written here as exact
+// piecewise-linear branches; docs/hysteresis.md lists where the two codes and this law differ.
 // Issue 23 states the rules; docs/hysteresis.md explains them with the parameters' defaults.
 //
 // Parameters (StoreyParameters; drift ratios are of the storey height h [m]): k0 [N/m], Fy [N],
@@ -18,7 +19,7 @@
 //     post-yield   V = Fy + Kp (d - uy)            up to the cap (uy + theta_p h, Fc)
 //     post-capping V = Fc - Kpc (d - d_cap)        down to Fr
 //     residual     V = Fr                          up to theta_u h
-// and no force beyond theta_u h, for ever.
+// and no force from theta_u h on (reaching it fails the storey), for ever.
 //
 // Branches (StoreyState::branch = side x kind; side +1 or -1 is the sign of the shear on it,
 // "toward" meaning the drift grows in that direction; 0 before the first yield):
@@ -37,10 +38,10 @@
 // Peak-oriented reloading (Ibarra et al. 2005; OpenSees' branches 3 and 4): at a new excursion (the
 // shear crossing zero at u0) toward a side, the target is the global peak G (the largest drift
 // reached toward that side, on the current backbone; the yield point before the side yielded),
-// or first the last reversal point L of that side when u0 < d_L, V_L <= V_G and L lies above
+// or first the last reversal point L of that side when u0 < d_L, V_L < V_G and L lies above
 // the line from u0 to G (V_L / (d_L - u0) > V_G / (d_G - u0)), then G; past G the backbone.
-// (OpenSees asks V_L < V_G; a tie, as on the residual plateau, is decided there by the round-off
-// of its incremental shears. Here L lies above the line in a tie, as the issue's rule says.)
+// (OpenSees' rule, posFlocal < posFglobal: a tie, L and G both on the residual plateau at Fr,
+// aims at G, although L then lies above the line to G.)
 // (Degenerate case, as OpenSees: when G is not ahead of u0, the shear goes straight onto the
 // backbone at u0.)
 // Unloading (a drift reversal on branches 3-7, i.e. the shear and the drift rate of opposite
@@ -67,7 +68,8 @@
 //   reloading line the excursion began on (its energy up to the unloading is then
 //   V^2 (1/K - 1/Ku) / 2 < 0).
 // Failure (the storey carries no shear from then on): a beta above 1 or E_t - E_h <= 0 at an
-// excursion or unloading; a drift beyond theta_u h; the backbone reaching zero shear (Fr = 0 at
+// excursion or unloading; the drift reaching theta_u h (OpenSees: Ui >= Uu, so the shear at
+// exactly theta_u h is zero); the backbone reaching zero shear (Fr = 0 at
 // the end of the post-capping branch, or a global peak with no strength left).
 //
 // Energies (V dd = dU + dE_h on every branch): U = stored() = V^2 / (2 Ku), what unloading

@@ -40,7 +40,7 @@ double backbone(const StoreyParameters& p, double d) {
   const double fc = p.cap_strength_ratio * p.Fy, dc = uy + p.plastic_drift_ratio * p.h;
   const double kp = (fc - p.Fy) / (p.plastic_drift_ratio * p.h);
   const double kpc = fc / (p.post_cap_drift_ratio * p.h), fr = p.residual_strength_ratio * p.Fy;
-  if (x > p.ultimate_drift_ratio * p.h) return 0.0;
+  if (x >= p.ultimate_drift_ratio * p.h) return 0.0;  // failed on reaching theta_u h
   if (x <= uy) return s * p.k0 * x;
   if (x <= dc) return s * (p.Fy + kp * (x - uy));
   return s * std::max(fc - kpc * (x - dc), fr);
@@ -144,8 +144,8 @@ TEST(Imk, MonotonicPushFollowsTheBackboneExactlyInBothForms) {
       const double v = inc.go(d), vc = cont.go(d);
       ASSERT_NEAR(v, expected, 1e-9 * p.Fy) << d;
       ASSERT_NEAR(vc, expected, 1e-9 * p.Fy) << d;
-      EXPECT_EQ(law.failed(p, inc.s), std::fabs(d) > 0.6) << d;
-      EXPECT_EQ(law.failed(p, cont.s), std::fabs(d) > 0.6) << d;
+      EXPECT_EQ(law.failed(p, inc.s), std::fabs(d) >= p.ultimate_drift_ratio * p.h) << d;
+      EXPECT_EQ(law.failed(p, cont.s), std::fabs(d) >= p.ultimate_drift_ratio * p.h) << d;
     }
     EXPECT_EQ(cont.events, 4);  // the corners: yield, cap, residual, theta_u
   }
@@ -531,6 +531,146 @@ TEST(Imk, ReloadingAimsAtTheLastReversalPointWhenItLiesAboveTheLineToThePeak) {
     ++checked;
   }
   EXPECT_EQ(checked, 600);
+}
+
+// The storey of issue 31's comparison with OpenSees: k0 = 1.2e8 N/m, Fy = 8e5 N (uy = 1/150 m),
+// h = 3 m, Fc / Fy = 1.15, theta_p = 0.025, theta_pc = 0.08, theta_u = 0.12 (theta_u h = 0.36 m
+// exactly in binary: 0.12 * 3 == 0.36), Fr / Fy = 0.2, lambda = 60, c = 1. Its backbone: the cap
+// at uy + 0.075 m (9.2e5 N), Kpc = 9.2e5 / 0.24 N/m, Fr = 1.6e5 N from uy + 0.075 + 7.6e5 / Kpc
+// = 0.27993 m to 0.36 m.
+StoreyParameters issue31_storey() {
+  StoreyParameters p;
+  p.k0 = 1.2e8;
+  p.Fy = 8e5;
+  p.h = 3.0;
+  p.cap_strength_ratio = 1.15;
+  p.plastic_drift_ratio = 0.025;
+  p.post_cap_drift_ratio = 0.08;
+  p.ultimate_drift_ratio = 0.12;
+  p.residual_strength_ratio = 0.2;
+  p.energy_capacity = 60.0;
+  p.energy_exponent = 1.0;
+  return p;
+}
+
+TEST(Imk, ReachingTheUltimateDriftFailsTheStoreyAsInOpenSees) {
+  // OpenSees' IMKPeakOriented fails the storey at a drift Ui >= Uu (September 2023 code:
+  // dU > 0 && Ui >= posUu_0): the shear at exactly theta_u h = 0.36 m is zero, and so it is
+  // here, in one step from rest or along a path, either way; a hair short of it the storey
+  // still carries Fr = 1.6e5 N on its residual plateau.
+  const StoreyParameters p = issue31_storey();
+  ASSERT_EQ(p.ultimate_drift_ratio * p.h, 0.36);
+  const double fr = 1.6e5;
+  const ImkStorey law;
+  for (double sign : {1.0, -1.0}) {
+    StoreyState t;
+    EXPECT_EQ(law.advance(p, StoreyState{}, 0.0, sign * 0.36, t), 0.0);
+    EXPECT_TRUE(law.failed(p, t));
+    EXPECT_EQ(law.stored(p, t, sign * 0.36, nullptr), 0.0);
+    StoreyState short_of;
+    EXPECT_NEAR(law.advance(p, StoreyState{}, 0.0, sign * 0.359999, short_of), sign * fr, 1e-6);
+    EXPECT_FALSE(law.failed(p, short_of));
+    // Along a path of steps of 1 mm (the last one lands on 0.36 exactly), and on from a
+    // committed state on the plateau to 0.36 in one step.
+    Incremental inc{law, p, {}};
+    for (int i = 1; i <= 360; ++i) {
+      const double d = sign * (i == 360 ? 0.36 : i * 1e-3);
+      const double v = inc.go(d);
+      ASSERT_EQ(law.failed(p, inc.s), i == 360) << d;
+      if (i >= 290 && i < 360) {
+        ASSERT_NEAR(v, sign * fr, 1e-6) << d;
+      }
+      if (i == 360) {
+        EXPECT_EQ(v, 0.0);
+      }
+    }
+    StoreyState after;
+    EXPECT_EQ(law.advance(p, short_of, sign * 0.359999, sign * 0.36, after), 0.0);
+    EXPECT_TRUE(law.failed(p, after));
+    // The continuous form: the end switch of the residual branch is zero at 0.36 m and rises
+    // through zero there; applied there (as the solver does where it locates the crossing) it
+    // fails the storey.
+    StoreyState s = short_of;
+    EXPECT_EQ(std::abs(s.branch), 7);  // residual
+    EXPECT_NEAR(law.switch_value(0, p, s, sign * 0.36, sign, 0.0).value, 0.0, 1e-15);
+    EXPECT_LT(law.switch_value(0, p, s, sign * 0.3599, sign, 0.0).value, 0.0);
+    law.on_switch(0, p, s, sign * 0.36, nullptr);
+    EXPECT_TRUE(law.failed(p, s));
+    EXPECT_EQ(law.shear(p, s, sign * 0.36, nullptr), 0.0);
+  }
+}
+
+TEST(Imk, ReloadingTowardAResidualPlateauWithATieAimsAtTheGlobalPeakAsInOpenSees) {
+  // The last reversal point L and the global peak G both on the residual plateau at Fr: a tie
+  // of their shears. OpenSees aims the reloading at L only when posFlocal < posFglobal
+  // (strictly), so it aims at G, and so does this law. Every number below follows in closed
+  // form from the rules of imk.hpp (c = 1, lambda = 75: E_t = 75 Fy uy = 4e5 J):
+  //   push to +0.32 m on the plateau (shear Fr): the work W1 is the area under the backbone;
+  //   reversal 1 at 0.32 m: beta_K1 = E_h / (E_t - E_h), E_h = W1 - Fr^2 / (2 k0);
+  //     Ku1 = k0 (1 - beta_K1); the shear crosses zero at u01 = 0.32 - Fr / Ku1;
+  //   excursion toward - at u01: E_exc = W(u01) = W1 - Fr^2 / (2 Ku1); the - side has not
+  //     yielded, so its backbone stays and the target is (-uy, -Fy): slope Kn = Fy / (u01 + uy);
+  //   down to 0.20 m: V2 = -Kn (u01 - 0.20), W2 = E_exc + Kn (u01 - 0.20)^2 / 2;
+  //   reversal 2 at 0.20 m: beta_K2 = (E_h - E_exc) / (E_t - E_h), E_h = W2 - V2^2 / (2 Ku1);
+  //     Ku2 = Ku1 (1 - beta_K2); zero shear at u02 = 0.20 - V2 / Ku2;
+  //   excursion toward + at u02: beta = (E_h - E_exc) / (E_t - E_h), E_h = W2 - V2^2 / (2 Ku2);
+  //     G's drift 0.32 (1 + beta) on the deteriorated backbone, past its residual drift: shear
+  //     Fr, as L's (0.32 m, Fr): the tie. L lies above the line from u02 to G; the reload
+  //     follows that line to G all the same, then the plateau.
+  // The mirrored path gives the mirrored shears, in advance() and in the continuous form.
+  StoreyParameters p = issue31_storey();
+  p.energy_capacity = 75.0;
+  const ImkStorey law;
+  const double k0 = p.k0, fy = p.Fy, uy = p.uy(), h = p.h, fr = 0.2 * fy, et = 75.0 * fy * uy;
+  const double fc = 1.15 * fy, dcap = uy + 0.025 * h, kpc = fc / (0.08 * h);
+  const double dres = dcap + (fc - fr) / kpc;
+  const double w1 = 0.5 * fy * uy + 0.5 * (fy + fc) * (dcap - uy) +
+                    0.5 * (fc + fr) * (dres - dcap) + fr * (0.32 - dres);
+  const double eh1 = w1 - fr * fr / (2 * k0);
+  const double ku1 = k0 * (1 - eh1 / (et - eh1));
+  const double u01 = 0.32 - fr / ku1;
+  const double e_exc = w1 - fr * fr / (2 * ku1);
+  const double kn = fy / (u01 + uy);
+  const double v2 = -kn * (u01 - 0.20);
+  const double w2 = e_exc + 0.5 * kn * (u01 - 0.20) * (u01 - 0.20);
+  const double eh2 = w2 - v2 * v2 / (2 * ku1);
+  const double ku2 = ku1 * (1 - (eh2 - e_exc) / (et - eh2));
+  const double u02 = 0.20 - v2 / ku2;
+  const double eh3 = w2 - v2 * v2 / (2 * ku2);
+  const double beta = (eh3 - e_exc) / (et - eh3);
+  const double dg = 0.32 * (1 + beta);
+  // The numbers: beta_K1 = 0.82, the - excursion's beta = e_exc / (et - e_exc) = 0.82 (below 1),
+  // beta = 0.067, G at 0.3415 m; the + backbone after it reaches Fr at 0.258 m (0.280 m before).
+  ASSERT_GT(beta, 0.05);
+  ASSERT_LT(e_exc / (et - e_exc), 1.0);
+  ASSERT_GT(dg, dres);
+  ASSERT_GT(fr / (0.32 - u02), fr / (dg - u02));  // L above the line from u02 to G
+  for (double sign : {1.0, -1.0}) {
+    for (int form = 0; form < 2; ++form) {
+      Incremental inc{law, p, {}};
+      Continuous cont{law, p, {}};
+      auto go = [&](double d) { return form == 0 ? inc.go(sign * d) : cont.go(sign * d); };
+      for (double d : path({0.32, 0.20}, 1e-3)) go(d);
+      int checked = 0;
+      double largest_gap_to_l = 0.0;
+      for (int i = 1; i <= 150; ++i) {  // 0.20 m to 0.35 m in steps of 1 mm
+        const double d = 0.20 + i * 1e-3, v = sign * go(d);
+        double expected;
+        if (d <= u02)
+          expected = v2 + ku2 * (d - 0.20);  // unloading along Ku2
+        else if (d <= dg)
+          expected = fr * (d - u02) / (dg - u02);  // the line from u02 to G
+        else
+          expected = fr;  // the plateau
+        ASSERT_NEAR(v, expected, 1e-6 * fy) << "form " << form << " sign " << sign << " at " << d;
+        if (d > u02 && d < 0.32)  // the line to L (the rule before issue 31) lies above
+          largest_gap_to_l = std::max(largest_gap_to_l, fr * (d - u02) / (0.32 - u02) - v);
+        ++checked;
+      }
+      EXPECT_EQ(checked, 150);
+      EXPECT_GT(largest_gap_to_l, 0.025 * fy);  // so the check tells the two rules apart
+    }
+  }
 }
 
 TEST(Imk, SwitchesAndSafeIntervals) {
