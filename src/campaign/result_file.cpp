@@ -187,6 +187,11 @@ void write_result_file(const std::string& path, const CampaignStudy& st,
   std::string names;
   for (const auto& b : st.row.buildings) names += (names.empty() ? "" : ", ") + b.name;
   h5::attribute(fid, "/", "building_names", names);
+  // The floors of each building, so that readers need not parse the study text (the per-floor
+  // arrays are as wide as the tallest building, NaN beyond a building's own floors).
+  std::vector<int> floors;
+  for (const auto& b : st.row.buildings) floors.push_back(b.floors());
+  h5::attribute(fid, "/", "floors", floors);
   // The amplification statistics, read back from the rows just written (in blocks).
   write_amplification(fid, compute_amplification(fid, path));
   f.close();  // a failed write (disk full) is reported here, before the file is renamed
