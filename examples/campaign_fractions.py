@@ -9,11 +9,10 @@ collapsed where the file records collapse (/response/collapsed_pounding, collaps
 The drift limit defaults to the first of the study's [fragility] drift_limits (0.01 in
 studies/fragility-default.ini), else 0.01. The default campaign is the one
 `bash scripts/quickstart.sh` writes. Writes OUT/campaign_fractions.png and .csv and prints the
-table. docs/python.md explains pound.read_campaign.
+table. docs/python.md explains pound.open_campaign and its DataFrame (pound.read_campaign).
 """
 
 import argparse
-import re
 import sys
 from pathlib import Path
 
@@ -25,29 +24,27 @@ import pandas as pd  # noqa: E402
 
 import pound  # noqa: E402
 
-G = 9.80665  # m/s2
+G = pound.G  # m/s2 per g
 
 
-def drift_limit_of(study_text):
+def drift_limit_of(campaign):
     """The first [fragility] drift_limits value of the campaign's resolved study, if any."""
-    m = re.search(r"^fragility\.drift_limits\s*=\s*([^,\s]+)", study_text or "", re.M)
-    return float(m.group(1)) if m else None
+    limits = campaign.study_value("fragility.drift_limits")
+    return float(limits.replace(",", " ").split()[0]) if limits else None
 
 
-def groups_of(df):
-    """Stripe of each sample and the stripe's intensity in g; with a sampled scale instead of
-    stripes, eight bins of equal count in IM."""
+def groups_of(df, levels):
+    """Stripe of each sample and the stripe's intensity in g (levels: the stripes' intensities
+    in m/s2); with a sampled scale instead of stripes, eight bins of equal count in IM."""
     if "stripe" in df.columns:
-        levels = [float(x) / G for x in df.attrs["im_levels_mps2"].split(",")]
-        return df["stripe"], pd.Series(levels)
+        return df["stripe"], pd.Series(levels / G)
     bins = pd.qcut(df["im"], 8, labels=False, duplicates="drop")
     return bins, (df["im"] / G).groupby(bins).median()
 
 
-def fractions(df, limit):
+def fractions(df, names, levels, limit):
     ok = df[df["status"] == 0]
-    group, intensity = groups_of(ok)
-    names = [n.strip() for n in df.attrs["building_names"].split(",")]
+    group, intensity = groups_of(ok, levels)
     rows = []
     for b, name in enumerate(names, start=1):
         for run in ("pounding", "free"):
@@ -60,7 +57,7 @@ def fractions(df, limit):
                 if collapsed is not None:
                     row["collapsed"] = float(collapsed[part.index].astype(float).mean())
                 rows.append(row)
-    return pd.DataFrame(rows), names
+    return pd.DataFrame(rows)
 
 
 def plot(table, names, limit, has_collapse, path, im_label="PGA"):
@@ -91,14 +88,16 @@ def main():
     ap.add_argument("--drift-limit", type=float)
     ap.add_argument("--out", default="results/examples")
     a = ap.parse_args()
-    df = pound.read_campaign(a.campaign)
-    limit = a.drift_limit or drift_limit_of(df.attrs.get("study")) or 0.01
-    table, names = fractions(df, limit)
+    with pound.open_campaign(a.campaign) as c:
+        df = c.to_dataframe()  # one row per sample, as pound.read_campaign(a.campaign)
+        names = c.building_names
+        limit = a.drift_limit or drift_limit_of(c) or 0.01
+        table = fractions(df, names, c.im_levels, limit)
+        im_label = "Sa(T1)" if c.intensity_measure == "sa" else "PGA"
     has_collapse = "collapsed" in table.columns
     out = Path(a.out)
     out.mkdir(parents=True, exist_ok=True)
     table.to_csv(out / "campaign_fractions.csv", index=False)
-    im_label = "Sa(T1)" if df.attrs.get("intensity_measure") == "sa" else "PGA"
     plot(table, names, limit, has_collapse, out / "campaign_fractions.png", im_label)
     failed = int((df["status"] != 0).sum())
     print(f"campaign_fractions: {a.campaign}: {len(df)} samples ({failed} failed), drift limit "

@@ -15,7 +15,8 @@ the initial stiffness (initial-damping.h5: --buildingN.damping_stiffness initial
 (the example hazard curve), once as the README runs it and once with --design-im at the
 hazard's 2475-year PGA (the collapse margin ratio, FEMA P695). A few minutes on two cores.
 --reuse keeps campaign and analysis files already in DIR (after a change of the study or the
-code, run without it). Paste each printed block over the table its heading names.
+code, run without it). Paste each printed block over the table its heading names. The campaign
+files are read with the package pound of the same build (build/python: pound.open_campaign).
 """
 import argparse
 import csv
@@ -23,9 +24,22 @@ import os
 import subprocess
 import sys
 
-G = 9.80665  # m/s^2 per g, as src/motion/ground_motion.hpp
+import numpy as np
+
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 POUND = os.path.join(ROOT, "build", "bin", "pound")
+# The package pound the same build makes (build/python; after PYTHONPATH's folders, before the
+# installed packages): it reads the campaign files and holds g.
+if os.path.isdir(os.path.join(ROOT, "build", "python", "pound")):
+    sys.path.insert(1 + len([p for p in os.environ.get("PYTHONPATH", "").split(os.pathsep) if p]),
+                    os.path.join(ROOT, "build", "python"))
+try:
+    import pound  # noqa: E402
+except ImportError as e:
+    sys.exit(f"docs_numbers: cannot import the Python package pound ({e}); build first (cmake "
+             "--preset release && cmake --build --preset release)")
+
+G = pound.G  # m/s^2 per g
 STUDY = os.path.join(ROOT, "studies", "fragility-default.ini")
 HAZARD = os.path.join(ROOT, "studies", "hazard-los-angeles-pga.csv")
 
@@ -247,15 +261,13 @@ def model_facts(work):
     of the 5-storey's third floor per stripe, per model (from the campaign file), over the
     samples in which the building's pounding run was not stopped by the other's collapse (as
     /amplification and pound summary)."""
-    import h5py
-    import numpy as np
     out = []
-    with h5py.File(os.path.join(work, "default.h5"), "r") as h:
-        im = np.round(h["/samples/im"][()] / G, 4)
-        model = np.array([m.decode() if isinstance(m, bytes) else m for m in h["/samples/model"][()]])
-        ok = h["/samples/status"][()] == 0
-        ap, af = h["/response/peak_accel_pounding"][()], h["/response/peak_accel_free"][()]
-        cp = h["/response/collapsed_pounding"][()]
+    with pound.open_campaign(os.path.join(work, "default.h5")) as c:
+        im = np.round(c.im / G, 4)
+        model = c.parameters["model"]
+        ok = c.ok
+        ap, af = c.response("peak_accel_pounding"), c.response("peak_accel_free")
+        cp = c.response("collapsed_pounding")
         # standing[:, b]: building b's pounding run was not stopped by the other's collapse
         standing = np.stack([~((cp[:, b] != 1) & (cp[:, 1 - b] == 1)) for b in (0, 1)], axis=1)
         amp = ap[:, 0, 2] / af[:, 0, 2]
@@ -342,8 +354,6 @@ def elastic_facts(work):
 
 def pounding_facts(work):
     """Where pounding shows in the default study: the storeys next to the contact."""
-    import h5py
-    import numpy as np
     c = curves(work, "default")
     shifts = {(r["building_name"], r["edp"], float(r["limit"])): float(r["ratio"])
               for r in read_csv(os.path.join(work, "default-fragility", "shift.csv"))
@@ -354,21 +364,21 @@ def pounding_facts(work):
             out.append(f"- {b}, {limit_text(edp, lim)}: median PGA "
                        f"{100 * (1 - shifts[(b, edp, lim)]):.0f} % lower with pounding (the shift, "
                        "like for like)")
-    with h5py.File(os.path.join(work, "default.h5"), "r") as h:
-        im = h["/samples/im"][()] / G
+    with pound.open_campaign(os.path.join(work, "default.h5")) as h:
+        im = h.im / G
         band = (im > 0.3 - 1e-9) & (im < 0.6 + 1e-9)
         for name, key in (("ductility", "ductility"), ("residual drift", "residual_drift")):
-            pnd = h[f"/response/{key}_pounding"][()][band]
-            free = h[f"/response/{key}_free"][()][band]
-            ratios = {(b, s): np.nanmedian(pnd[:, b, s]) / np.nanmedian(free[:, b, s])
-                      for b, floors in ((0, 5), (1, 3)) for s in range(floors)}
+            pnd = h.response(f"{key}_pounding")[band]
+            free = h.response(f"{key}_free")[band]
             out.append(f"- {name}, 0.3-0.6 g ({int(band.sum())} samples), median with pounding / "
-                       f"median without: 5-storey storeys 1-5 "
-                       + ", ".join(f"{ratios[(0, s)]:.2f}" for s in range(5))
-                       + "; 3-storey storeys 1-3 " + ", ".join(f"{ratios[(1, s)]:.2f}" for s in range(3)))
+                       "median without: " + "; ".join(
+                           f"{h.building_names[b]} storeys 1-{floors} " + ", ".join(
+                               f"{np.nanmedian(pnd[:, b, s]) / np.nanmedian(free[:, b, s]):.2f}"
+                               for s in range(floors))
+                           for b, floors in enumerate(h.floors)))
         n = len(im)
         for run in ("pounding", "free"):
-            d = h[f"/response/ductility_{run}"][()][:, 0, :]
+            d = h.response(f"ductility_{run}")[:, 0, :]
             top = np.nanargmax(d, axis=1)
             out.append(f"- 5-storey's largest ductility in its 4th or 5th storey, {run}: "
                        f"{int(np.sum(top >= 3))} of {n} samples")

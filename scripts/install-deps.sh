@@ -10,10 +10,11 @@ PKGS=(build-essential cmake pkg-config
       libeigen3-dev libhdf5-dev libboost-program-options-dev libfftw3-dev
       libgtest-dev librandom123-dev clang-format
       python3 python3-numpy python3-matplotlib python3-h5py
-      pybind11-dev python3-dev python3-pandas python3-pytest
+      pybind11-dev python3-dev python3-pandas python3-scipy python3-pytest
       locales)
 # pybind11-dev and python3-dev build the Python module (docs/python.md), python3-pandas is its
-# read_campaign, python3-pytest runs its tests, locales lets a test compile a comma locale.
+# read_campaign, python3-scipy its lognormal_cdf (the figures' fragility curves),
+# python3-pytest runs its tests, locales lets a test compile a comma locale.
 # clang-14 is the compiler; libclang-rt-14-dev holds libclang_rt.fuzzer, .asan and .ubsan.
 if [ "${1:-}" = "--fuzz" ]; then PKGS+=(clang-14 libclang-rt-14-dev); fi
 missing=()

@@ -23,12 +23,11 @@ import os
 import re
 import warnings
 
-import h5py
 import matplotlib.pyplot as plt
 import matplotlib.ticker as ticker
 import numpy as np
 
-from plot_common import G, building_name, building_names, im_name, lognormal_cdf, save, text
+from plot_common import G, building_name, building_names, im_name, lognormal_cdf, pound, save
 
 
 def read_csv(path):
@@ -157,12 +156,6 @@ def plot_collapse_fragility(frag_dir, out, measure):
              f"collapse_fragility_{re.sub(r'[^A-Za-z0-9_.-]', '_', m)}.png")
 
 
-def collapse_drift_ratio(study):
-    """[simulation] collapse_drift_ratio of a resolved study text; None when absent."""
-    m = re.search(r"^\s*simulation\.collapse_drift_ratio\s*=\s*([0-9.eE+-]+)", study, re.M)
-    return float(m.group(1)) if m else None
-
-
 def peak_over_floors(a):
     """Largest finite value over the last axis; NaN where there is none."""
     with warnings.catch_warnings():
@@ -171,22 +164,21 @@ def peak_over_floors(a):
 
 
 def read_ida(campaign_path):
-    with h5py.File(campaign_path, "r") as f:
-        ok = f["samples/status"][:] == 0
-        d = {"measure": text(f.attrs.get("intensity_measure", "pga")),
-             "names": building_names(f),
-             "limit": collapse_drift_ratio(text(f.attrs.get("study", ""))),
-             "stripes": bool(text(f.attrs.get("im_levels_mps2", "")).strip()),
-             "im": f["samples/im"][:][ok] / G,
-             "stripe": f["samples/id"][:][ok]}
+    with pound.open_campaign(campaign_path) as c:
+        ok = c.ok
+        limit = c.study_value("simulation.collapse_drift_ratio")  # [simulation] of the study
+        d = {"measure": c.intensity_measure,
+             "names": building_names(c),
+             "limit": float(limit) if limit else None,
+             "stripes": len(c.im_levels) > 0,
+             "im": c.im[ok] / G,
+             "stripe": (c.stripes if c.stripes is not None else np.zeros_like(c.ids))[ok]}
         for case in ("pounding", "free"):
-            d[case] = peak_over_floors(f[f"response/peak_drift_{case}"][:][ok])
-            name = f"response/collapsed_{case}"
-            d[f"collapsed_{case}"] = f[name][:][ok] > 0.5 if name in f else None
-        d["model"] = (np.array([text(x) for x in f["samples/model"][:]])[ok]
-                      if "samples/model" in f else None)
-        levels = text(f.attrs.get("im_levels_mps2", "")).split(",")
-        d["stripe"] = d["stripe"] % max(1, len([x for x in levels if x.strip()]))
+            d[case] = peak_over_floors(c.response(f"peak_drift_{case}")[ok])
+            collapsed = c.response(f"collapsed_{case}")
+            d[f"collapsed_{case}"] = collapsed[ok] > 0.5 if collapsed is not None else None
+        model = c.parameters.get("model")
+        d["model"] = np.array(list(model), dtype=str)[ok] if model is not None else None
     return d
 
 

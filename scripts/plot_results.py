@@ -40,9 +40,10 @@ Figures (one PNG each, units on every axis):
                                   per building, pooled and per contact model (plot_collapse.py)
   ida_<building>.png              peak storey drift against the intensity of every sample,
                                   collapsed samples marked (plot_collapse.py)
-Inputs: the campaign file (schema src/campaign/result_file.hpp), fragility.h5 of
-'pound fragility' (src/fragility/report_files.hpp), risk.h5 of 'pound risk'
-(src/risk/risk_files.hpp); all are opened read-only.
+Inputs: the campaign file (schema src/campaign/result_file.hpp, read through the package
+pound of build/python: pound.open_campaign), fragility.h5 of 'pound fragility'
+(src/fragility/report_files.hpp), risk.h5 of 'pound risk' (src/risk/risk_files.hpp); all are
+opened read-only.
 """
 import argparse
 import os
@@ -59,7 +60,8 @@ import numpy as np  # noqa: E402
 
 from plot_collapse import (plot_collapse_fragility, plot_ida, read_csv,  # noqa: E402
                            same_analyses_fit)
-from plot_common import G, im_name, lognormal_cdf, save, text  # noqa: E402
+from plot_common import (G, building_name, building_names, im_name, lognormal_cdf,  # noqa: E402
+                         pound, save, text)
 
 EDP_LABEL = {
     "drift": ("peak inter-storey drift ratio", lambda x: f"{100 * x:g} %"),
@@ -74,7 +76,6 @@ EDP_LABEL = {
 def edp_label(edp):
     """(title, limit formatter) of an EDP; a name this script does not know is shown as is."""
     return EDP_LABEL.get(edp, (edp.replace("_", " "), lambda x: f"{x:g}"))
-SKIP_SAMPLES = {"id", "status", "message", "im", "scale"}
 PARAM_UNITS = {"gap": "m", "e": "-", "k_factor": "-", "k": "N/m", "damping": "-", "chi": "-",
                "D": "-"}
 
@@ -96,7 +97,7 @@ def plot_fragility(frag_path, out):
         g = f["fragility"]
         grid = g["grid_im"][:] / G
         measure = text(g.attrs.get("intensity_measure", "pga"))
-        names = [n.strip() for n in text(g.attrs.get("building_names", "")).split(",")]
+        names = building_names(g)
         design = text(g.attrs.get("design", "stripes"))
         curves = []
         for key in sorted(k for k in g if k.startswith("curve")):
@@ -154,7 +155,7 @@ def plot_fragility(frag_path, out):
         ax.set_ylim(-0.02, 1.02)
         ax.set_xlabel(f"{im_name(measure)} [g]")
         ax.set_ylabel("P(EDP > limit) [-]")
-        bname = names[b] if b < len(names) else f"building {b + 1}"
+        bname = building_name(names, b)
         pts = "stripes" if design == "stripes" else "IM bins"
         ax.set_title(f"Fragility of {bname}: {edp_label(edp)[0]}\n"
                      f"solid/filled: with pounding, dashed/open: without (dotted: without, on "
@@ -175,25 +176,24 @@ def running_median(x, y, window):
 
 
 def plot_amplification(campaign_path, out):
-    with h5py.File(campaign_path, "r") as f:
-        ok = f["samples/status"][:] == 0
-        measure = text(f.attrs.get("intensity_measure", "pga"))
-        names = [n.strip() for n in text(f.attrs.get("building_names", "")).split(",")]
+    with pound.open_campaign(campaign_path) as c:
+        ok = c.ok
+        measure = c.intensity_measure
+        names = building_names(c)
         params = {}
-        for key in f["samples"]:
-            d = f["samples"][key]
-            if key in SKIP_SAMPLES or d.dtype.kind not in "fiu":
+        for key, d in c.parameters.items():
+            if d.dtype.kind not in "fiu":
                 continue
-            v = d[:][ok]
+            v = d[ok]
             if np.nanmin(v) < np.nanmax(v):
                 params[key] = (v, PARAM_UNITS.get(key.split(".")[-1], "-"))
-        im = f["samples/im"][:][ok] / G
+        im = c.im[ok] / G
         if np.nanmin(im) < np.nanmax(im):
             params[f"{im_name(measure)}"] = (im, "g")
         resp = {}
         for r in ("disp", "drift"):
-            p = np.nanmax(f[f"response/peak_{r}_pounding"][:][ok], axis=2)
-            q = np.nanmax(f[f"response/peak_{r}_free"][:][ok], axis=2)
+            p = np.nanmax(c.response(f"peak_{r}_pounding")[ok], axis=2)
+            q = np.nanmax(c.response(f"peak_{r}_free")[ok], axis=2)
             with np.errstate(divide="ignore", invalid="ignore"):
                 resp[r] = np.where(q > 0, p / q, np.nan)
     if not params:
@@ -219,7 +219,7 @@ def plot_amplification(campaign_path, out):
                     ax.set_ylabel(f"{label}\npounding / free [-]")
                 ax.grid(True, alpha=0.3)
         axes[0][0].legend(fontsize=8, loc="best")
-        bname = names[b] if b < len(names) else f"building {b + 1}"
+        bname = building_name(names, b)
         fig.suptitle(f"Amplification of the peak response of {bname} by pounding "
                      f"against each sampled parameter (red: running median)", fontsize=11)
         fig.tight_layout()
@@ -228,16 +228,16 @@ def plot_amplification(campaign_path, out):
 
 def plot_amplification_im(campaign_path, out):
     """Median and 16-84 % band of the amplification against the intensity (/amplification)."""
-    with h5py.File(campaign_path, "r") as f:
-        if "amplification" not in f:
+    with pound.open_campaign(campaign_path) as c:
+        a = c.amplification
+        if a is None:
             return
-        a = f["amplification"]
-        measure = text(f.attrs.get("intensity_measure", "pga"))
-        names = [n.strip() for n in text(f.attrs.get("building_names", "")).split(",")]
-        im = a["im"][:] / G
-        design = text(a.attrs.get("design", "stripes"))
-        stats = {m: {k: a[m][k][:] for k in ("median", "p16", "p84", "count")}
-                 for m in ("disp", "drift", "accel")}
+        measure = c.intensity_measure
+        names = building_names(c)
+    im = a["im"] / G
+    design = text(a.attrs.get("design", "stripes"))
+    stats = {m: {k: a[m][k] for k in ("median", "p16", "p84", "count")}
+             for m in ("disp", "drift", "accel")}
     labels = {"disp": "peak displacement", "drift": "peak storey drift",
               "accel": "peak absolute acceleration"}
     nb, nf = stats["disp"]["median"].shape[1:]
@@ -258,7 +258,7 @@ def plot_amplification_im(campaign_path, out):
             ax.set_ylabel(f"{labels[m]}: pounding / free [-]")
             ax.grid(True, alpha=0.3)
         axes[0].legend(fontsize=8, loc="best")
-        bname = names[b] if b < len(names) else f"building {b + 1}"
+        bname = building_name(names, b)
         fig.suptitle(f"Amplification by pounding of {bname}: median and 16-84 % band per "
                      f"{'stripe' if design == 'stripes' else 'intensity bin'}", fontsize=11)
         fig.tight_layout()
@@ -443,7 +443,7 @@ def plot_history(hist_path, out, names):
         colors = plt.cm.tab10.colors
         for b in np.unique(bld):
             top = np.where(bld == b)[0][np.argmax(floor[bld == b])]
-            nm = names[b] if b < len(names) else f"building {b + 1}"
+            nm = building_name(names, b)
             c = colors[int(b) % 10]
             a1.plot(tp[::step], 1000 * xp[::step, top], color=c, lw=1.1,
                     label=f"{nm}, floor {floor[top]}, pounding")
@@ -498,7 +498,7 @@ def plot_hysteresis(hist_path, out, names):
                     color="tab:red" if pounding else "tab:blue", lw=1.0 if pounding else 0.9,
                     ls="-" if pounding else "--", alpha=0.9 if pounding else 0.7,
                     label="pounding" if pounding else "no pounding")
-        nm = names[b] if b < len(names) else f"building {b + 1}"
+        nm = building_name(names, b)
         ax.set_title(f"{nm}, storey 1", fontsize=10)
         ax.set_xlabel("storey drift [mm]")
         ax.set_ylabel("storey shear [kN]")
@@ -532,8 +532,8 @@ def main():
     plot_amplification(a.campaign, a.out)
     plot_amplification_im(a.campaign, a.out)
     if a.fragility:
-        with h5py.File(a.campaign, "r") as f:
-            measure = text(f.attrs.get("intensity_measure", "pga"))
+        with pound.open_campaign(a.campaign) as c:
+            measure = c.intensity_measure
         plot_collapse_fragility(a.fragility, a.out, measure)
     plot_ida(a.campaign, a.out)
     if a.risk:
@@ -541,8 +541,8 @@ def main():
     if a.motions:
         plot_spectra(a.motions, a.out)
     if a.histories:
-        with h5py.File(a.campaign, "r") as f:
-            names = [n.strip() for n in text(f.attrs.get("building_names", "")).split(",")]
+        with pound.open_campaign(a.campaign) as c:
+            names = building_names(c)
         with h5py.File(a.histories, "r") as f:
             cfg = text(f.attrs.get("config", ""))
         hn = [l.split("=", 1)[1].strip() for l in cfg.splitlines()

@@ -1,7 +1,11 @@
 #!/usr/bin/python3
 """Check pound campaign files and journals (used by test-local-slurm.sh and by hand).
 
-Needs Debian's python3-h5py and python3-numpy (run it with /usr/bin/python3).
+Needs Debian's python3-numpy (run it with /usr/bin/python3); check and compare read the campaign
+files with the Python package pound (pound.open_campaign; python3-h5py): the one on PYTHONPATH,
+else the one beside the binary $POUND (BUILD/bin/pound: BUILD/python; PREFIX/bin/pound:
+PREFIX/lib/python3.X/dist-packages), else this tree's build/python, else an installed one.
+range and journal need neither.
 
   pound_parts.py range  --chunk K --chunks C --samples N      print "LO HI" of chunk K
                                                                (as pound campaign --chunk K/C)
@@ -29,6 +33,42 @@ FNV_PRIME = np.uint64(1099511628211)
 def fail(msg):
     print("pound_parts: error: " + msg, file=sys.stderr)
     sys.exit(1)
+
+
+def package_folders():
+    """Where the package pound may be, best first: beside the binary $POUND (a build tree's
+    bin/ and python/, or an install prefix's bin/ and lib/python3.X/dist-packages/), then this
+    tree's build/python."""
+    folders = []
+    binary = os.environ.get("POUND")
+    if binary:
+        binary = shutil.which(binary) or binary  # POUND=pound: the one on PATH
+        prefix = os.path.dirname(os.path.dirname(os.path.realpath(binary)))
+        version = "python%d.%d" % sys.version_info[:2]
+        folders += [os.path.join(prefix, "python"),
+                    os.path.join(prefix, "lib", version, "dist-packages"),
+                    os.path.join(prefix, "lib", version, "site-packages")]
+    here = os.path.dirname(os.path.abspath(__file__))
+    folders.append(os.path.join(os.path.dirname(here), "build", "python"))
+    return [f for f in folders if os.path.isdir(os.path.join(f, "pound"))]
+
+
+def open_campaign(path):
+    """The campaign file through the package pound (imported on first use: range and journal,
+    which the C++ tests also run, need no build of it)."""
+    # After PYTHONPATH's folders (sys.path[1:]; [0] is this script's), before the installed ones.
+    after = 1 + len([p for p in os.environ.get("PYTHONPATH", "").split(os.pathsep) if p])
+    sys.path[after:after] = [f for f in package_folders() if f not in sys.path]
+    try:
+        import pound
+    except ImportError as e:
+        fail("cannot import the Python package pound (%s): build it (cmake --build --preset "
+             "release makes build/python/pound), set POUND to the binary of that build, or put "
+             "the package on PYTHONPATH" % e)
+    try:
+        return pound.open_campaign(path)
+    except pound.Error as e:
+        fail(str(e))
 
 
 def chunk_range(k, chunks, samples):
@@ -86,26 +126,11 @@ def cmd_range(a):
     print(lo, hi)
 
 
-def datasets(f, groups=("samples", "response", "run")):
-    out = []
-    for g in groups:
-        if g in f:
-            f[g].visititems(lambda name, obj, g=g: out.append(g + "/" + name)
-                            if hasattr(obj, "shape") else None)
-    return sorted(out)
-
-
-def as_bytes(x):
-    return x if isinstance(x, bytes) else str(x).encode()
-
-
 def cmd_check(a):
-    import h5py
-    with h5py.File(a.file, "r") as f:
-        ids = f["samples/id"][:]
-        n = int(f.attrs["samples"])
-        msgs = f["samples/message"][:]
-        status = f["samples/status"][:]
+    with open_campaign(a.file) as c:
+        ids = c.ids
+        n = c.sample_count
+        status = c.status
     if len(ids) != n or not np.array_equal(np.sort(ids), np.arange(n)) or not np.array_equal(ids, np.arange(n)):
         fail("%s: sample ids are not 0..%d, each once" % (a.file, n - 1))
     print("pound_parts: %s: %d samples, ids 0..%d each exactly once, %d not ok"
@@ -113,15 +138,14 @@ def cmd_check(a):
 
 
 def cmd_compare(a):
-    import h5py
     bad = 0
-    with h5py.File(a.a, "r") as fa, h5py.File(a.b, "r") as fb:
-        na, nb = datasets(fa, ("samples", "response")), datasets(fb, ("samples", "response"))
+    with open_campaign(a.a) as fa, open_campaign(a.b) as fb:
+        na, nb = fa.datasets(("samples", "response")), fb.datasets(("samples", "response"))
         if na != nb:
             print("datasets differ: %s vs %s" % (sorted(set(na) ^ set(nb)), ""), file=sys.stderr)
             bad += 1
         for name in sorted(set(na) & set(nb)):
-            x, y = fa[name][()], fb[name][()]
+            x, y = fa.dataset(name), fb.dataset(name)
             if x.dtype.kind == "f" and y.dtype.kind == "f":
                 same = x.shape == y.shape and np.array_equal(x, y, equal_nan=True)
             else:

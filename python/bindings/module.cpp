@@ -1,6 +1,7 @@
 // PYBIND11_MODULE(_engine): the exceptions, the version and every binding (engine.hpp).
 #include <cstring>
 
+#include "core/constants.hpp"
 #include "core/error.hpp"
 #include "engine.hpp"
 #include "pound/version.hpp"
@@ -74,6 +75,8 @@ PYBIND11_MODULE(_engine, m) {
   });
   m.attr("__version__") = pound::kVersion;
   m.attr("git_revision") = pound::kGitRevision;
+  // pound.G: standard gravity [m/s^2 per g], the engine's own constant (the scripts' g).
+  m.attr("G") = pound::kGravity;
   pound::python::bind_simulate(m);
   pound::python::bind_motion(m);
   pound::python::bind_hysteresis(m);

@@ -1,5 +1,6 @@
 """pound.fragility and pound.risk: the commands ``pound fragility --json`` and ``pound risk
---json`` on a campaign result file, as function calls (docs/python.md, "Fragility and risk")."""
+--json`` on a campaign result file, as function calls (docs/python.md, "Fragility and risk");
+pound.lognormal_cdf, the form of their curves."""
 
 import json
 import os
@@ -15,6 +16,15 @@ _REFUSED = {
     "help": "see help(pound.fragility), help(pound.risk) and the commands' --help",
     "out": "give the output folder as out=",
 }
+
+
+def lognormal_cdf(x, theta, beta):
+    """P(X <= x) of a lognormal with median theta and logarithmic standard deviation beta:
+    Phi(ln(x / theta) / beta), the fragility curves' form (theta and beta as pound fragility
+    and pound risk give them; x in theta's unit). An array for an array, a float for a float.
+    Needs scipy (Debian: python3-scipy)."""
+    from scipy.stats import lognorm
+    return lognorm.cdf(x, beta, scale=theta)
 
 
 def _run(call, keys, extra, out, options):

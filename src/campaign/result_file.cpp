@@ -197,6 +197,11 @@ void write_result_file(const std::string& path, const CampaignStudy& st,
   }
   h5::attribute(fid, "/", "first_periods_s", periods);
   h5::attribute(fid, "/", "damping_ratios", damping);
+  // The floors of each building, so that readers need not parse the study text (the per-floor
+  // arrays are as wide as the tallest building, NaN beyond a building's own floors).
+  std::vector<int> floors;
+  for (const auto& b : st.row.buildings) floors.push_back(b.floors());
+  h5::attribute(fid, "/", "floors", floors);
   // The amplification statistics, read back from the rows just written (in blocks).
   write_amplification(fid, compute_amplification(fid, path));
   f.close();  // a failed write (disk full) is reported here, before the file is renamed

@@ -35,7 +35,9 @@
 //   /run/rank [N], /run/wall_seconds [N]   bookkeeping that differs between runs
 // Root attributes: study (resolved text), engine_version, git_revision, seed, samples,
 // sample_range ("lo:hi", the ids held),
-// sampling, intensity_measure, im_period_s, ranks, start_time, end_time, host.
+// sampling, intensity_measure, im_period_s, im_building, im_levels_mps2, ranks, start_time,
+// end_time, host, building_names ("a, b"), floors (integers, one per building: its floors;
+// files written before 2026-11-26 lack it). pound merge copies them from the first part.
 #include <string>
 
 #include "campaign/campaign_study.hpp"

@@ -155,6 +155,18 @@ void attribute(hid_t file, const std::string& object, const std::string& name, d
   H5Sclose(space);
 }
 
+void attribute(hid_t file, const std::string& object, const std::string& name,
+               const std::vector<int>& values) {
+  const hsize_t n = values.size();
+  const hid_t space = H5Screate_simple(1, &n, nullptr);
+  const hid_t attr = H5Acreate_by_name(file, object.c_str(), name.c_str(), H5T_NATIVE_INT, space,
+                                       H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  H5Sclose(space);
+  if (attr < 0) throw write_error("HDF5: cannot create attribute " + object + ":" + name);
+  if (!values.empty()) check(H5Awrite(attr, H5T_NATIVE_INT, values.data()), "attribute " + name);
+  H5Aclose(attr);
+}
+
 std::string root_attribute_text(hid_t file, const std::string& name) {
   return attribute_text(file, "/", name);
 }

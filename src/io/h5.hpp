@@ -1,8 +1,8 @@
 #pragma once
 // Small RAII helpers over the serial HDF5 C API: create a file, named groups and datasets of
-// doubles or ints (1-D and 2-D, row-major), string attributes, and the two reads the result
-// files' readers share. Used by the programs' writers and readers only; kernels never touch
-// files.
+// doubles or ints (1-D and 2-D, row-major), string, number and integer-list attributes, and the
+// two reads the result files' readers share. Used by the programs' writers and readers only;
+// kernels never touch files.
 #include <hdf5.h>
 
 #include <string>
@@ -50,6 +50,9 @@ void write(hid_t file, const std::string& path, const std::vector<int>& data);
 void attribute(hid_t file, const std::string& object, const std::string& name,
                const std::string& value);
 void attribute(hid_t file, const std::string& object, const std::string& name, double value);
+/// A one-dimensional attribute of integers (one per building, ...).
+void attribute(hid_t file, const std::string& object, const std::string& name,
+               const std::vector<int>& values);
 
 /// An attribute of an object ("/" for the root group) as text: a string (variable or fixed
 /// length) as it is, a number as the shortest text that reads back the same. "" when the

@@ -69,6 +69,23 @@ std::string units_of(const std::string& file, const std::string& path) {
   return out;
 }
 
+// The root attribute "floors" (one integer per building); empty when absent.
+std::vector<int> floors_of(const std::string& file) {
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  const hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  std::vector<int> out;
+  const hid_t a = H5Aopen(f, "floors", H5P_DEFAULT);
+  if (a >= 0) {
+    const hid_t s = H5Aget_space(a);
+    out.resize(static_cast<std::size_t>(std::max<hssize_t>(0, H5Sget_simple_extent_npoints(s))));
+    if (H5Aread(a, H5T_NATIVE_INT, out.data()) < 0) out.clear();
+    H5Sclose(s);
+    H5Aclose(a);
+  }
+  H5Fclose(f);
+  return out;
+}
+
 // Shape of a dataset.
 std::vector<hsize_t> dims_of(const std::string& file, const std::string& path) {
   const hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
@@ -282,6 +299,9 @@ TEST(CampaignRun, PartsOfASplitCampaignMergeIntoTheSingleRun) {
   ASSERT_EQ(sh(std::string(POUND_BINARY) + " merge --out " + merged + " --parts " + parts), 0);
   expect_same_numbers(ref, merged);  // the residual drift, ductility and energy included
   expect_new_response_datasets(merged, 30);
+  // The floors of each building (two one-storey buildings), copied by the merge.
+  EXPECT_EQ(floors_of(ref), (std::vector<int>{1, 1}));
+  EXPECT_EQ(floors_of(merged), floors_of(ref));
   // /amplification is computed again for the joined samples: the single run's, bit for bit
   // (the parts' own describe only their samples).
   for (const char* p : {"/amplification/im",

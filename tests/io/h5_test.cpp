@@ -78,6 +78,32 @@ TEST(H5, AnAttributeOfSeveralValuesReadsAsAbsent) {
   H5Fclose(f);
 }
 
+// An integer-list attribute (a campaign file's floors, one per building) reads back as written,
+// as integers; as text it is absent when it holds several values and its number when one.
+TEST(H5, AnIntegerListAttributeReadsBack) {
+  const std::string path = test::process_scratch_dir() / "integers.h5";
+  {
+    h5::File f(path);
+    h5::attribute(f.id(), "/", "floors", std::vector<int>{5, 3});
+    h5::attribute(f.id(), "/", "one", std::vector<int>{4});
+    f.close();
+  }
+  const hid_t f = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  const hid_t a = H5Aopen(f, "floors", H5P_DEFAULT);
+  const hid_t t = H5Aget_type(a), s = H5Aget_space(a);
+  EXPECT_EQ(H5Tget_class(t), H5T_INTEGER);
+  ASSERT_EQ(H5Sget_simple_extent_npoints(s), 2);
+  std::vector<int> v(2);
+  EXPECT_GE(H5Aread(a, H5T_NATIVE_INT, v.data()), 0);
+  EXPECT_EQ(v, (std::vector<int>{5, 3}));
+  H5Sclose(s);
+  H5Tclose(t);
+  H5Aclose(a);
+  EXPECT_EQ(h5::root_attribute_text(f, "floors"), "");
+  EXPECT_EQ(h5::root_attribute_text(f, "one"), "4");
+  H5Fclose(f);
+}
+
 // A dataset compressed with gzip (as `h5repack -f GZIP=6` leaves a result file) stores fewer
 // bytes than its values take; it was refused as "declares N values but the file does not store
 // them". It is read whole, the same values. One whose chunks are not all in the file (2^60 rows

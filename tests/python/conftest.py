@@ -50,6 +50,28 @@ def cli_error(command, args, kind="error"):
     return line[len(prefix):]
 
 
+# The smoke study's first building made a 2-storey one (floors: 2 and 1), so that the buildings
+# differ in height and the per-floor arrays carry NaN padding.
+_ONE_STOREY = "masses = 100             # kg\nstiffnesses = 15791.37   # N/m"
+_TWO_STOREY = "masses = 100, 80\nstiffnesses = 15791.37, 12000"
+
+
+def small_campaign(folder, samples=16, args=(), name="run.h5"):
+    """A campaign file FOLDER/NAME of the smoke study with a 2-storey beside the SDOF (study
+    FOLDER/study.ini), run by `pound campaign` on one rank (no mpirun: MPI's singleton start),
+    with these extra arguments (--sample.model ..., --chunk 1/2, ...)."""
+    text = (STUDIES / "campaign-smoke.ini").read_text()
+    assert _ONE_STOREY in text
+    study = folder / "study.ini"
+    study.write_text(text.replace(_ONE_STOREY, _TWO_STOREY, 1))
+    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    path = folder / name
+    code, _, err = run(["campaign", "--config", study, "--samples", samples, "--out", path,
+                        "--quiet"] + list(args), cwd=folder, env=env)
+    assert code == 0, err
+    return path
+
+
 @pytest.fixture(autouse=True)
 def in_empty_folder(tmp_path, monkeypatch):
     """Every test runs in an empty folder of its own (the module must write nothing there)."""

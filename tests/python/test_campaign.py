@@ -2,7 +2,6 @@
 (issue 25). The campaign is the smoke study with a 2-storey building beside the SDOF, run by
 `pound campaign` on one rank (no mpirun: MPI's singleton start)."""
 
-import os
 import shutil
 
 import h5py
@@ -10,26 +9,14 @@ import numpy as np
 import pytest
 
 import pound
-from conftest import STUDIES, run
+from conftest import small_campaign
 
 SAMPLES = 16
 
 
 @pytest.fixture(scope="module")
 def campaign(tmp_path_factory):
-    folder = tmp_path_factory.mktemp("campaign")
-    text = (STUDIES / "campaign-smoke.ini").read_text()
-    text = text.replace("masses = 100             # kg\nstiffnesses = 15791.37   # N/m",
-                        "masses = 100, 80\nstiffnesses = 15791.37, 12000", 1)
-    assert "100, 80" in text
-    study = folder / "study.ini"
-    study.write_text(text)
-    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
-    path = folder / "run.h5"
-    code, _, err = run(["campaign", "--config", study, "--samples", SAMPLES, "--out", path,
-                        "--quiet"], cwd=folder, env=env)
-    assert code == 0, err
-    return path
+    return small_campaign(tmp_path_factory.mktemp("campaign"), SAMPLES)
 
 
 def test_one_row_per_sample_with_the_files_numbers(campaign):
