@@ -289,14 +289,31 @@ GeneratedMotion SimqkeGenerator::run(const SimqkeStart& s, std::uint64_t seed,
   return finish(std::move(best), s, seed, index, best_attempt, evaluations);
 }
 
+GroundMotion SimqkeGenerator::synthesise(const SimqkeStart& s, const std::vector<double>& re,
+                                         const std::vector<double>& im) {
+  GroundMotion m;
+  impl_->synthesise(s.amplitude, re, im, m);
+  return m;
+}
+
+void SimqkeGenerator::correct(GroundMotion& m, const std::vector<double>& ratio) {
+  impl_->correct(m, ratio);
+}
+
+void SimqkeGenerator::spectrum(const GroundMotion& m, std::vector<double>& psa) const {
+  impl_->spectra->compute_psa(m.accel, psa);
+}
+
 SimqkeAttempt SimqkeGenerator::match(const SimqkeStart& s, const std::vector<double>& re,
                                      const std::vector<double>& im) {
+  return match(s, synthesise(s, re, im));
+}
+
+SimqkeAttempt SimqkeGenerator::match(const SimqkeStart& s, GroundMotion m) {
   Impl& d = *impl_;
   const std::vector<double>& target = s.target;
   std::vector<double> psa, ratio(target.size());
   SimqkeAttempt best;
-  GroundMotion m;
-  d.synthesise(s.amplitude, re, im, m);
   int best_it = 0;
   for (int it = 0;; ++it) {
     if (it > 0) d.correct(m, ratio);

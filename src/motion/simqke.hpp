@@ -166,6 +166,16 @@ class SimqkeGenerator {
   /// best iteration. For one motion z_k = exp(i phi_k) (simqke_phasors).
   SimqkeAttempt match(const SimqkeStart& s, const std::vector<double>& re,
                       const std::vector<double>& im);
+  /// The same iteration from a given motion (iteration 0 is `m` itself).
+  SimqkeAttempt match(const SimqkeStart& s, GroundMotion m);
+  /// The stationary part of coefficients A_k (re_k + i im_k), enveloped and baseline-corrected.
+  GroundMotion synthesise(const SimqkeStart& s, const std::vector<double>& re,
+                          const std::vector<double>& im);
+  /// One correction step: the Fourier amplitudes of `m` times ratio^relaxation, `ratio` (target
+  /// / computed at the matching periods, [-]) interpolated in ln T at each bin; baseline-corrected.
+  void correct(GroundMotion& m, const std::vector<double>& ratio);
+  /// The pseudo-acceleration of `m` at the matching periods [m/s^2].
+  void spectrum(const GroundMotion& m, std::vector<double>& psa) const;
   /// The returned motion of the kept attempt: its name, target, phase set, kinematics.
   GeneratedMotion finish(SimqkeAttempt best, const SimqkeStart& s, std::uint64_t seed,
                          std::uint64_t index, int attempt, int spectra) const;
