@@ -1,28 +1,39 @@
 #pragma once
 // Spatially varying spectrum-compatible motions at S stations of a row (issue 28,
 // docs/ground.md): the spectral representation of a vector process (Deodatis 1996, "Simulation
-// of ergodic multivariate stochastic processes", Prob. Eng. Mech. 11:149-167). At every FFT
-// frequency f_k of the generator the S x S lagged-coherency matrix G_jm = |gamma(|x_j - x_m|,
-// f_k)| is factored by Cholesky, G = L L^T, and station j's Fourier coefficients are
+// of ergodic multivariate stochastic processes", Prob. Eng. Mech. 11:149-167), with SIMQKE's
+// unit-modulus Fourier coefficients. At every FFT frequency f_k of the generator, station j's
+// coefficient is A(f_k) exp(i theta_j(f_k)),
 //
-//   A(f_k) sum_{m <= j} L_jm(f_k) exp(i phi_m(f_k)),
+//   exp(i theta_j) = z_j / |z_j|,  z_j = sum_{m <= j} L_jm(f_k) rho_m exp(i phi_m),
 //
-// with independent uniform phases phi_m per station m: station 1's are exactly
-// SimqkeGenerator's (Philox key seed, counter (k, a, index low, index high) in phase set a),
-// station m's (m = 2, 3, ...) come from the stream a + 65536 (m - 1) of the same key and counter
-// layout (simqke_phasors). Each station is then matched to the target (the design spectrum, or
-// the ONE random target of ln_factor shared by all stations of the set) by SIMQKE's iteration
-// run on that station (SimqkeGenerator::match): the correction scales station j's amplitudes by
-// a real positive ratio, which keeps the coherency (Bi & Hao 2012, Prob. Eng. Mech. 29:92-104),
-// with the same envelope and baseline correction as one motion. Phase-set retries
-// (accept_score, max_attempts): all stations together, the attempt scored by its worst station
-// (so that identical stations decide as one motion does); the attempt with the smallest such
-// score is kept (the first of equal ones), and a station already worse than the best attempt
-// so far ends its attempt early (it cannot win).
+// with rho_m exp(i phi_m) independent standard circular complex Gaussians per station m (phi_m
+// uniform, rho_m Rayleigh) and L the Cholesky factor of the S x S matrix
+// G_jm = g(|gamma(|x_j - x_m|, f_k)|), g the inverse of the phase coherency
+// c(g) = E exp(i (arg z_j - arg z_m)) = [E(g) - (1 - g^2) K(g)] / g of two circular Gaussians
+// of correlation g (K, E complete elliptic integrals of modulus g): so the unit phasors of
+// stations j and m have the coherency |gamma| of the model, and every station has SIMQKE's
+// amplitude A(f_k) of one motion. Station 1's phases are exactly SimqkeGenerator's
+// (z_1 / |z_1| = exp(i phi_1); Philox key seed, counter (k, a, index low, index high) in phase
+// set a); station m's phases (m = 2, 3, ...) come from the stream a + 65536 (m - 1) and every
+// station's Rayleigh moduli from the stream 2^31 + a + 65536 (m - 1) of the same key and
+// counter layout.
 //
-// A semi-definite G (stations so close that they are fully coherent at f_k, or model none) is
-// factored with the pivots that vanish set to 0. With coherency none (or S = 1) every station is
-// bit for bit SimqkeGenerator::generate's motion, which is computed once and copied.
+// Each station is then matched to the target (the design spectrum, or the ONE random target of
+// ln_factor shared by all stations of the set) by SIMQKE's iteration run on that station
+// (SimqkeGenerator::match): the correction scales station j's amplitudes by a real positive
+// ratio (Bi & Hao 2012, Prob. Eng. Mech. 29:92-104), with the same envelope and baseline
+// correction as one motion. The set's lagged coherency after the matching is lower than the
+// model's (docs/ground.md, "What the matching does to the coherency": by 0.03-0.16 at 1-6 Hz
+// for 40-100 m under Harichandran-Vanmarcke), because the corrections of different stations
+// differ. Phase-set retries (accept_score, max_attempts): all stations together, the attempt
+// scored by its worst station (so that identical stations decide as one motion does); the
+// attempt with the smallest such score is kept (the first of equal ones), and an attempt whose
+// stations already score worse than the best attempt so far is abandoned (it cannot win).
+//
+// A semi-definite G (stations so close that they are fully coherent at f_k) is factored with
+// the pivots that vanish set to 0. With coherency none (or S = 1) every station is bit for bit
+// SimqkeGenerator::generate's motion, which is computed once and copied.
 //
 // The wave-passage phase exp(-i omega (x_k - x_j) / v) of the full coherency matrix is NOT
 // applied here: it factors as D L with D = diag(exp(-i omega delay_j)), a pure delay of each
