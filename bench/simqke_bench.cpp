@@ -17,6 +17,12 @@
 // instruction counts: valgrind --tool=callgrind bench_simqke variability 20 spectral).
 //
 // Issue 13: bench_simqke kernel times the response-spectrum kernel alone per instruction set.
+//
+// Issue 28: bench_simqke stations [count] times StationGenerator for S = 2, 4 and 8 stations 20 m
+// apart (Harichandran-Vanmarcke SMART-1 coherency; the default study's target, 10 s at 0.01 s,
+// seed 2026, `count` motions, default 20) against SimqkeGenerator's one motion, and prints the
+// ratio cost(S stations) / (S x cost(one motion)) in process CPU time and in spectrum
+// evaluations (the target: at most 1.5).
 #include <time.h>
 
 #include <algorithm>
@@ -28,6 +34,7 @@
 #include <tuple>
 #include <vector>
 
+#include "ground/station_generator.hpp"
 #include "motion/motion_processing.hpp"
 #include "motion/response_spectrum.hpp"
 #include "motion/simqke.hpp"
@@ -210,9 +217,51 @@ int run_kernel() {
   return 0;
 }
 
+int run_stations(int count) {
+  using namespace pound;
+  const Ec8Spectrum target(Ec8Type::type1, Ec8Ground::C, 0.3 * kGravity);
+  const SimqkeSettings settings;
+  SimqkeGenerator one(target, 10.0, settings);
+  double one_cpu = 0.0;
+  long one_spectra = 0;
+  for (int i = 0; i < count; ++i) {
+    const double c0 = cpu_ms();
+    const GeneratedMotion g = one.generate(2026, std::uint64_t(i));
+    one_cpu += cpu_ms() - c0;
+    one_spectra += g.spectra;
+  }
+  std::printf("\n%s, 10 s at 0.01 s, %d motions, seed 2026\n", target.describe().c_str(), count);
+  std::printf("one motion: %.2f ms cpu, %.1f spectra\n", one_cpu / count,
+              double(one_spectra) / count);
+  std::printf("%-8s %12s %10s %16s %18s\n", "stations", "cpu ms/set", "spectra", "cpu / (S one)",
+              "spectra / (S one)");
+  for (int s : {2, 4, 8}) {
+    StationSettings st;
+    for (int j = 0; j < s; ++j) st.positions.push_back(20.0 * j);
+    st.coherency = make_coherency("harichandran-vanmarcke-1986", {}, "bench");
+    const double c_setup = cpu_ms();
+    StationGenerator gen(target, 10.0, settings, st);
+    const double setup = cpu_ms() - c_setup;
+    double cpu = 0.0;
+    long spectra = 0;
+    for (int i = 0; i < count; ++i) {
+      const double c0 = cpu_ms();
+      const std::vector<GeneratedMotion> g = gen.generate(2026, std::uint64_t(i));
+      cpu += cpu_ms() - c0;
+      for (const GeneratedMotion& m : g) spectra += m.spectra;
+    }
+    std::printf("%-8d %12.2f %10.1f %16.3f %18.3f   (set-up %.1f ms)\n", s, cpu / count,
+                double(spectra) / count, cpu / (s * one_cpu),
+                double(spectra) / (double(s) * double(one_spectra)), setup);
+  }
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc > 1 && std::string(argv[1]) == "stations")
+    return run_stations(argc > 2 ? std::atoi(argv[2]) : 20);
   if (argc > 1 && std::string(argv[1]) == "kernel") return run_kernel();
   if (argc > 1 && std::string(argv[1]) == "variability")
     return run_variability(argc > 2 ? std::atoi(argv[2]) : 40, argc > 3 ? argv[3] : "");

@@ -26,6 +26,7 @@ LAYERS = [
     ["io"],
     ["sampling"],
     ["motion"],
+    ["ground"],
     ["solver"],
     ["simulation"],
     ["sears"],

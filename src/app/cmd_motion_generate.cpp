@@ -1,4 +1,5 @@
-// pound motion generate: spectrum-compatible motions (SIMQKE) into a folder.
+// pound motion generate: spectrum-compatible motions (SIMQKE) into a folder; with stations
+// (--stations/--positions, issue 28) motion_stations.cpp writes the station set.
 //   pound motion generate --spectrum ... --count N --duration S --dt DT --seed K --out DIR
 //       [--variability spectral --sigma-lnsa S | --sigma-table F | --sigma-model M
 //        --correlation baker-jayaram-2008|none|full]
@@ -15,7 +16,10 @@
 
 #include "app/commands.hpp"
 #include "app/help.hpp"
+#include "app/motion_stations.hpp"
+#include "app/motion_text_files.hpp"
 #include "core/error.hpp"
+#include "ground/station_set.hpp"
 #include "io/atomic_file.hpp"
 #include "io/h5.hpp"
 #include "io/json.hpp"
@@ -25,40 +29,6 @@
 
 namespace pound::app {
 namespace {
-
-void write_text(const std::string& path, const GroundMotion& m, const std::string& header) {
-  AtomicPath out(path);
-  {
-    std::ofstream f(out.temp());
-    if (!f) throw InputError(path + ": cannot write; give a writable --out folder");
-    f << header << "# units: g\n# dt: " << m.dt << " s\n# columns: time [s], acceleration [g]\n";
-    char line[64];
-    for (std::size_t i = 0; i < m.accel.size(); ++i) {
-      std::snprintf(line, sizeof line, "%.4f %.9e\n", m.dt * double(i), m.accel[i] / kGravity);
-      f << line;
-    }
-    if (!f) throw InputError(path + ": write failed");
-  }
-  out.commit();
-}
-
-// A motion's own target: period [s], Sa [g].
-void write_target(const std::string& path, const std::vector<double>& periods,
-                  const std::vector<double>& sa, const std::string& header) {
-  AtomicPath out(path);
-  {
-    std::ofstream f(out.temp());
-    if (!f) throw InputError(path + ": cannot write; give a writable --out folder");
-    f << header << "# columns: period [s], Sa [g] (5 % damping pseudo-acceleration)\n";
-    char line[64];
-    for (std::size_t j = 0; j < periods.size(); ++j) {
-      std::snprintf(line, sizeof line, "%.6f %.9e\n", periods[j], sa[j] / kGravity);
-      f << line;
-    }
-    if (!f) throw InputError(path + ": write failed");
-  }
-  out.commit();
-}
 
 // Every motion's text file and its own target, each whole or not at all: DIR/motion-NNN.txt,
 // DIR/target-NNN.txt. Returns the motion files' paths.
@@ -205,14 +175,16 @@ void print_table(const MotionSet& g, const DesignSpectrum& target,
 
 int run_motion_generate(int argc, const char* const* argv) {
   Options o("motion generate", "Spectrum-compatible motions (Gasparini & Vanmarcke 1976).",
-            motion_set_option_specs());
+            station_set_option_specs());
   if (help_asked(o, argc, argv)) return 0;
-  const MotionSetRequest rq = motion_set_from_options(o);
+  const StationSetRequest srq = station_set_from_options(o);
+  const MotionSetRequest& rq = srq.motions;
   const std::string dir = o.get_string("out");
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec)
     throw InputError(o.where("out") + ": cannot create folder '" + dir + "': " + ec.message());
+  if (srq.enabled) return run_station_set(o, srq, dir);
   const MotionSet g = generate_motion_set(rq);
   const std::vector<std::string> files = write_text_files(g, rq, dir);
   write_motions_file(dir, g, rq.settings.dt, *rq.target, rq.variability, rq.seed, o);

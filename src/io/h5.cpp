@@ -129,6 +129,34 @@ void write(hid_t file, const std::string& path, const std::vector<int>& data) {
   H5Sclose(space);
 }
 
+namespace {
+
+void write_shaped(hid_t file, const std::string& path, hid_t type, const void* data,
+                  const std::vector<std::size_t>& shape) {
+  ensure_group(file, parent_of(path));
+  const std::vector<hsize_t> dims(shape.begin(), shape.end());
+  const hid_t space = H5Screate_simple(int(dims.size()), dims.data(), nullptr);
+  const hid_t ds =
+      H5Dcreate2(file, path.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  if (ds < 0) throw write_error("HDF5: cannot create dataset " + path);
+  if (data) check(H5Dwrite(ds, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), "write of " + path);
+  H5Dclose(ds);
+  H5Sclose(space);
+}
+
+}  // namespace
+
+void write_array(hid_t file, const std::string& path, const std::vector<double>& data,
+                 const std::vector<std::size_t>& shape, const std::string& units) {
+  write_shaped(file, path, H5T_NATIVE_DOUBLE, data.empty() ? nullptr : data.data(), shape);
+  if (!units.empty()) attribute(file, path, "units", units);
+}
+
+void write_array(hid_t file, const std::string& path, const std::vector<int>& data,
+                 const std::vector<std::size_t>& shape) {
+  write_shaped(file, path, H5T_NATIVE_INT, data.empty() ? nullptr : data.data(), shape);
+}
+
 void attribute(hid_t file, const std::string& object, const std::string& name,
                const std::string& value) {
   const hid_t type = H5Tcopy(H5T_C_S1);

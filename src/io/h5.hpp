@@ -46,6 +46,12 @@ void ensure_group(hid_t file, const std::string& path);
 void write(hid_t file, const std::string& path, const std::vector<double>& data, std::size_t rows,
            std::size_t cols = 0, const std::string& units = "");
 void write(hid_t file, const std::string& path, const std::vector<int>& data);
+/// A dataset of any rank: `shape` (row-major, the product = data.size()) and an optional
+/// "units" attribute.
+void write_array(hid_t file, const std::string& path, const std::vector<double>& data,
+                 const std::vector<std::size_t>& shape, const std::string& units = "");
+void write_array(hid_t file, const std::string& path, const std::vector<int>& data,
+                 const std::vector<std::size_t>& shape);
 /// A variable-length string attribute on an object ("/" for the file).
 void attribute(hid_t file, const std::string& object, const std::string& name,
                const std::string& value);

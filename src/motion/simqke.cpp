@@ -7,33 +7,14 @@
 #include <cmath>
 #include <mutex>
 #include <string>
+#include <utility>
 
 #include "core/error.hpp"
+#include "motion/fftw_support.hpp"
 #include "motion/motion_processing.hpp"
 #include "motion/response_spectrum.hpp"
 
 namespace pound {
-namespace {
-
-// FFTW's planner is not thread-safe: plans are made and destroyed under this lock.
-std::mutex& planner_mutex() {
-  static std::mutex m;
-  return m;
-}
-
-// Smallest size >= n of the form 2^a 3^b 5^c, even (fast FFTW sizes).
-std::size_t good_fft_size(std::size_t n) {
-  for (std::size_t m = std::max<std::size_t>(n, 2);; ++m) {
-    if (m % 2) continue;
-    std::size_t r = m;
-    for (std::size_t p : {2u, 3u, 5u})
-      while (r % p == 0) r /= p;
-    if (r == 1) return m;
-  }
-}
-
-}  // namespace
-
 double philox_uniform(std::uint64_t seed, std::uint64_t index, std::uint32_t i,
                       std::uint32_t stream) {
   using Rng = r123::Philox4x32;
@@ -45,6 +26,25 @@ double philox_uniform(std::uint64_t seed, std::uint64_t index, std::uint32_t i,
   // 27 + 26 bits -> [0, 1) with 53-bit resolution (the usual two-word construction).
   const double hi = double(r[0] >> 5), lo = double(r[1] >> 6);
   return (hi * 67108864.0 + lo) / 9007199254740992.0;
+}
+
+void simqke_phasors(std::uint64_t seed, std::uint64_t index, std::uint32_t stream,
+                    const std::vector<double>& amplitude, std::vector<double>& re,
+                    std::vector<double>& im) {
+  re.resize(amplitude.size());
+  im.resize(amplitude.size());
+  for (std::size_t k = 0; k < amplitude.size(); ++k) {
+    // A bin without amplitude needs no phase (its term is zero either way); each phase
+    // depends on its own bin's counter only.
+    if (amplitude[k] == 0.0) {
+      re[k] = 1.0;
+      im[k] = 0.0;
+      continue;
+    }
+    const double u = philox_uniform(seed, index, std::uint32_t(k), stream);
+    re[k] = std::cos(2.0 * M_PI * u);
+    im[k] = std::sin(2.0 * M_PI * u);
+  }
 }
 
 std::vector<double> simqke_match_periods(const SimqkeSettings& s) {
@@ -92,7 +92,7 @@ struct SimqkeGenerator::Impl {
   fftw_plan c2r = nullptr, r2c = nullptr;
 
   ~Impl() {
-    std::lock_guard<std::mutex> lock(planner_mutex());
+    std::lock_guard<std::mutex> lock(fftw_planner_mutex());
     if (c2r) fftw_destroy_plan(c2r);
     if (r2c) fftw_destroy_plan(r2c);
     if (real) fftw_free(real);
@@ -105,12 +105,12 @@ struct SimqkeGenerator::Impl {
     return ratio[j] + bin_w[k] * (ratio[std::min(j + 1, ratio.size() - 1)] - ratio[j]);
   }
 
-  // The enveloped, baseline-corrected motion for amplitudes amp and phases phi.
-  void synthesise(const std::vector<double>& amp, const std::vector<double>& cosphi,
-                  const std::vector<double>& sinphi, GroundMotion& m) {
+  // The enveloped, baseline-corrected motion for amplitudes amp and phasors (re, im).
+  void synthesise(const std::vector<double>& amp, const std::vector<double>& re,
+                  const std::vector<double>& im, GroundMotion& m) {
     for (std::size_t k = 0; k < nbins; ++k) {
-      spec[k][0] = 0.5 * amp[k] * cosphi[k];
-      spec[k][1] = 0.5 * amp[k] * sinphi[k];
+      spec[k][0] = 0.5 * amp[k] * re[k];
+      spec[k][1] = 0.5 * amp[k] * im[k];
     }
     fftw_execute(c2r);  // real_j = sum_k A_k cos(w_k t_j + phi_k); destroys spec
     m.dt = settings.dt;
@@ -142,12 +142,6 @@ struct SimqkeGenerator::Impl {
     std::copy(real, real + n, m.accel.begin());
     baseline->apply(m.accel);
   }
-
-  // The matching iteration (simqke.hpp) from first-guess amplitudes amp towards `target` at
-  // the matching periods [m/s^2], with at most max_attempts phase sets; the score of an
-  // iteration is max |q - 1|, or the RMS of ln q with rms_score.
-  GeneratedMotion generate(std::uint64_t seed, std::uint64_t index, const std::vector<double>& amp,
-                           const std::vector<double>& target, int max_attempts, bool rms_score);
 };
 
 SimqkeGenerator::SimqkeGenerator(const DesignSpectrum& target, double duration,
@@ -211,7 +205,7 @@ SimqkeGenerator::SimqkeGenerator(const DesignSpectrum& target, double duration,
     d.amp0[k] = std::sqrt(2.0 * g * dw);
   }
 
-  std::lock_guard<std::mutex> lock(planner_mutex());
+  std::lock_guard<std::mutex> lock(fftw_planner_mutex());
   d.real = fftw_alloc_real(d.nfft);
   d.spec = fftw_alloc_complex(d.nbins);
   if (!d.real || !d.spec) throw NumericalError("motion generator: FFT buffers not allocated");
@@ -229,96 +223,146 @@ const std::vector<double>& SimqkeGenerator::match_target() const {
   return impl_->target_psa;
 }
 
-GeneratedMotion SimqkeGenerator::generate(std::uint64_t seed, std::uint64_t index) {
-  return impl_->generate(seed, index, impl_->amp0, impl_->target_psa, impl_->settings.max_attempts,
-                         false);
+std::size_t SimqkeGenerator::fft_bins() const {
+  return impl_->nbins;
 }
 
-GeneratedMotion SimqkeGenerator::generate(std::uint64_t seed, std::uint64_t index,
-                                          const std::vector<double>& ln_factor) {
-  Impl& d = *impl_;
+double SimqkeGenerator::bin_frequency(std::size_t k) const {
+  return double(k) / (double(impl_->nfft) * impl_->settings.dt);
+}
+
+SimqkeStart SimqkeGenerator::start() const {
+  SimqkeStart s;
+  s.amplitude = impl_->amp0;
+  s.target = impl_->target_psa;
+  s.max_attempts = impl_->settings.max_attempts;
+  s.rms_score = false;
+  return s;
+}
+
+SimqkeStart SimqkeGenerator::start(const std::vector<double>& ln_factor) const {
+  const Impl& d = *impl_;
   if (ln_factor.size() != d.target_psa.size())
     throw InputError("motion generator: " + std::to_string(ln_factor.size()) +
                      " target factors for " + std::to_string(d.target_psa.size()) +
                      " matching periods");
   // The random target at the matching periods, and the first-guess amplitudes scaled by the
   // same factor interpolated in ln T at each bin (as bin_ratio interpolates the correction).
-  std::vector<double> target(d.target_psa.size()), amp(d.nbins);
-  for (std::size_t j = 0; j < target.size(); ++j)
-    target[j] = d.target_psa[j] * std::exp(ln_factor[j]);
+  SimqkeStart s;
+  s.target.resize(d.target_psa.size());
+  s.amplitude.resize(d.nbins);
+  for (std::size_t j = 0; j < s.target.size(); ++j)
+    s.target[j] = d.target_psa[j] * std::exp(ln_factor[j]);
   for (std::size_t k = 0; k < d.nbins; ++k)
-    amp[k] = d.amp0[k] * std::exp(d.bin_ratio(ln_factor, k));
-  return d.generate(seed, index, amp, target, d.settings.max_attempts_random_target, true);
+    s.amplitude[k] = d.amp0[k] * std::exp(d.bin_ratio(ln_factor, k));
+  s.max_attempts = d.settings.max_attempts_random_target;
+  s.rms_score = true;
+  return s;
 }
 
-GeneratedMotion SimqkeGenerator::Impl::generate(std::uint64_t seed, std::uint64_t index,
-                                                const std::vector<double>& amp,
-                                                const std::vector<double>& target, int max_attempts,
-                                                bool rms_score) {
-  Impl& d = *this;
-  std::vector<double> cosphi(d.nbins), sinphi(d.nbins), psa, ratio(target.size());
-  GeneratedMotion best;
-  double best_score = 1e300;
-  int evaluations = 0;
-  for (int attempt = 0; attempt < max_attempts; ++attempt) {
-    for (std::size_t k = 0; k < d.nbins; ++k) {
-      // A bin without amplitude needs no phase (its term is zero either way); each phase
-      // depends on its own bin's counter only.
-      if (amp[k] == 0.0) {
-        cosphi[k] = 1.0;
-        sinphi[k] = 0.0;
-        continue;
-      }
-      const double u = philox_uniform(seed, index, std::uint32_t(k), std::uint32_t(attempt));
-      cosphi[k] = std::cos(2.0 * M_PI * u);
-      sinphi[k] = std::sin(2.0 * M_PI * u);
+GeneratedMotion SimqkeGenerator::generate(std::uint64_t seed, std::uint64_t index) {
+  return run(start(), seed, index);
+}
+
+GeneratedMotion SimqkeGenerator::generate(std::uint64_t seed, std::uint64_t index,
+                                          const std::vector<double>& ln_factor) {
+  return run(start(ln_factor), seed, index);
+}
+
+// The phase sets of one motion: the attempt with the smallest score is kept (the first of
+// equal ones); a set within accept_score ends the search.
+GeneratedMotion SimqkeGenerator::run(const SimqkeStart& s, std::uint64_t seed,
+                                     std::uint64_t index) {
+  std::vector<double> re, im;
+  SimqkeAttempt best;
+  int best_attempt = 0, evaluations = 0;
+  for (int attempt = 0; attempt < s.max_attempts; ++attempt) {
+    simqke_phasors(seed, index, std::uint32_t(attempt), s.amplitude, re, im);
+    SimqkeAttempt a = match(s, re, im);
+    evaluations += a.spectra;
+    if (a.score < best.score) {
+      best = std::move(a);
+      best_attempt = attempt;
     }
-    GroundMotion m;
-    d.synthesise(amp, cosphi, sinphi, m);
-    double attempt_best = 1e300;
-    int attempt_best_it = 0;
-    for (int it = 0;; ++it) {
-      if (it > 0) d.correct(m, ratio);
-      d.spectra->compute_psa(m.accel, psa);
-      ++evaluations;
-      // Score: the largest |q - 1| over the matching periods, q = computed / target; for a
-      // random target the RMS of ln q instead (simqke.hpp).
-      double max_dev = 0.0, sum_sq = 0.0;
-      for (std::size_t j = 0; j < psa.size(); ++j) {
-        if (!(psa[j] > 0.0) || !std::isfinite(psa[j]))
-          throw NumericalError("motion generator: non-positive response spectrum at T = " +
-                               std::to_string(d.spectra->periods()[j]) + " s");
-        ratio[j] = target[j] / psa[j];
-        const double q = psa[j] / target[j];
-        max_dev = std::max(max_dev, std::fabs(q - 1.0));
-        if (rms_score) sum_sq += std::log(q) * std::log(q);
-      }
-      const double score = rms_score ? std::sqrt(sum_sq / double(psa.size())) : max_dev;
-      if (score < best_score) {
-        best_score = score;
-        best.motion = m;
-        best.iterations = it;
-        best.attempt = attempt;
-        best.match = compare_spectra(psa, target);
-      }
-      if (score < attempt_best) {
-        attempt_best = score;
-        attempt_best_it = it;
-      }
-      if (max_dev <= d.settings.tolerance || it >= d.settings.max_iterations) break;
-      if (best_score <= d.settings.accept_score && it - attempt_best_it >= d.settings.stall)
-        break;  // acceptable and no longer improving
-      if (it - attempt_best_it >= 2 * d.settings.stall) break;  // stuck: next phase set
-    }
-    if (best_score <= d.settings.accept_score) break;
+    if (best.score <= impl_->settings.accept_score) break;
   }
-  best.target_psa = target;
-  best.spectra = evaluations;
-  best.motion.name = "simqke seed " + std::to_string(seed) + " index " + std::to_string(index);
-  const GroundKinematics kin = integrate(best.motion);
-  best.final_velocity = kin.final_velocity();
-  best.final_displacement = kin.final_displacement();
+  return finish(std::move(best), s, seed, index, best_attempt, evaluations);
+}
+
+GroundMotion SimqkeGenerator::synthesise(const SimqkeStart& s, const std::vector<double>& re,
+                                         const std::vector<double>& im) {
+  GroundMotion m;
+  impl_->synthesise(s.amplitude, re, im, m);
+  return m;
+}
+
+void SimqkeGenerator::correct(GroundMotion& m, const std::vector<double>& ratio) {
+  impl_->correct(m, ratio);
+}
+
+void SimqkeGenerator::spectrum(const GroundMotion& m, std::vector<double>& psa) const {
+  impl_->spectra->compute_psa(m.accel, psa);
+}
+
+SimqkeAttempt SimqkeGenerator::match(const SimqkeStart& s, const std::vector<double>& re,
+                                     const std::vector<double>& im) {
+  return match(s, synthesise(s, re, im));
+}
+
+SimqkeAttempt SimqkeGenerator::match(const SimqkeStart& s, GroundMotion m) {
+  Impl& d = *impl_;
+  const std::vector<double>& target = s.target;
+  std::vector<double> psa, ratio(target.size());
+  SimqkeAttempt best;
+  int best_it = 0;
+  for (int it = 0;; ++it) {
+    if (it > 0) d.correct(m, ratio);
+    d.spectra->compute_psa(m.accel, psa);
+    ++best.spectra;
+    // Score: the largest |q - 1| over the matching periods, q = computed / target; for a
+    // random target the RMS of ln q instead (simqke.hpp).
+    double max_dev = 0.0, sum_sq = 0.0;
+    for (std::size_t j = 0; j < psa.size(); ++j) {
+      if (!(psa[j] > 0.0) || !std::isfinite(psa[j]))
+        throw NumericalError("motion generator: non-positive response spectrum at T = " +
+                             std::to_string(d.spectra->periods()[j]) + " s");
+      ratio[j] = target[j] / psa[j];
+      const double q = psa[j] / target[j];
+      max_dev = std::max(max_dev, std::fabs(q - 1.0));
+      if (s.rms_score) sum_sq += std::log(q) * std::log(q);
+    }
+    const double score = s.rms_score ? std::sqrt(sum_sq / double(psa.size())) : max_dev;
+    if (score < best.score) {
+      best.score = score;
+      best.motion = m;
+      best.iterations = it;
+      best.match = compare_spectra(psa, target);
+      best_it = it;
+    }
+    if (max_dev <= d.settings.tolerance || it >= d.settings.max_iterations) break;
+    // Acceptable and no longer improving (an earlier phase set was not acceptable, or this
+    // one would not have been drawn, so "acceptable" is this set's best).
+    if (best.score <= d.settings.accept_score && it - best_it >= d.settings.stall) break;
+    if (it - best_it >= 2 * d.settings.stall) break;  // stuck: next phase set
+  }
   return best;
+}
+
+GeneratedMotion SimqkeGenerator::finish(SimqkeAttempt best, const SimqkeStart& s,
+                                        std::uint64_t seed, std::uint64_t index, int attempt,
+                                        int spectra) const {
+  GeneratedMotion g;
+  g.motion = std::move(best.motion);
+  g.iterations = best.iterations;
+  g.attempt = attempt;
+  g.match = best.match;
+  g.target_psa = s.target;
+  g.spectra = spectra;
+  g.motion.name = "simqke seed " + std::to_string(seed) + " index " + std::to_string(index);
+  const GroundKinematics kin = integrate(g.motion);
+  g.final_velocity = kin.final_velocity();
+  g.final_displacement = kin.final_displacement();
+  return g;
 }
 
 GroundMotion generate_spectrum_compatible(const DesignSpectrum& target, double duration,

@@ -102,6 +102,23 @@ struct GeneratedMotion {
   double final_displacement = 0.0;  ///< [m]
 };
 
+/// What the matching iteration of one phase set starts from (SimqkeGenerator::start).
+struct SimqkeStart {
+  std::vector<double> amplitude;  ///< first-guess A_k of FFT bin k [m/s^2] (0 outside the band)
+  std::vector<double> target;     ///< the spectrum matched to, at the matching periods [m/s^2]
+  int max_attempts = 1;           ///< phase sets at most [-]
+  bool rms_score = false;         ///< score RMS of ln q (random target) instead of max |q - 1|
+};
+
+/// The best iteration of one phase set (SimqkeGenerator::match).
+struct SimqkeAttempt {
+  GroundMotion motion;   ///< baseline-corrected acceleration [m/s^2]
+  double score = 1e300;  ///< max |q - 1| or RMS ln q of the motion [-]
+  int iterations = 0;    ///< correction iterations of the motion
+  int spectra = 0;       ///< spectrum evaluations of the phase set
+  SpectrumMatch match;   ///< at the matching periods
+};
+
 /// A generator for one target, duration and settings. FFTW plans and buffers are made once
 /// and reused by every generate() call; one object per thread (generate() mutates buffers).
 class SimqkeGenerator {
@@ -130,7 +147,41 @@ class SimqkeGenerator {
   /// Target pseudo-acceleration at the matching periods [m/s^2].
   const std::vector<double>& match_target() const;
 
+  // The lower level that generate() is made of, for generators of several motions at once
+  // (ground/station_generator.hpp): generate(seed, index) is start(), then for each phase set
+  // a = 0, 1, ... match() from the phasors simqke_phasors(seed, index, a) until an attempt's
+  // score is within accept_score, the attempt of the smallest score kept, then finish().
+
+  /// FFT bins of the stationary part, nfft / 2 + 1 [-].
+  std::size_t fft_bins() const;
+  /// Frequency of bin k [Hz] (k / (nfft dt)).
+  double bin_frequency(std::size_t k) const;
+  /// The start for the design spectrum (generate(seed, index)).
+  SimqkeStart start() const;
+  /// The start for the random target design(T_j) exp(ln_factor_j) (generate with ln factors).
+  SimqkeStart start(const std::vector<double>& ln_factor) const;
+  /// One phase set's iteration from the stationary part's Fourier coefficients A_k (re_k + i
+  /// im_k), A_k = s.amplitude[k]: synthesis a(t) = I(t) sum_k A_k |z_k| cos(w_k t + arg z_k),
+  /// baseline correction, the correction loop with its tolerance and stall rules; returns the
+  /// best iteration. For one motion z_k = exp(i phi_k) (simqke_phasors).
+  SimqkeAttempt match(const SimqkeStart& s, const std::vector<double>& re,
+                      const std::vector<double>& im);
+  /// The same iteration from a given motion (iteration 0 is `m` itself).
+  SimqkeAttempt match(const SimqkeStart& s, GroundMotion m);
+  /// The stationary part of coefficients A_k (re_k + i im_k), enveloped and baseline-corrected.
+  GroundMotion synthesise(const SimqkeStart& s, const std::vector<double>& re,
+                          const std::vector<double>& im);
+  /// One correction step: the Fourier amplitudes of `m` times ratio^relaxation, `ratio` (target
+  /// / computed at the matching periods, [-]) interpolated in ln T at each bin; baseline-corrected.
+  void correct(GroundMotion& m, const std::vector<double>& ratio);
+  /// The pseudo-acceleration of `m` at the matching periods [m/s^2].
+  void spectrum(const GroundMotion& m, std::vector<double>& psa) const;
+  /// The returned motion of the kept attempt: its name, target, phase set, kinematics.
+  GeneratedMotion finish(SimqkeAttempt best, const SimqkeStart& s, std::uint64_t seed,
+                         std::uint64_t index, int attempt, int spectra) const;
+
  private:
+  GeneratedMotion run(const SimqkeStart& s, std::uint64_t seed, std::uint64_t index);
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
@@ -146,5 +197,12 @@ GroundMotion generate_spectrum_compatible(const DesignSpectrum& target, double d
 /// is 2 pi u. Exposed for tests.
 double philox_uniform(std::uint64_t seed, std::uint64_t index, std::uint32_t i,
                       std::uint32_t stream = 0);
+
+/// The phasors exp(i phi_k), phi_k = 2 pi philox_uniform(seed, index, k, stream), of the bins
+/// with amplitude (re = 1, im = 0 where amplitude[k] == 0: no phase is drawn there), resized to
+/// amplitude.size(). Stream a is the generator's phase set a.
+void simqke_phasors(std::uint64_t seed, std::uint64_t index, std::uint32_t stream,
+                    const std::vector<double>& amplitude, std::vector<double>& re,
+                    std::vector<double>& im);
 
 }  // namespace pound

@@ -194,5 +194,75 @@ TEST(MotionCommand, BadVariabilityInputIsOneLineExitTwoAndNoFile) {
   EXPECT_FALSE(fs::exists(dir));
 }
 
+// Issue 28: stations along a row. Files motion-NNN-sK.txt, the station delays as leading
+// samples, a station dimension in motions.h5 and the lag and coherency in the report.
+TEST(MotionCommand, GenerateWithStationsWritesEveryStation) {
+  const fs::path dir = temp_dir() / "gen-stations";
+  fs::remove_all(dir);
+  const CmdResult r = run(
+      "generate --spectrum ec8 --ground-type C --ag 0.3 --count 2 --duration 6 --seed 3 "
+      "--stations 3 --spacing 25 --apparent-velocity 250 --coherency harichandran-vanmarcke-1986 "
+      "--json --out '" +
+      dir.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  for (const char* k : {"\"coherency_model\":\"harichandran-vanmarcke-1986: A = 0.736",
+                        "\"apparent_velocity_mps\":250", "\"delay_s\":0.2", "\"lag_s\":",
+                        "\"frequencies_hz\":[1,2,4,6]", "\"stations\":[1,2]", "\"achieved\":["})
+    EXPECT_NE(r.out.find(k), std::string::npos) << k << "\n" << r.out;
+  EXPECT_TRUE(fs::exists(dir / "motions.h5"));
+  EXPECT_TRUE(fs::exists(dir / "target-001.txt"));
+  EXPECT_FALSE(fs::exists(dir / "motion-000.txt"));
+  // Station K of motion 1: 601 samples delayed by 25 (K - 1) / 250 s = 10 (K - 1) samples.
+  for (int k = 1; k <= 3; ++k) {
+    MotionFileSpec spec;
+    spec.path = (dir / ("motion-001-s" + std::to_string(k) + ".txt")).string();
+    const GroundMotion m = read_motion(spec);
+    ASSERT_EQ(m.accel.size(), 601u + 10u * unsigned(k - 1)) << k;
+    for (int i = 0; i < 10 * (k - 1); ++i) ASSERT_EQ(m.accel[std::size_t(i)], 0.0);
+    EXPECT_NE(m.accel[std::size_t(10 * (k - 1))], 0.0);
+  }
+  EXPECT_FALSE(fs::exists(dir / "motion-002-s1.txt"));
+  // The table: a row per motion and station, a mean per station and the pairs' coherency.
+  const CmdResult t =
+      run("generate --spectrum ec8 --ground-type C --ag 0.3 --count 1 --duration 6 --seed 3 "
+          "--positions 0,30 --coherency luco-wong-1986 --out '" +
+          (temp_dir() / "gen-stations-table").string() + "'");
+  ASSERT_EQ(t.code, 0) << t.err;
+  EXPECT_NE(t.out.find("# lag and lagged coherency of the set"), std::string::npos) << t.out;
+  EXPECT_NE(t.out.find("1-2        30.0"), std::string::npos) << t.out;
+}
+
+TEST(MotionCommand, BadStationInputIsOneLineExitTwoAndNoFile) {
+  const fs::path dir = temp_dir() / "bad-stations";
+  fs::remove_all(dir);
+  const std::string gen =
+      "generate --spectrum ec8 --ground-type C --ag 0.3 --count 1 "
+      "--duration 4 --out '" +
+      dir.string() + "' ";
+  const std::string st = gen + "--stations 3 --spacing 20 ";
+  expect_input_error(st + "--apparent-velocity 0", "--apparent-velocity = '0': valid: a non-zero");
+  expect_input_error(st + "--apparent-velocity nan", "--apparent-velocity");
+  expect_input_error(st + "--coherency harichandran-vanmarcke-1986 --coherency-parameters "
+                          "1.5,0.147,5210,1.09,2.78",
+                     "--coherency-parameters: coherency harichandran-vanmarcke-1986 parameter "
+                     "A = 1.5 is out of range; valid: 0 < A <= 1");
+  expect_input_error(st + "--coherency harichandran-vanmarcke-1986 --coherency-parameters "
+                          "0.7,0,5210,1.09,2.78",
+                     "parameter alpha = 0 is out of range; valid: alpha > 0");
+  expect_input_error(st + "--coherency harichandran-vanmarcke-1986 --coherency-parameters "
+                          "0.7,0.1,5210,-1,2.78",
+                     "parameter f0");
+  expect_input_error(st + "--coherency hv86", "--coherency: unknown coherency model 'hv86'");
+  expect_input_error(st + "--coherency-parameters 1", "give --coherency MODEL too");
+  expect_input_error(gen + "--positions 0,20,10", "valid: strictly increasing");
+  expect_input_error(gen + "--stations 3", "--stations = '3': give --stations N and --spacing D");
+  expect_input_error(gen + "--spacing 10", "--spacing = '10': give --stations N and --spacing D");
+  expect_input_error(gen + "--stations 0 --spacing 10", "valid: 1 to 50");
+  expect_input_error(gen + "--stations 2 --spacing -5", "valid: a spacing > 0 m");
+  expect_input_error(gen + "--positions 0,10 --stations 2", "not both");
+  expect_input_error(gen + "--coherency luco-wong-1986", "give the stations too");
+  EXPECT_FALSE(fs::exists(dir));
+}
+
 }  // namespace
 }  // namespace pound
