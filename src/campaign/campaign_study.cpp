@@ -251,7 +251,10 @@ CampaignStudy campaign_from_options(const Options& opt, long samples_override, l
   std::vector<SampledParameter> params;
   static_cast<RowStudy&>(st) = read_row_study(opt, [&](const BuildingRow& row) {
     params = read_sampled_parameters(opt, row);
-    return campaign_contact_use(opt, params);
+    StudyUse use;
+    use.contact = campaign_contact_use(opt, params);
+    for (const auto& p : params) use.sampled_velocity |= p.spec->sets_ground_velocity;
+    return use;
   });
   st.parameters = std::move(params);
   read_sampling(opt, samples_override, seed_override, st);
@@ -262,6 +265,14 @@ CampaignStudy campaign_from_options(const Options& opt, long samples_override, l
     read_records(opt, st);
   else
     throw opt.invalid("motion.source", "valid: generated or records");
+  // The ground under each building (issue 28): a campaign draws its motions, so a building's
+  // own record file is for `pound simulate`; coherency loss needs generated motions.
+  for (std::size_t b = 0; b < st.ground.motion_files.size(); ++b)
+    if (!st.ground.motion_files[b].empty())
+      throw opt.invalid("building" + std::to_string(b + 1) + ".motion_file",
+                        "no record per building in a campaign, which draws its motions "
+                        "(motion.source); give it to pound simulate");
+  if (st.source == MotionSource::records) refuse_coherency_with_records(opt, st.ground);
   read_intensity(opt, st);
   // The study as resolved; run-control options (output, resume, ...) are not part of it, the
   // sample count and seed are stored on their own.

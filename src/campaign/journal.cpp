@@ -70,10 +70,10 @@ RecordLayout::RecordLayout(const CampaignStudy& st)
       levels(st.max_levels()) {}
 
 std::size_t RecordLayout::values() const {
-  // im, scale, parameters, the floor arrays, the building arrays, 3 contact arrays, wall
-  // seconds, rank
+  // im, scale, parameters, the floor arrays, the building arrays, 3 contact arrays, the pairs'
+  // relative ground displacement, wall seconds, rank
   return 2 + parameters + floor_array_fields().size() * buildings * floors +
-         building_array_fields().size() * buildings + 3 * pairs * levels + 2;
+         building_array_fields().size() * buildings + 3 * pairs * levels + pairs + 2;
 }
 
 std::size_t RecordLayout::record_bytes() const {
@@ -102,6 +102,7 @@ std::vector<char> encode_record(const SampleOutcome& o, const RecordLayout& l) {
     for (double x : o.*a.member) put(b, x);
   for (const auto* v : {&o.peak_force, &o.impacts, &o.approach_free})
     for (double x : *v) put(b, x);
+  for (double x : o.ground_relative) put(b, x);
   put(b, o.wall_seconds);
   put(b, static_cast<double>(o.rank));
   char msg[RecordLayout::kMessageBytes] = {};
@@ -146,6 +147,8 @@ bool decode_record(const char* bytes, const RecordLayout& l, SampleOutcome& o) {
     v->resize(pl);
     for (auto& x : *v) x = get<double>(p);
   }
+  o.ground_relative.resize(static_cast<std::size_t>(l.pairs));
+  for (auto& x : o.ground_relative) x = get<double>(p);
   o.wall_seconds = get<double>(p);
   // Found by fuzz_journal: a rank no int holds (in a record no pound writes, checksum right)
   // overflowed the conversion, undefined behaviour; it reads -1.

@@ -7,9 +7,9 @@
 #include "campaign/building_arrays.hpp"
 #include "campaign/floor_arrays.hpp"
 #include "core/error.hpp"
-#include "motion/motion_processing.hpp"
 #include "motion/response_spectrum.hpp"
 #include "sampling/counter_rng.hpp"
+#include "study/ground_options.hpp"
 #include "study/simulation_run.hpp"
 
 namespace pound {
@@ -20,8 +20,16 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 SampleRunner::SampleRunner(const CampaignStudy& study)
     : st_(study), lhs_(study.seed, static_cast<std::uint64_t>(study.samples)) {
   if (st_.source == MotionSource::generated) {
-    generator_ =
-        std::make_unique<SimqkeGenerator>(*st_.spectrum, st_.motion_duration, st_.generator);
+    // One station per building under a coherency model (at the buildings' positions), else one
+    // motion for all (StationGenerator's one station is SimqkeGenerator's motion, bit for bit).
+    StationSettings stations;
+    stations.coherency = st_.ground.coherency;
+    if (stations.coherency.model != CoherencyModel::none)
+      stations.positions = st_.ground.positions;
+    else
+      stations.positions = {0.0};
+    generator_ = std::make_unique<StationGenerator>(*st_.spectrum, st_.motion_duration,
+                                                    st_.generator, stations);
     variability_ =
         std::make_unique<TargetVariability>(st_.variability, generator_->match_periods());
   }
@@ -67,7 +75,7 @@ SampleDraw SampleRunner::draw(long id) {
 }
 
 SampleModel SampleRunner::model(const SampleDraw& d) const {
-  SampleModel m{st_.row, st_.contact, st_.sears};
+  SampleModel m{st_.row, st_.ground, st_.contact, st_.sears};
   m.contact.model = d.model;
   apply_sampled(st_.parameters, d.values, m);
   return m;
@@ -87,37 +95,49 @@ SampleOutcome SampleRunner::run(const SampleDraw& d) {
   out.peak_force.assign(static_cast<std::size_t>(np * nl), kNaN);
   out.impacts.assign(static_cast<std::size_t>(np * nl), kNaN);
   out.approach_free.assign(static_cast<std::size_t>(np * nl), kNaN);
+  out.ground_relative.assign(static_cast<std::size_t>(np), kNaN);
   try {
     // The sample's building row, contact and Sears model.
     const SampleModel sm = model(d);
     const BuildingRow& row = sm.row;
 
-    // The motion (matched to the design spectrum, or to the sample's random target), scaled
-    // to the stripe level or by the sampled factor after generation.
-    GroundMotion g;
-    if (st_.source == MotionSource::records)
-      g = st_.records[static_cast<std::size_t>(d.record)];
-    else if (d.spectral_epsilon.empty())
-      g = generator_->generate(d.motion_seed, 0).motion;
-    else
-      g = generator_->generate(d.motion_seed, 0, variability_->ln_factor(d.spectral_epsilon))
-              .motion;
+    // The ground (issue 28): the motion (matched to the design spectrum, or to the sample's
+    // random target; one per building under a coherency model), delayed under each building
+    // by its arrival (wave passage), scaled to the stripe level or by the sampled factor.
+    std::vector<GroundMotion> stations;
+    GroundMotion reference;
+    if (st_.source == MotionSource::records) {
+      reference = st_.records[static_cast<std::size_t>(d.record)];
+    } else {
+      std::vector<GeneratedMotion> g =
+          d.spectral_epsilon.empty()
+              ? generator_->generate(d.motion_seed, 0)
+              : generator_->generate(d.motion_seed, 0, variability_->ln_factor(d.spectral_epsilon));
+      if (g.size() > 1)
+        for (auto& m : g) stations.push_back(m.motion);
+      reference = std::move(g.front().motion);
+    }
+    const RowGround unscaled = row_ground(sm.ground, reference, stations);
+    // The intensity of the motion at the base of intensity.building.
+    const GroundMotion& base = unscaled.under(st_.im_building).motion();
     double im0;
     if (st_.measure == IntensityMeasure::pga) {
-      im0 = g.pga();
+      im0 = base.pga();
     } else {
       // Sa(T1) of the (sampled) building, 5 % damping.
       const double t1 = assemble(row.buildings[st_.im_building]).periods(0);
-      im0 = response_spectrum(g, {t1}, 0.05).psa[0];
+      im0 = response_spectrum(base, {t1}, 0.05).psa[0];
     }
     if (!(im0 > 0)) throw NumericalError("the motion has zero intensity");
     out.scale = st_.levels.empty() ? d.scale_draw : d.level / im0;
     out.im = im0 * out.scale;
-    g = scale(g, out.scale);
+    const RowGround ground = unscaled.scaled(out.scale);  // every building's by the same factor
 
-    const RowSimulation sim = simulate_model(row, RowGround::uniform(g, nb), sm.contact, sm.sears,
-                                             st_.integrator, st_.simulation)
-                                  .sim;
+    const RowSimulation sim =
+        simulate_model(row, ground, sm.contact, sm.sears, st_.integrator, st_.simulation).sim;
+    for (int p = 0; p < np; ++p)
+      out.ground_relative[static_cast<std::size_t>(p)] =
+          sim.ground_relative[static_cast<std::size_t>(p)];
     for (const auto& f : sim.floors) {
       const std::size_t i = static_cast<std::size_t>(f.building * nf + f.floor - 1);
       for (const auto& a : floor_array_fields()) (out.*a.member)[i] = f.*a.source;
@@ -147,7 +167,8 @@ SampleOutcome SampleRunner::run(const SampleDraw& d) {
     for (const auto& a : floor_array_fields()) (out.*a.member).assign((out.*a.member).size(), kNaN);
     for (const auto& a : building_array_fields())
       (out.*a.member).assign((out.*a.member).size(), kNaN);
-    for (auto* v : {&out.peak_force, &out.impacts, &out.approach_free}) v->assign(v->size(), kNaN);
+    for (auto* v : {&out.peak_force, &out.impacts, &out.approach_free, &out.ground_relative})
+      v->assign(v->size(), kNaN);
   }
   out.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;

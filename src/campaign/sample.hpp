@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "campaign/campaign_study.hpp"
+#include "ground/station_generator.hpp"
 #include "sampling/latin_hypercube.hpp"
 
 namespace pound {
@@ -64,6 +65,9 @@ struct SampleOutcome {
   /// Peak relative approach u_L - u_R of the facing floors in the free run [m]
   /// (SiteResponse::approach_free): the smallest gap at that level this motion would not close.
   std::vector<double> approach_free;
+  /// Per pair: the peak relative ground displacement of its two buildings over the run [m]
+  /// (RowSimulation::ground_relative; 0 on one motion).
+  std::vector<double> ground_relative;
   double wall_seconds = 0.0;  ///< run bookkeeping
   int rank = 0;               ///< run bookkeeping
 };
@@ -86,7 +90,7 @@ class SampleRunner {
  private:
   const CampaignStudy& st_;
   LatinHypercube lhs_;
-  std::unique_ptr<SimqkeGenerator> generator_;
+  std::unique_ptr<StationGenerator> generator_;
   std::unique_ptr<TargetVariability> variability_;  ///< (generated motions)
 };
 

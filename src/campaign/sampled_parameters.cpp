@@ -146,6 +146,11 @@ const std::vector<SampledParameterSpec>& sampled_parameter_table() {
       {"building#.energy_capacity", "-",
        "imk: lambda of every storey of the building, E_t = lambda Fy uy (distribution)",
        SampleStage::direct, kPositive, set_every_storey<&Building::energy_capacity>, check_is_imk},
+      // Wave passage (issue 28): needs the buildings' positions (ground_options.hpp).
+      {"ground.apparent_velocity", "m/s",
+       "apparent velocity of the wave along the row, from building 1 (distribution, > 0)",
+       SampleStage::direct, kPositive, [](S& m, int, double v) { m.ground.apparent_velocity = v; },
+       nullptr, false, true},
       {"hardening",
        "-",
        "post-yield stiffness ratio b = k_post / k0 of every storey of every building, in [0, 1) "

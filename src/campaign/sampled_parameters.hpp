@@ -13,12 +13,14 @@
 #include "sears/sears_simulation.hpp"
 #include "simulation/contact_spec.hpp"
 #include "structure/building_row.hpp"
+#include "study/ground_options.hpp"
 
 namespace pound {
 
 /// What the sampled values of one sample act on before it is simulated.
 struct SampleModel {
   BuildingRow row;
+  GroundSpec ground;           ///< positions, wave passage and coherency (issue 28)
   ContactSpec contact;         ///< the lumped contact models (model name, e, k, ...)
   sears::SearsRowModel sears;  ///< the damped Sears model (used when the sample's model is sears)
 };
@@ -70,7 +72,8 @@ struct SampledParameterSpec {
   /// Further checks against the study's fixed row (nullptr: none); throws InputError naming
   /// where the key was given (`sample` is the [sample] section of the study).
   void (*check)(const SampledParameter& p, const BuildingRow& row, const Options& sample);
-  bool sets_contact_k = false;  ///< gives the lumped models their contact stiffness
+  bool sets_contact_k = false;        ///< gives the lumped models their contact stiffness
+  bool sets_ground_velocity = false;  ///< the ground's apparent velocity (positions matter)
 };
 
 /// The table, in the order of --help.

@@ -10,15 +10,29 @@ GroundTrace::GroundTrace(GroundMotion motion) : motion_(std::move(motion)) {
   GroundKinematics k = integrate(motion_);
   v_ = std::move(k.velocity);
   u_ = std::move(k.displacement);
+  if (motion_.accel.empty()) return;
+  // From rest at t = -dt, the acceleration rising linearly to a_0 at t = 0 (see the header).
+  const double dt = motion_.dt, a0 = motion_.accel.front();
+  const double v0 = a0 * dt / 2.0, u0 = a0 * dt * dt / 6.0;
+  for (std::size_t i = 0; i < v_.size(); ++i) {
+    u_[i] += u0 + v0 * (dt * double(i));
+    v_[i] += v0;
+  }
 }
 
 void GroundTrace::kinematics(double t, double& v, double& u) const {
   const std::size_t n = motion_.accel.size();
-  if (n == 0 || !(t > 0.0)) {
+  const double dt = motion_.dt;
+  if (n == 0 || !(t > -dt)) {
     v = u = 0.0;
     return;
   }
-  const double dt = motion_.dt;
+  if (t < 0.0) {  // the rise from rest at -dt to a_0 at 0
+    const double s = t + dt, a0 = motion_.accel.front();
+    v = a0 * s * s / (2.0 * dt);
+    u = a0 * s * s * s / (6.0 * dt);
+    return;
+  }
   const double last = dt * double(n - 1);
   if (t >= last) {  // after the record: the final velocity, the displacement growing with it
     v = v_[n - 1];

@@ -104,6 +104,7 @@ void RowRun::start() {
   y_ = Eigen::VectorXd::Zero(at.size);
   if (p_->u0.size()) y_.head(n_) = p_->u0;
   if (p_->v0.size()) y_.segment(n_, n_) = p_->v0;
+  dyn_.set_ground_states(t_, y_);
   rec_.start(y_.head(n_));
   const bool pounding = dyn_.pounding();
   fork_armed_ = fork_to_ != nullptr && !pounding;

@@ -10,6 +10,7 @@
 #include "hysteresis/registry.hpp"
 #include "motion/motion_processing.hpp"
 #include "motion/motion_reader.hpp"
+#include "study/ground_options.hpp"
 
 namespace pound {
 
@@ -55,6 +56,11 @@ std::vector<OptionSpec> row_option_specs() {
   auto at = std::find_if(specs.begin(), specs.end(),
                          [](const OptionSpec& o) { return o.key == "building#.yield_shears"; });
   specs.insert(at + 1, laws.begin(), laws.end());
+  // The ground under each building (issue 28), after the gaps.
+  const auto ground = ground_option_specs();
+  at = std::find_if(specs.begin(), specs.end(),
+                    [](const OptionSpec& o) { return o.key == "pair#.gap"; });
+  specs.insert(at + 1, ground.begin(), ground.end());
   return specs;
 }
 

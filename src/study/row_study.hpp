@@ -13,12 +13,14 @@
 #include "simulation/simulate_row.hpp"
 #include "solver/integrator_settings.hpp"
 #include "structure/building_row.hpp"
+#include "study/ground_options.hpp"
 #include "study/row_options.hpp"
 
 namespace pound {
 
 struct RowStudy {
   BuildingRow row;                  ///< buildings and gaps
+  GroundSpec ground;                ///< the ground under each building (issue 28)
   ContactSpec contact;              ///< contact.model and the lumped laws' parameters
   bool has_sears = false;           ///< the damped Sears model is among the models in use
   sears::SearsRowModel sears;       ///< its slabs and options (has_sears)
@@ -26,12 +28,18 @@ struct RowStudy {
   RowSimulationOptions simulation;  ///< extra time and collapse drift ratio
 };
 
-/// Which contact models the study may simulate, from its row (a campaign: its sampled
-/// parameters, which are checked against the row); null: contact.model alone.
-using ContactUseOf = std::function<ContactUse(const BuildingRow&)>;
+/// What a study uses that its sampled parameters decide (a campaign): the contact models, and
+/// whether the apparent velocity of the ground is sampled.
+struct StudyUse {
+  ContactUse contact;
+  bool sampled_velocity = false;  ///< [sample] ground.apparent_velocity
+};
+/// The study's use from its row (a campaign: its sampled parameters, which are checked against
+/// the row); null: contact.model alone, nothing sampled.
+using StudyUseOf = std::function<StudyUse(const BuildingRow&)>;
 
 /// Reads and validates the row's keys; throws InputError (one line naming the file and line or
 /// the flag, the key and what is valid) on the first bad value.
-RowStudy read_row_study(const Options& opt, const ContactUseOf& use_of = nullptr);
+RowStudy read_row_study(const Options& opt, const StudyUseOf& use_of = nullptr);
 
 }  // namespace pound

@@ -1,8 +1,11 @@
 #include "study/simulation_run.hpp"
 
+#include <cmath>
 #include <utility>
 
 #include "contact/registry.hpp"
+#include "core/format.hpp"
+#include "motion/motion_reader.hpp"
 #include "study/row_options.hpp"
 #include "study/row_study.hpp"
 #include "study/sears_row_options.hpp"
@@ -43,6 +46,33 @@ GroundMotion record_of(const Options& opt, const RecordValues* record) {
   return record_from_values(opt, record->name, record->dt, record->accel, record->check_pga_key);
 }
 
+// Each building's own record ([buildingN] motion_file, read and processed with the [motion]
+// keys; empty where none), and the study's record unless every building has its own.
+void read_records(const Options& opt, const RecordValues* record, const GroundSpec& g,
+                  SimulationSetup& s) {
+  std::vector<GroundMotion> own(g.motion_files.size());
+  bool all_own = !own.empty();
+  for (std::size_t b = 0; b < own.size(); ++b) {
+    if (g.motion_files[b].empty()) {
+      all_own = false;
+      continue;
+    }
+    own[b] = process_record(opt, read_motion(motion_file_spec(opt, g.motion_files[b])));
+  }
+  s.motion = all_own && !record ? own.front() : record_of(opt, record);
+  for (std::size_t b = 0; b < own.size(); ++b) {
+    if (own[b].accel.empty()) continue;
+    const std::string key = "building" + std::to_string(b + 1) + ".motion_file";
+    if (std::fabs(own[b].dt - s.motion.dt) > 1e-9 * s.motion.dt)
+      throw opt.invalid(
+          key, "a record sampled at the study's dt = " + format_number(s.motion.dt, "%.9g") +
+                   " s (this one: " + format_number(own[b].dt, "%.9g") + " s)");
+    own[b].dt = s.motion.dt;  // within round-off of it: one grid
+  }
+  refuse_coherency_with_records(opt, g);
+  s.ground = row_ground(g, s.motion, own);
+}
+
 }  // namespace
 
 SimulationSetup prepare_simulation(const Options& opt, const RecordValues* record) {
@@ -53,8 +83,8 @@ SimulationSetup prepare_simulation(const Options& opt, const RecordValues* recor
   s.is_sears = is_sears_model(s.contact.model);
   s.sears_model = std::move(study.sears);
   s.integrator = study.integrator;
-  s.motion = record_of(opt, record);
-  s.ground = RowGround::uniform(s.motion, static_cast<int>(s.row.buildings.size()));
+  read_records(opt, record, study.ground, s);
+  s.ground_spec = study.ground;
   s.options = study.simulation;
   s.options.record_history = opt.given("histories");
   s.options.track_energy = true;

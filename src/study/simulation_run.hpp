@@ -16,6 +16,7 @@
 #include "simulation/simulate_row.hpp"
 #include "solver/integrator_settings.hpp"
 #include "structure/building_row.hpp"
+#include "study/ground_options.hpp"
 
 namespace pound {
 
@@ -44,6 +45,7 @@ struct SimulationSetup {
   IntegratorSettings integrator;     ///< the lumped models' integrator
   GroundMotion motion;               ///< read, truncated, scaled, baseline-corrected [m/s^2]
   RowGround ground;                  ///< the motion under each building (issue 28)
+  GroundSpec ground_spec;            ///< positions, wave passage, coherency, own records
   RowSimulationOptions options;  ///< extra time, histories (--histories given), energy, collapse
   /// "WHERE is not used by contact model M": given keys the chosen model does not read.
   std::vector<std::string> unused_keys;
