@@ -5,10 +5,18 @@
 namespace pound {
 namespace {
 
-// Per building: index, name, collapse, and its floors.
-void write_buildings(JsonWriter& w, const RowSimulation& s, const BuildingRow& row) {
+// Per building: index, name, position and arrival delay, collapse, and its floors.
+void write_buildings(JsonWriter& w, const SimulationRun& run, const BuildingRow& row) {
+  const RowSimulation& s = run.sim;
   for (std::size_t b = 0; b < row.buildings.size(); ++b) {
     w.begin_object().field("index", static_cast<long>(b)).field("name", row.buildings[b].name);
+    // Where it stands along the row (null: not known) and when the ground motion reaches it.
+    w.key("position_m");
+    if (b < run.positions.size())
+      w.value(run.positions[b]);
+    else
+      w.null();
+    w.field("arrival_delay_s", b < run.arrival_delays.size() ? run.arrival_delays[b] : 0.0);
     // Collapse (issue 23): in each run, and when and where.
     auto collapse_of = [&](const std::vector<BuildingCollapse>& c) {
       return b < c.size() ? c[b] : BuildingCollapse{};
@@ -63,7 +71,7 @@ std::string simulation_json(const BuildingRow& row, const SimulationRun& run) {
   const std::vector<sears::SiteContacts>& phases = run.phases;
   JsonWriter w;
   w.begin_object().key("buildings").begin_array();
-  write_buildings(w, s, row);
+  write_buildings(w, run, row);
   // The pounding run stops at its first collapse (null: it ran to the end).
   w.key("pounding_stopped_at_s");
   if (s.pounding.stopped)
@@ -85,6 +93,15 @@ std::string simulation_json(const BuildingRow& row, const SimulationRun& run) {
           .field("first_impact_s", phases[k].first_impact_s);
     w.end_object();
   }
+  w.end_array();
+  // The ground (issue 28): each pair's peak relative ground displacement, which its gap must
+  // take up besides the buildings' motion relative to their own ground (0 on one motion).
+  w.key("pairs").begin_array();
+  for (std::size_t p = 0; p < s.ground_relative.size(); ++p)
+    w.begin_object()
+        .field("pair", static_cast<int>(p))
+        .field("peak_ground_relative_m", s.ground_relative[p])
+        .end_object();
   w.end_array();
   if (!slabs.empty()) {
     // Damped Sears model: peak accelerations of the colliding slabs.

@@ -120,8 +120,11 @@ SimulationRun simulate_model(const BuildingRow& row, const RowGround& ground,
 }
 
 SimulationRun run_simulation(const SimulationSetup& setup) {
-  return simulate_model(setup.row, setup.ground, setup.contact, setup.sears_model, setup.integrator,
-                        setup.options);
+  SimulationRun r = simulate_model(setup.row, setup.ground, setup.contact, setup.sears_model,
+                                   setup.integrator, setup.options);
+  r.positions = setup.ground_spec.positions;
+  r.arrival_delays = setup.ground_spec.delays();
+  return r;
 }
 
 }  // namespace pound

@@ -63,6 +63,9 @@ struct SimulationRun {
   std::vector<sears::SlabPeaks> slabs;      ///< damped Sears model: colliding slabs' peaks
   std::vector<sears::SiteContacts> phases;  ///< damped Sears model: contact phases per site
   double sears_dt_s = 0.0;                  ///< damped Sears model: its (fine) step [s]
+  /// The buildings' positions along the row [m] (empty: not known) and the ground motion's
+  /// arrival delay at each [s] (issue 28; run_simulation).
+  std::vector<double> positions, arrival_delays;
 };
 
 /// The row on `ground` with and without pounding: by the damped Sears model (`sears`) when
