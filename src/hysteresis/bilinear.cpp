@@ -78,6 +78,10 @@ double BilinearStorey::advance(const StoreyParameters& p, const StoreyState& com
   const double uy = p.uy();
   const double z_trial = z_of(p, committed, d0) + (d1 - d0);
   trial = committed;
+  // The energy dissipated up to d0 on the committed branch, which may have begun before d0 (a
+  // state of the continuous form, anchored where its branch began: the damped Sears run's
+  // stretches on the lumped solver, issue 30); nothing to add when it is anchored at d0.
+  trial.dissipated = dissipated(p, committed, d0, nullptr);
   trial.d_anchor = d1;
   if (std::fabs(z_trial) <= uy) {
     trial.branch = 0;

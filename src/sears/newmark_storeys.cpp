@@ -82,6 +82,28 @@ void NewmarkStoreys::commit() {
   }
 }
 
+void NewmarkStoreys::set_state(const std::vector<StoreyState>& states, const Eigen::VectorXd& u,
+                               const Eigen::VectorXd& v) {
+  committed_ = states;
+  trial_ = committed_;
+  std::fill(failed_in_step_.begin(), failed_in_step_.end(), 0);
+  for (int i = 0, n = static_cast<int>(storeys_.size()); i < n; ++i) {
+    const RowStorey& s = storeys_[i];
+    const double d = drift(u, i);
+    r_(i) = s.p.k0 * d - s.law->shear(s.p, committed_[i], d, committed_[i].x);
+    rd_(i) = 0.0;
+    if (s.damping_a1 > 0.0) {  // the tangent damper at the drift rate (trial())
+      double slope = s.p.k0, offset = 0.0;
+      s.law->branch_line(s.p, committed_[i], slope, offset);
+      rd_(i) = s.damping_a1 * (std::max(slope, 0.0) - s.p.k0) * drift(v, i);
+      r_(i) -= rd_(i);
+    }
+  }
+  r_trial_ = r_;
+  rd_trial_ = rd_;
+  rd_prev_ = rd_;
+}
+
 double NewmarkStoreys::damper_work(const Eigen::VectorXd& u_prev, const Eigen::VectorXd& u) const {
   if (!tangent_damping_) return 0.0;
   double w = 0.0;

@@ -50,6 +50,12 @@ class NewmarkStoreys {
   double damper_work(const Eigen::VectorXd& u_prev, const Eigen::VectorXd& u) const;
   /// Makes the last trial the committed state.
   void commit();
+  /// Commits the given states (continuous states in StoreyState::x) at displacements u [m] and
+  /// velocities v [m/s]: the state a stretch on the lumped solver's steps ended in (issue 30).
+  void set_state(const std::vector<StoreyState>& states, const Eigen::VectorXd& u,
+                 const Eigen::VectorXd& v);
+  /// The committed states.
+  const std::vector<StoreyState>& committed_states() const { return committed_; }
 
   /// Recoverable strain energy per building at the committed state and displacements u [J];
   /// -1 for a building whose storeys are all linear (TranslationBound then uses u^T K u / 2).

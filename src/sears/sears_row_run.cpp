@@ -45,6 +45,19 @@ SearsRowRun::SearsRowRun(const SearsRowProblem& p_in, const SearsRowModel& model
       slabs(layout.banks, out.counts) {
   build_operators();
   initial_state();
+  if (stepping.lumped > 0) {
+    lumped_problem.row = &assembled;
+    lumped_problem.ground = p.ground;
+    lumped_problem.t_end = p.t_end;
+    lumped_problem.record_history = p.record_history;
+    lumped_problem.track_energy = p.track_energy;
+    lumped_problem.collapse_drift_ratio = p.collapse_drift_ratio;
+    lumped_settings = p.integrator;
+    lumped_settings.control = StepControl::adaptive;
+    lumped_settings.h_max = stepping.lumped_s();  // its grid is h_L
+    lumped = std::make_unique<FreeStretches>(lumped_problem, lumped_settings);
+    lumped_bound.assign(nf, 0.0);
+  }
 }
 
 // ops[m - 1] for steps of m = 1 .. longest fine steps through contacts (StepOperators).
@@ -178,7 +191,7 @@ void SearsRowRun::coarse_step(double t_next) {  // F = 0 at both ends
 // True when no contact can start within the next coarse step (docs/speed.md): no force acts
 // now, and at every site the bound on the faces' approach (building translation plus the
 // internal vibration of both slabs), times kCoarseBoundSafety, stays below the gap.
-bool SearsRowRun::contact_free() {
+bool SearsRowRun::contact_free(double h) {
   if (!p.contacts || ns == 0) return true;
   // A test that fails at a site with a dormant slab is repeated with the site's exact overlap.
   auto holds = [&](auto&& test) {
@@ -199,17 +212,22 @@ bool SearsRowRun::contact_free() {
   // below (waking a dormant slab changes the overlap, not the buildings' state).
   if (!holds([&](int s) {
         const auto& site = assembled.sites[s];
-        site_approach[s] = bound.approach(site.dof_left, site.dof_right, v, gv[s], hc);
+        site_approach[s] = bound.approach(site.dof_left, site.dof_right, v, gv[s], h);
         return kCoarseBoundSafety * site_approach[s] < -delta(s);
       }))
     return false;
   // Free modes only lose energy, so the bound taken after the last fine step stays valid
-  // through every following coarse step (dormant or not).
-  if (!modal_bound_valid)
-    for (int k = 0; k < nf; ++k) modal_bound[k] = slabs.bank(k).face_motion_bound(hc);
-  modal_bound_valid = true;
+  // through every following coarse step (dormant or not); the lumped steps' longer horizon has
+  // its own.
+  const bool lumped_step = h != hc;
+  std::vector<double>& mb = lumped_step ? lumped_bound : modal_bound;
+  bool& valid = lumped_step ? lumped_bound_valid : modal_bound_valid;
+  if (!valid) {
+    for (int k = 0; k < nf; ++k) mb[k] = slabs.bank(k).face_motion_bound(h);
+    valid = true;
+  }
   return holds([&](int s) {
-    const double b = site_approach[s] + modal_bound[left_slab(s)] + modal_bound[right_slab(s)];
+    const double b = site_approach[s] + mb[left_slab(s)] + mb[right_slab(s)];
     return kCoarseBoundSafety * b < -delta(s);
   });
 }
@@ -296,11 +314,72 @@ void SearsRowRun::record_peaks(bool coarse, const double* ag, double t_next, dou
     if (!slabs.asleep(k)) record_slab(k, coarse, ag);  // asleep: sampled when it wakes
 }
 
+// Stretches without contact on the lumped solver's steps (issue 30; docs/speed.md): from the
+// point i of the h_L grid, the floors go on FreeStretches one step of h_L at a time and the slabs
+// by their exact free recurrence, for as long as the bound of contact_free() over h_L shows that
+// no contact can start in the next one; the Newmark steps then go on from the state reached.
+// Returns the fine step index reached.
+long SearsRowRun::lumped_stretch(long i) {
+  const long per = stepping.lumped * stepping.ratio;  // fine steps per lumped step
+  const double hl = stepping.lumped_s();
+  const double energy[3] = {e_input, e_damping, e_contact};
+  lumped->resume(i * dt, u, v, storeys.committed_states(), energy);
+  ++out.counts.lumped_stretches;
+  bool stop = false;
+  do {
+    i += per;
+    const double t_next = i * dt;
+    stop = lumped->advance_to(t_next, rec);
+    ++out.counts.lumped;
+    for (int k = 0; k < nf && p.contacts; ++k) slabs.step_free(k, stepping.lumped);
+    leave_stretch();
+    record_sites(true, hl, t_next);
+    record_peaks(true, ground.acc(t_next), t_next, hl);
+    if (failure_check) check_failures(t_next);
+    stop = stop || (rec.take_new_collapses() > 0 && on_collapse());
+  } while (!stop && i + per <= steps && contact_free(hl));
+  if (stop) rec.result().stopped = true;
+  return i;
+}
+
+// The Newmark path's state from where the lumped stretch is.
+void SearsRowRun::leave_stretch() {
+  const double t = lumped->time();
+  current_t = t;
+  lumped->state(u, v, acc);
+  if (!storeys.linear()) {
+    lumped->storeys(lumped_storeys);
+    storeys.set_state(lumped_storeys, u, v);
+    r_next = storeys.correction();
+  }
+  if (p.track_energy) {
+    double e[3];
+    lumped->energies(e);
+    e_input = e[0];
+    e_damping = e[1];
+    e_contact = e[2];
+  }
+  ground_at(t, gd, gv);
+  F.setZero();
+  F_next.setZero();
+  F_prev = F;
+  m_next = 1;
+  h_prev = 0.0;
+  loads(F_next, end);
+}
+
 SearsRowResult SearsRowRun::run() {
   long i = 0;
+  const long per_lumped = stepping.lumped * stepping.ratio;
   while (i < steps) {
+    if (lumped && p.contacts && i % per_lumped == 0 && i + per_lumped <= steps &&
+        contact_free(stepping.lumped_s())) {
+      i = lumped_stretch(i);
+      if (rec.result().stopped) break;
+      continue;
+    }
     const bool on_grid = event && i % stepping.ratio == 0 && i + stepping.ratio <= steps;
-    const bool coarse = on_grid && contact_free();
+    const bool coarse = on_grid && contact_free(hc);
     if (!coarse && slabs.dormant_count() > 0) slabs.wake_all_dormant();
     if (!coarse) coarse_in_run = 0;
     if (on_grid && !coarse && p.contacts && model.sleeping_slabs) fall_asleep();
@@ -321,7 +400,7 @@ SearsRowResult SearsRowRun::run() {
       const long m = fine_step(i);
       i += m;
       h = m * dt;
-      modal_bound_valid = false;
+      modal_bound_valid = lumped_bound_valid = false;
       ++out.counts.fine;
       if (slabs.asleep_count() > 0 && i % stepping.ratio == 0) finish_sleep();
     }
@@ -382,7 +461,7 @@ void SearsRowRun::finish() {
   const bool stopped = rec.result().stopped;
   rec.finish(stopped ? current_t : steps * dt, u, v);
   RowResult& r = rec.result();
-  r.steps = out.counts.fine + out.counts.coarse;
+  r.steps += out.counts.fine + out.counts.coarse;  // and the lumped stretches' own
   r.hysteretic_energy.resize(n);
   for (int k = 0; k < n; ++k) r.hysteretic_energy(k) = storeys.dissipated(u, k);
   if (p.track_energy) r.energy = rec.final_energy(energy_now());

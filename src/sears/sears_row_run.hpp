@@ -6,6 +6,7 @@
 // symbols of the equations (u, v, F, S, H, ...). Internal to src/sears.
 #include <Eigen/Dense>
 #include <limits>
+#include <memory>
 #include <vector>
 
 #include "sears/newmark_row.hpp"
@@ -14,6 +15,7 @@
 #include "sears/sears_simulation.hpp"
 #include "sears/slab_set.hpp"
 #include "sears/translation_bound.hpp"
+#include "solver/row_solver.hpp"
 #include "solver/run_recorder.hpp"
 
 namespace pound::sears::detail {
@@ -73,9 +75,11 @@ class SearsRowRun {
   double step_error(long m);
   void storey_pass(double h, const Eigen::MatrixXd& R, bool contacts);
   void step_slabs(long i, long m);
-  // Coarse steps (no contact).
+  // Coarse steps (no contact), and stretches on the lumped solver's steps (issue 30).
   void coarse_step(double t_next);
-  bool contact_free();
+  bool contact_free(double h);
+  long lumped_stretch(long i);
+  void leave_stretch();
   // Results after a step.
   void add_energy(double h, double t_next);
   void record_sites(bool coarse, double h, double t_next);
@@ -119,6 +123,14 @@ class SearsRowRun {
   long longest = 1;                 // ops.size(): the longest step through contacts [fine steps]
   int op = 0;                       // ops[op]: the step being solved
   TranslationBound bound;
+  // Stretches without contact on the lumped solver's exact and adaptive steps of h_L
+  // (SearsSteps::lumped): its problem (no contact laws) and stepper; null without.
+  RowProblem lumped_problem;
+  IntegratorSettings lumped_settings;  // (FreeStretches keeps references to both)
+  std::unique_ptr<FreeStretches> lumped;
+  std::vector<double> lumped_bound;         // ModalBank::face_motion_bound(h_L) per slab [m]
+  bool lumped_bound_valid = false;          // lumped_bound holds since the last fine step
+  std::vector<StoreyState> lumped_storeys;  // the storeys' states a stretch ended in
 
   // Yielding storeys (sears/newmark_storeys.hpp): a_i+1 = a_hat + R r_i+1 - H F, R = Mt^-1 B
   // for each step size; r iterated with the storeys' return maps.

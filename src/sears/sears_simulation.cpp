@@ -6,6 +6,7 @@
 #include "core/error.hpp"
 #include "sears/sears_row_layout.hpp"
 #include "sears/step_rule.hpp"
+#include "solver/row_solver.hpp"
 
 namespace pound::sears {
 
@@ -55,14 +56,34 @@ SearsSteps sears_row_steps(const BuildingRow& row, double record_dt, const Sears
   const StepLimits lim = row_step_limits(row, record_dt, model);
   st.fine_s = st.coarse_s = choose_step(lim, model.dt_s);
   if (model.stepping == SearsStepping::fixed) return st;
-  // The coarse step: Newmark accuracy for the buildings, and no step over a record sample.
-  double hc = shortest_period(assemble(row)) * kCoarseStepPerBuildingPeriod;
+  // The lumped solver's grid (row_run.cpp, set_step_limits): h_L = the largest step <=
+  // min(record spacing, T_min,b / 20) that divides the record spacing.
+  const double t_b = shortest_period(assemble(row));
+  double h_lumped = std::numeric_limits<double>::infinity();
+  if (std::isfinite(t_b)) {
+    h_lumped = t_b / 20.0;
+    if (record_dt > 0.0) {
+      h_lumped = std::min(h_lumped, record_dt);
+      h_lumped = record_dt / std::ceil(record_dt / h_lumped * (1 - 1e-12));
+    }
+  }
+  // The coarse step: Newmark accuracy for the buildings, and no step over a record sample; it
+  // divides h_L, whose stretches carry the floors between contacts (issue 30).
+  double hc = t_b * kCoarseStepPerBuildingPeriod;
   if (record_dt > 0.0) hc = std::min(hc, record_dt);
   constexpr double kMaxRatio = 1e5;  // no building period and no record: free floors
   if (!std::isfinite(hc)) hc = kMaxRatio * st.fine_s;
-  if (record_dt > 0.0) hc = record_dt / std::ceil(record_dt / hc - 1e-9);
-  if (!(hc > st.fine_s * (1.0 + 1e-9))) return st;  // the fine step is already coarse enough
-  if (model.dt_s > 0.0) {                           // a given fine step is kept
+  if (std::isfinite(h_lumped)) {
+    st.lumped = std::max(1L, static_cast<long>(std::ceil(h_lumped / hc - 1e-9)));
+    hc = h_lumped / static_cast<double>(st.lumped);
+  } else if (record_dt > 0.0) {
+    hc = record_dt / std::ceil(record_dt / hc - 1e-9);
+  }
+  if (!(hc > st.fine_s * (1.0 + 1e-9))) {  // the fine step is already coarse enough
+    st.lumped = 0;
+    return st;
+  }
+  if (model.dt_s > 0.0) {  // a given fine step is kept
     st.ratio = static_cast<long>(std::floor(std::min(hc / st.fine_s, kMaxRatio) + 1e-9));
     st.ratio = std::max(1L, st.ratio);
   } else {  // the fine step divides the coarse one
@@ -78,18 +99,22 @@ SearsSteps sears_row_steps(const BuildingRow& row, double record_dt, const Sears
 }
 
 SearsRowSimulation simulate_sears_row(const BuildingRow& row, const RowGround& ground,
-                                      const SearsRowModel& model, const RowSimulationOptions& opt) {
+                                      const SearsRowModel& model, const RowSimulationOptions& opt,
+                                      const IntegratorSettings& integrator) {
+  // Without contacts: the lumped solver's free run (the floors' physics is the same).
+  const AssembledRow a = assemble(row);
+  RowProblem fp;
+  fp.row = &a;
+  opt.apply_to(fp, ground);
+  RowResult free = solve(fp, integrator);
   SearsRowProblem p;
   p.row = &row;
   opt.apply_to(p, ground);
-  p.contacts = false;
-  SearsRowResult free_run = solve_sears_row(p, model);
-  RowResult free = std::move(free_run.row);
+  p.integrator = integrator;
   p.contacts = true;
   SearsRowResult pounding = solve_sears_row(p, model);
   SearsRowSimulation out;
   out.coarse_dt_s = pounding.coarse_dt_s;
-  out.counts_free = free_run.counts;
   out.counts_pounding = pounding.counts;
   out.slabs = std::move(pounding.slabs);
   out.contacts = std::move(pounding.contacts);
@@ -100,9 +125,10 @@ SearsRowSimulation simulate_sears_row(const BuildingRow& row, const RowGround& g
 }
 
 SearsRowSimulation simulate_sears_row(const BuildingRow& row, const GroundMotion& motion,
-                                      const SearsRowModel& model, const RowSimulationOptions& opt) {
+                                      const SearsRowModel& model, const RowSimulationOptions& opt,
+                                      const IntegratorSettings& integrator) {
   return simulate_sears_row(row, RowGround::uniform(motion, static_cast<int>(row.buildings.size())),
-                            model, opt);
+                            model, opt, integrator);
 }
 
 }  // namespace pound::sears

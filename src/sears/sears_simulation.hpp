@@ -28,6 +28,7 @@
 #include "motion/ground_motion.hpp"
 #include "sears/slab_contact_law.hpp"
 #include "simulation/simulate_row.hpp"
+#include "solver/integrator_settings.hpp"
 #include "solver/row_result.hpp"
 #include "structure/building_row.hpp"
 
@@ -145,6 +146,9 @@ struct SearsRowProblem {
   /// Collapse (issue 23), as RowProblem::collapse_drift_ratio: a run with contacts stops at the
   /// first collapse, one without holds the building still [-]; infinite: no check.
   double collapse_drift_ratio = std::numeric_limits<double>::infinity();
+  /// The lumped solver's settings (tolerances, exact steps) for the stretches without contact
+  /// (SearsSteps::lumped) and for the run without contacts of simulate_sears_row.
+  IntegratorSettings integrator;
 };
 
 /// How a run was stepped.
@@ -161,6 +165,8 @@ struct SearsStepCounts {
   long storey_iterations = 0;     ///< extra passes for yielding storeys (inelastic buildings)
   long long_steps = 0;            ///< fine steps (counted in `fine`) longer than the fine step
   long long_step_rejections = 0;  ///< longer steps solved again shorter (force not smooth)
+  long lumped = 0;                ///< steps of h_L on the lumped solver (SearsSteps::lumped)
+  long lumped_stretches = 0;      ///< stretches of them (each from a state the Newmark steps left)
 };
 
 struct SearsRowResult {
@@ -186,6 +192,12 @@ struct SearsSteps {
   /// Event stepping: the longest step through contacts, in fine steps: at most `ratio` and the
   /// step rule's largest allowed step (sears/step_rule.hpp); 1 without longer steps [-].
   long longest = 1;
+  /// Event stepping: coarse steps per step of the lumped solver, whose exact and adaptive steps
+  /// carry the floors through stretches without contact (issue 30; docs/speed.md): its grid is
+  /// h_L = record spacing / ceil(record spacing / min(record spacing, T_min,b / 20)) (the lumped
+  /// solver's, row_run.cpp), and the coarse step divides it; 0: none (fixed stepping) [-].
+  long lumped = 0;
+  double lumped_s() const { return static_cast<double>(lumped) * coarse_s; }  ///< h_L [s]
 };
 /// `record_dt` the ground's sample spacing [s] (0: no ground motion).
 SearsSteps sears_row_steps(const BuildingRow& row, double record_dt, const SearsRowModel& model);
@@ -202,14 +214,18 @@ struct SearsRowSimulation {
   SearsStepCounts counts_free, counts_pounding;
 };
 
-/// With and without pounding (same step), and the response measures of physics.md section 4,
-/// on `ground` (one motion per building).
+/// With and without pounding, and the response measures of physics.md section 4, on `ground`
+/// (one motion per building). The run without pounding is the lumped solver's free run
+/// (solver/row_solver.hpp, with `integrator`): without contacts the floors' physics is the
+/// same, so its numbers are those of every lumped contact model (issue 30).
 SearsRowSimulation simulate_sears_row(const BuildingRow& row, const RowGround& ground,
                                       const SearsRowModel& model,
-                                      const RowSimulationOptions& opt = {});
+                                      const RowSimulationOptions& opt = {},
+                                      const IntegratorSettings& integrator = {});
 /// The same with one motion under every building.
 SearsRowSimulation simulate_sears_row(const BuildingRow& row, const GroundMotion& motion,
                                       const SearsRowModel& model,
-                                      const RowSimulationOptions& opt = {});
+                                      const RowSimulationOptions& opt = {},
+                                      const IntegratorSettings& integrator = {});
 
 }  // namespace pound::sears

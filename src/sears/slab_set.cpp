@@ -42,6 +42,17 @@ void SlabSet::step_free(int k) {
   pred_op_[k] = 0;
 }
 
+void SlabSet::step_free(int k, long count) {
+  if (dormant_[k]) {
+    dormant_steps_[k] += count;
+    counts_.dormant_slab_steps += count;
+    return;
+  }
+  banks_[k].advance_free(count, bank_out_[k]);
+  take(k);
+  pred_op_[k] = 0;
+}
+
 void SlabSet::fall_asleep(int k, double hc) {
   asleep_[k] = 1;
   slept_[k] = 0;

@@ -50,6 +50,9 @@ class SlabSet {
   void step(int k, const EndLoads& begin, const EndLoads& end, int op, int next_op);
   /// A free coarse step of slab k.
   void step_free(int k);
+  /// `count` free coarse steps of slab k at once (a stretch on the lumped solver's steps); a
+  /// dormant slab skips them.
+  void step_free(int k, long count);
 
   // --- Asleep (runs of fine steps) ---------------------------------------------------------
   bool asleep(int k) const { return asleep_[k]; }

@@ -132,6 +132,44 @@ void RowRun::start() {
   record(t_, y_, k1_);
 }
 
+void RowRun::resume(double t, const Eigen::VectorXd& u, const Eigen::VectorXd& v,
+                    const std::vector<StoreyState>& storeys, const double* energies) {
+  const StateLayout& at = dyn_.layout();
+  if (!resumed_) {
+    switches_.reset();
+    for (auto* w : {&y_, &y1_, &err_, &k1_, &k7_, &ytry_, &etry_, &ktry_}) w->setZero(at.size);
+    set_step_limits();
+    resumed_ = true;
+  }
+  t_ = t;
+  y_.setZero();
+  y_.head(n_) = u;
+  y_.segment(n_, n_) = v;
+  dyn_.set_ground_states(t_, y_);
+  for (int i = 0; i < n_; ++i) {
+    dyn_.storey[i] = storeys[i];
+    for (int k = 0; k < storeys_[i].law->continuous_states(); ++k)
+      y_(at.storey_offset[i] + k) = storeys[i].x[k];
+    if (!dyn_.linear()) storey_changed(i);
+  }
+  if (track_ && energies)
+    for (int k = 0; k < 3; ++k) y_(at.energies + k) = energies[k];
+  rhs(t_, y_, k1_);
+  // Storeys already beyond a kink switch (as at the start).
+  for (int j = 0; j < switches_.storey_switches(); ++j)
+    if (switch_at(ns_ + j, y_, k1_).value > 0.0) {
+      apply_event(ns_ + j, t_, y_);
+      rhs(t_, y_, k1_);
+    }
+}
+
+void RowRun::storey_states(std::vector<StoreyState>& out) const {
+  out.assign(dyn_.storey.begin(), dyn_.storey.end());
+  for (int i = 0; i < n_; ++i)
+    if (const double* x = dyn_.continuous_states(y_, i))
+      for (int k = 0; k < storeys_[i].law->continuous_states(); ++k) out[i].x[k] = x[k];
+}
+
 // No contact active, and every site open by more than kTouching: floors touching at rest (a zero
 // gap at t = 0) or just apart may close within a step by an amount the step's interpolant does
 // not resolve; Dormand-Prince's steps, from its small initial step on, do.
@@ -183,9 +221,9 @@ bool RowRun::exact_step() {
   return true;
 }
 
-// The next step ends at the next record sample, grid point or the end [s].
-double RowRun::next_stop() {
-  double t_stop = p_->t_end;
+// The next step ends at the next record sample, grid point or the end t_end [s].
+double RowRun::next_stop(double t_end) {
+  double t_stop = t_end;
   if (rec_dt_ > 0) {
     while (next_sample_ * rec_dt_ <= t_ * (1 + 1e-14) + 1e-15) ++next_sample_;
     t_stop = std::min(t_stop, next_sample_ * rec_dt_);
@@ -275,10 +313,15 @@ RowResult RowRun::run() {
 }
 
 RowResult RowRun::advance() {
-  const double t_end = p_->t_end;
+  advance_until(p_->t_end);
+  finish();
+  return rec_.result();
+}
+
+bool RowRun::advance_until(double t_end) {
   const bool events = switches_.any(dyn_);
   while (t_ < t_end * (1 - 1e-14)) {
-    if (rec_.take_new_collapses() > 0 && on_collapse()) break;
+    if (rec_.take_new_collapses() > 0 && on_collapse()) return true;
     exact_.begin_iteration();
     if (rec_.result().steps + rec_.result().rejected > s_.max_steps)
       throw NumericalError("more than " + std::to_string(s_.max_steps) +
@@ -288,7 +331,7 @@ RowResult RowRun::advance() {
       if (exact_step()) continue;
       exact_.decline();  // Dormand-Prince to the next grid point (rejections included)
     }
-    const double t_stop = next_stop();
+    const double t_stop = next_stop(t_end);
     double hs = fixed_ ? t_stop - t_ : std::min(h_, t_stop - t_);
     if (t_ + hs > t_stop * (1 - 1e-14)) hs = t_stop - t_;
     step(t_, hs, y_, k1_, y1_, err_, k7_);
@@ -319,7 +362,7 @@ RowResult RowRun::advance() {
       const Located l = locate(ev, theta, hs, en, trial_failed);
       if (l == Located::retry) continue;
       if (l == Located::applied) {
-        if (separated()) break;
+        if (separated()) return false;
         continue;
       }
       if (trial_failed) {  // false alarm on a rejected trial
@@ -329,8 +372,7 @@ RowResult RowRun::advance() {
     }
     accept(hs, en, t_stop);
   }
-  finish();
-  return rec_.result();
+  return false;  // collapses of the last step are left to the caller (take_new_collapses)
 }
 
 void RowRun::record(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& dy) {

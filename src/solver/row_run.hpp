@@ -29,6 +29,22 @@ class RowRun {
   RowRun(const RowRun& free, const RowProblem& pounding);
   RowResult run();      // from the initial state
   RowResult advance();  // from the current state to the end
+  // Steps from the current state to t_end [s] (no finish()); true when a collapse stopped the
+  // run (a run with contacts, or every building held).
+  bool advance_until(double t_end);
+  // Continues from a given state at time t [s] (FreeStretches, row_solver.hpp): floor
+  // displacements u [m] and velocities v [m/s], each storey's discrete state (and its
+  // continuous states in StoreyState::x), the energy balance so far (input, damping, contact
+  // [J]). The first call also prepares the run (work arrays, step limits).
+  void resume(double t, const Eigen::VectorXd& u, const Eigen::VectorXd& v,
+              const std::vector<StoreyState>& storeys, const double* energies);
+  double time() const { return t_; }
+  const Eigen::VectorXd& state() const { return y_; }        // y (row_dynamics.hpp)
+  const Eigen::VectorXd& derivative() const { return k1_; }  // dy at (time(), state())
+  const RowDynamics& dynamics() const { return dyn_; }
+  // Each storey's discrete state with its continuous states (from y) in x, into `out`.
+  void storey_states(std::vector<StoreyState>& out) const;
+  RunRecorder& recorder() { return rec_; }
   // A free run to fork into `pounding` at the start of the first step in which a site comes
   // within kForkMargin of touching (before run()).
   void fork_into(const RowProblem* pounding) { fork_to_ = pounding; }
@@ -77,7 +93,7 @@ class RowRun {
   void set_step_limits();
   bool exact_step();
   bool contacts_open() const;
-  double next_stop();
+  double next_stop(double t_end);
   void accept(double hs, double en, double t_stop);
   bool separated() const;
   // After collapses: a run with contacts stops (true); a run without holds each collapsed
@@ -126,6 +142,7 @@ class RowRun {
   double t_ = 0.0, h_ = 0.0, h_max_ = 0.0, rec_dt_ = 0.0;
   long grid_ = 0, next_sample_ = 1;
   bool any_contact_ = false;
+  bool resumed_ = false;                   // resume() prepared the run
   std::vector<double> step_a0_, step_a1_;  // each channel's ag at an exact step's ends [m/s^2]
   Eigen::VectorXd y_, y1_, err_, k1_, k7_, ytry_, etry_, ktry_;
 };

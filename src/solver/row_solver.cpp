@@ -1,5 +1,8 @@
 #include "solver/row_solver.hpp"
 
+#include <stdexcept>
+#include <utility>
+
 #include "solver/row_run.hpp"
 
 namespace pound {
@@ -34,6 +37,52 @@ RunPair solve_free_and_pounding(const RowProblem& p, const IntegratorSettings& s
     out.pounding = RowRun(pounding, s).run();
   }
   return out;
+}
+
+FreeStretches::FreeStretches(const RowProblem& p, const IntegratorSettings& s)
+    : run_(std::make_unique<RowRun>(p, s)) {
+  if (!p.laws.empty()) throw std::logic_error("FreeStretches: a problem without contact laws");
+}
+
+FreeStretches::~FreeStretches() = default;
+
+void FreeStretches::resume(double t, const Eigen::VectorXd& u, const Eigen::VectorXd& v,
+                           const std::vector<StoreyState>& storeys, const double* energies) {
+  run_->resume(t, u, v, storeys, energies);
+}
+
+bool FreeStretches::advance_to(double t_stop, RunRecorder& rec) {
+  std::swap(rec, run_->recorder());
+  bool stopped = false;
+  try {
+    stopped = run_->advance_until(t_stop);
+  } catch (...) {
+    std::swap(rec, run_->recorder());
+    throw;
+  }
+  std::swap(rec, run_->recorder());
+  return stopped;
+}
+
+double FreeStretches::time() const {
+  return run_->time();
+}
+
+void FreeStretches::state(Eigen::VectorXd& u, Eigen::VectorXd& v, Eigen::VectorXd& acc) const {
+  const int n = run_->dynamics().layout().dofs;
+  u = run_->state().head(n);
+  v = run_->state().segment(n, n);
+  acc = run_->derivative().segment(n, n);
+}
+
+void FreeStretches::storeys(std::vector<StoreyState>& out) const {
+  run_->storey_states(out);
+}
+
+void FreeStretches::energies(double* e) const {
+  const StateLayout& at = run_->dynamics().layout();
+  const bool tracked = at.ground > at.energies;  // the energies are states of y
+  for (int k = 0; k < 3; ++k) e[k] = tracked ? run_->state()(at.energies + k) : 0.0;
 }
 
 }  // namespace pound

@@ -10,6 +10,7 @@
 // printing.
 #include <Eigen/Dense>
 #include <limits>
+#include <memory>
 #include <vector>
 
 #include "contact/contact_law.hpp"
@@ -17,6 +18,7 @@
 #include "solver/exact_steps.hpp"
 #include "solver/integrator_settings.hpp"
 #include "solver/row_result.hpp"
+#include "solver/run_recorder.hpp"
 #include "structure/building_row.hpp"
 
 namespace pound {
@@ -63,5 +65,45 @@ struct RunPair {
 /// The propagators of exact steps are shared (p.exact_cache, or one of the call's own). Throws
 /// as solve().
 RunPair solve_free_and_pounding(const RowProblem& p, const IntegratorSettings& s);
+
+namespace detail {
+class RowRun;
+}
+
+/// The stretches of a run without contact forces that a damped Sears run takes between its
+/// contacts (issue 30, docs/speed.md): the lumped solver's exact and adaptive steps (every
+/// storey law, P-Delta, tangent damping, collapse), from a state the caller gives to a time it
+/// gives, so that the floors between contacts cost what they cost in a lumped run.
+class FreeStretches {
+ public:
+  /// `p` without contact laws (p.laws empty); `s` the lumped integrator's settings. Both are
+  /// kept by reference: they must outlive this object.
+  FreeStretches(const RowProblem& p, const IntegratorSettings& s);
+  ~FreeStretches();
+  FreeStretches(const FreeStretches&) = delete;
+  FreeStretches& operator=(const FreeStretches&) = delete;
+
+  /// Continues from time t [s] with floor displacements u [m] and velocities v [m/s], each
+  /// storey's state (continuous states in StoreyState::x), and the energy balance so far
+  /// (input, damping, contact [J]; read when p.track_energy).
+  void resume(double t, const Eigen::VectorXd& u, const Eigen::VectorXd& v,
+              const std::vector<StoreyState>& storeys, const double* energies);
+  /// Steps to t_stop [s], recording into `rec` (the caller's run: its peaks, histories,
+  /// collapse policy). True when a collapse stopped it; collapses of the last step are left in
+  /// `rec` (RunRecorder::take_new_collapses).
+  bool advance_to(double t_stop, RunRecorder& rec);
+
+  double time() const;
+  /// The state reached, into the caller's arrays (sized already: no allocation): displacements
+  /// [m], velocities [m/s], relative accelerations [m/s^2], and each storey's state with its
+  /// continuous states in x.
+  void state(Eigen::VectorXd& u, Eigen::VectorXd& v, Eigen::VectorXd& acc) const;
+  void storeys(std::vector<StoreyState>& out) const;
+  /// The energy balance so far: input, damping, contact [J] (p.track_energy).
+  void energies(double* e) const;
+
+ private:
+  std::unique_ptr<detail::RowRun> run_;
+};
 
 }  // namespace pound

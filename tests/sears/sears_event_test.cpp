@@ -301,8 +301,11 @@ TEST(SearsEvent, LongerStepsThroughSmoothContactForcesKeepTheFineStepsAccuracy) 
   EXPECT_LT(e_fine[4], 1e-3);
   EXPECT_GT(loose_fine[4], 5e-3);
   EXPECT_LT(d_e[4], 0.02);
-  // Slab centres, sampled at the step ends: 0.08 % (fine path) and 0.33 % from the 10 us path.
-  EXPECT_LT(d_e[5], 5e-3);
+  // Slab centres, sampled at the step ends: 0.08 % (fine path) and 0.52 % from the 10 us path
+  // (0.33 % before the stretches without contact went on the lumped solver's steps of h_L,
+  // issue 30, at whose ends the slabs' free vibration is now sampled; the issue's bound for
+  // accelerations is 3 %).
+  EXPECT_LT(d_e[5], 1e-2);
   for (std::size_t k = 0; k < e.contacts.size(); ++k) {
     EXPECT_EQ(e.contacts[k].phases.size(), fine.contacts[k].phases.size()) << k;
     EXPECT_EQ(e.contacts[k].impacts, ref.contacts[k].impacts) << k;
@@ -472,13 +475,13 @@ TEST(SearsEvent, TimeLoopDoesNotAllocate) {
     p.t_end = s.motion.duration();
     test::CountAllocations c;
     const SearsRowResult r = solve_sears_row(p, s.model);
-    steps = r.counts.fine + r.counts.coarse;
+    steps = r.row.steps;  // fine, coarse and the lumped stretches' steps
     return c.count();
   };
   long steps2 = 0, steps8 = 0;
   const long a2 = count(s2, steps2), a8 = count(s8, steps8);
-  ASSERT_GT(steps8 - steps2, 20000);
-  EXPECT_GT(a2, 0);  // the counter works: set-up allocates
+  ASSERT_GT(steps8 - steps2, 15000);  // 19.7k (the lumped stretches take 3.3 ms steps)
+  EXPECT_GT(a2, 0);                   // the counter works: set-up allocates
   EXPECT_LT(a8 - a2, (steps8 - steps2) / 1000) << a2 << " vs " << a8 << " allocations";
 }
 

@@ -95,9 +95,12 @@ TEST(SearsYielding, VeryLargeYieldShearGivesTheElasticResponse) {
     const SearsRowSimulation r = simulate_sears_row(s.row, s.motion, s.model);
     for (std::size_t i = 0; i < r.base.floors.size(); ++i) {
       const FloorResponse &x = r.base.floors[i], &y = ref.base.floors[i];
-      EXPECT_NEAR(x.disp_pounding, y.disp_pounding, 1e-8 * y.disp_pounding) << law << i;
-      EXPECT_NEAR(x.drift_ratio_free, y.drift_ratio_free, 1e-8 * y.drift_ratio_free) << law << i;
-      EXPECT_NEAR(x.accel_pounding, y.accel_pounding, 1e-8 * y.accel_pounding) << law << i;
+      // Between contacts the floors go on the lumped solver (issue 30), by exact steps for the
+      // elastic and bilinear storeys and by Dormand-Prince (rtol 1e-8) for Bouc-Wen's
+      // continuous state: 1e-7 measured.
+      EXPECT_NEAR(x.disp_pounding, y.disp_pounding, 1e-6 * y.disp_pounding) << law << i;
+      EXPECT_NEAR(x.drift_ratio_free, y.drift_ratio_free, 1e-6 * y.drift_ratio_free) << law << i;
+      EXPECT_NEAR(x.accel_pounding, y.accel_pounding, 1e-6 * y.accel_pounding) << law << i;
       EXPECT_LT(x.hysteretic_energy_pounding, 1e-6) << law << i;
     }
     for (std::size_t k = 0; k < r.base.sites.size(); ++k) {
