@@ -138,23 +138,26 @@ const std::vector<std::string> kSolvers = {"hc-linear", "sears"};
 // Positions 0 and 40 m at 400 m/s: building 2's motion arrives 0.1 s = 5 samples later. The
 // same record delayed by ground/wave_passage.hpp's delayed() and given as building 2's file
 // (v = inf) gives every number bit for bit; so does a fractional delay (40 m at 300 m/s:
-// 6.67 samples, the band-limited shift), in both solvers.
+// 6.67 samples, the band-limited shift), in both solvers, and a wave from the right (v =
+// -400 m/s: building 1's motion 0.1 s later, as its file).
 TEST(GroundStudy, WavePassageByKeysIsTheDelayedRecordAsAFile) {
   const std::string path = study(0.002);
-  for (double v : {400.0, 300.0}) {
-    const GroundMotion late = delayed(reference(), 40.0 / v);
-    EXPECT_EQ(late.accel.size(), reference().accel.size() + (v == 400.0 ? 5u : 7u));
+  for (double v : {400.0, 300.0, -400.0}) {
+    const GroundMotion late = delayed(reference(), 40.0 / std::fabs(v));
+    EXPECT_EQ(late.accel.size(), reference().accel.size() + (v == 300.0 ? 7u : 5u));
     const std::string file = write_record(late, "late-" + std::to_string(int(v)) + ".txt");
+    const int b = v > 0 ? 1 : 0;  // the later building (0-based)
+    const std::string own = "--building" + std::to_string(b + 1) + ".motion_file";
     for (const auto& model : kSolvers) {
       SCOPED_TRACE(model + ", v = " + std::to_string(v));
       const SimulationRun keys = simulate(
           path, {"--contact.model", model, "--building1.position", "0", "--building2.position",
                  "40", "--ground.apparent_velocity", std::to_string(v)});
-      const SimulationRun files =
-          simulate(path, {"--contact.model", model, "--building2.motion_file", file});
+      const SimulationRun files = simulate(path, {"--contact.model", model, own, file});
       ASSERT_EQ(keys.arrival_delays.size(), 2u);
-      EXPECT_EQ(keys.arrival_delays[1], 40.0 / v);
-      EXPECT_EQ(files.arrival_delays[1], 0.0);
+      EXPECT_EQ(keys.arrival_delays[b], 40.0 / std::fabs(v));
+      EXPECT_EQ(keys.arrival_delays[1 - b], 0.0);
+      EXPECT_EQ(files.arrival_delays[b], 0.0);
       int impacts = 0;
       for (const auto& s : keys.sim.sites) impacts += s.impacts;
       EXPECT_GT(impacts, 0);
