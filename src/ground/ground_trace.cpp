@@ -1,5 +1,6 @@
 #include "ground/ground_trace.hpp"
 
+#include <algorithm>
 #include <utility>
 
 #include "motion/motion_processing.hpp"
@@ -39,7 +40,8 @@ void GroundTrace::kinematics(double t, double& v, double& u) const {
     u = u_[n - 1] + v_[n - 1] * (t - last);
     return;
   }
-  const auto i = static_cast<std::size_t>(t / dt);
+  // t / dt rounds to n - 1 for some t just below the last sample: stay on the last interval.
+  const auto i = std::min(static_cast<std::size_t>(t / dt), n - 2);
   const double s = t - dt * double(i);
   const double a0 = motion_.accel[i], da = motion_.accel[i + 1] - a0;
   v = v_[i] + s * (a0 + da * s / (2.0 * dt));

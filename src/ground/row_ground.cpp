@@ -59,6 +59,16 @@ double RowGround::peak_relative_displacement(int a, int b, double t_end) const {
   const GroundTrace &ta = traces_[ca], &tb = traces_[cb];
   const double dt = ta.dt();
   auto diff = [&](double t) { return std::fabs(ta.disp(t) - tb.disp(t)); };
+  // A trace's acceleration at the start and end of sample interval i [m/s^2].
+  auto on_interval = [](const GroundTrace& g, long i, double& a0, double& a1) {
+    const std::vector<double>& acc = g.motion().accel;
+    const auto k = static_cast<std::size_t>(i);
+    a0 = a1 = 0.0;
+    if (k + 1 < acc.size()) {
+      a0 = acc[k];
+      a1 = acc[k + 1];
+    }
+  };
   double peak = 0.0;
   const double last = std::min(t_end, std::max(ta.duration(), tb.duration()));
   const auto intervals = static_cast<long>(std::ceil(last / dt - 1e-9));
@@ -68,9 +78,14 @@ double RowGround::peak_relative_displacement(int a, int b, double t_end) const {
     // The rate of the difference over the interval is quadratic in s = t - t0:
     // r(s) = dv0 + da0 s + (da1 - da0) s^2 / (2 dt), dv the velocity and da the acceleration
     // differences at the interval's ends (ground_trace.hpp).
+    // The accelerations on the interval: linear between its samples, 0 from a record's last
+    // sample on (GroundMotion::at gives a_last at that sample itself, not 0 after it).
+    double a0a, a1a, a0b, a1b;
+    on_interval(ta, i, a0a, a1a);
+    on_interval(tb, i, a0b, a1b);
     const double dv0 = ta.vel(t0) - tb.vel(t0);
-    const double da0 = ta.acc(t0) - tb.acc(t0);
-    const double da1 = ta.acc(t0 + dt) - tb.acc(t0 + dt);
+    const double da0 = a0a - a0b;
+    const double da1 = a1a - a1b;
     const double A = (da1 - da0) / (2.0 * dt), B = da0, C = dv0;
     double roots[2];
     int nr = 0;

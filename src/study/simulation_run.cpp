@@ -26,13 +26,17 @@ namespace {
 
 // The given keys that the chosen model does not read, as "where" texts: the damped Sears
 // model ignores the lumped contact law and its integrator keys, a lumped model the sears keys.
-// A value meant for the other model must not pass for one that was used.
-std::vector<std::string> keys_unused_by_model(const Options& opt, bool is_sears) {
+// A value meant for the other model must not pass for one that was used. `slab_lengths_used`:
+// the ground's positions (wave passage, coherency) read [buildingN] slab_length under any model
+// (study/ground_options.hpp: side by side by default, and no overlap).
+std::vector<std::string> keys_unused_by_model(const Options& opt, bool is_sears,
+                                              bool slab_lengths_used) {
   const auto sears_specs = sears_row_option_specs();
   std::vector<std::string> unused;
   for (const auto& key : opt.given_keys()) {
     bool sears_only = false;
     for (const auto& s : sears_specs) sears_only = sears_only || Options::matches(s.key, key);
+    if (slab_lengths_used && Options::matches("building#.slab_length", key)) sears_only = false;
     const bool lumped_only = (key.rfind("contact.", 0) == 0 && key != "contact.model") ||
                              key.rfind("integrator.", 0) == 0;
     if (is_sears ? lumped_only : sears_only) unused.push_back(opt.where(key));
@@ -98,7 +102,7 @@ SimulationSetup prepare_simulation(const Options& opt, const RecordValues* recor
       throw opt.invalid(dt_key, e.what());
     }
   }
-  s.unused_keys = keys_unused_by_model(opt, s.is_sears);
+  s.unused_keys = keys_unused_by_model(opt, s.is_sears, s.ground_spec.positions_matter());
   return s;
 }
 
