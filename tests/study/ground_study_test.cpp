@@ -229,7 +229,10 @@ TEST(GroundStudy, EnergyBalanceClosesOnDifferentGrounds) {
        "300"},
       {"--building2.motion_file", other_file}};
   for (const auto& model : kSolvers) {
-    const double bound = model == "sears" ? 1e-9 : 1e-6;
+    // Both at the lumped integrator's error (rtol 1e-8): the Sears run's free run and its
+    // stretches without contact go on the lumped solver since issue 30 (4.4e-9 measured; the
+    // Newmark steps alone balance to round-off).
+    const double bound = 1e-6;
     double worst = 0.0;
     for (std::size_t g = 0; g < grounds.size(); ++g) {
       SCOPED_TRACE(model + ", ground " + std::to_string(g));
