@@ -9,7 +9,10 @@
 # Prints "ARRAYJOBID MERGEJOBID" on stdout. Each chunk job exits with pound campaign's status
 # (0 complete, also when some samples failed: pound campaign's 4, logged; 75 stopped early with
 # its journal kept, else an error); the merge runs only when every chunk exited 0 (afterok),
-# otherwise Slurm cancels it.
+# otherwise Slurm cancels it. A chunk whose part another campaign is writing (an earlier
+# submission still running) tries again (POUND_LOCK_TRIES, POUND_LOCK_SLEEP: see
+# campaign-array.sbatch) and exits 0 once it finds the part complete, so that the merge reads
+# only finished parts.
 # Running the same command again after some chunks stopped early (time limit) or failed
 # resumes them: finished chunks end at once (exit 0), the others continue from their journals,
 # and a new merge job follows.
@@ -22,7 +25,7 @@ if [[ " $* " == *" -- "* ]]; then
   shift
 fi
 if [[ $# -lt 3 ]]; then
-  sed -n '2,14p' "$0" >&2
+  sed -n '2,18p' "$0" >&2
   exit 2
 fi
 chunks=$1

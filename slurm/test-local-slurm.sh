@@ -16,7 +16,12 @@
 #      `scancel --signal=USR1 --batch`; a third submission completes it; the final file has
 #      every sample exactly once and equals the reference (/samples, /response);
 #   3. submit-array.sh splits the campaign over a 2-task job array and merges the parts;
-#      the merged file equals the reference.
+#      the merged file equals the reference;
+#   4. a job on a file that another job is writing (the same campaign submitted twice) finds it
+#      in use: pound campaign exits 75 at once, changing nothing, and the script tries again
+#      (POUND_LOCK_SLEEP=2) until the first job has ended, then finds the file complete and
+#      exits 0; once campaign-mpirun.sbatch against campaign.sbatch, once an array chunk
+#      submitted twice; both files equal a run of the same samples without Slurm.
 # Exits 0 only when every check holds. Stops every daemon it started (by the process ids it
 # recorded) and removes the temporary folder, also when a check fails (POUND_SLURM_KEEP=1
 # keeps the folder for inspection).
@@ -222,7 +227,7 @@ wait_job() {
   done
 }
 excerpt() {  # the scripts' own lines and the campaign's summary lines of a job output
-  grep -E 'pound-slurm\[|campaign: (done|interrupted|stop requested|.*already complete)|pound_parts:|CANCELLED' "$1" \
+  grep -E 'pound-slurm\[|campaign: (done|interrupted|stop requested|stopped: another|.*already complete)|pound_parts:|CANCELLED' "$1" \
     | sed 's/^/    | /' || true
 }
 show_log() { echo "----- $1"; cat "$1" 2>/dev/null || echo "(missing)"; echo "-----"; }
@@ -285,14 +290,14 @@ ok "job $b stopped on Slurm's SIGUSR1 before its time limit: $(grep -o 'interrup
 c=$(submit --nodes=1 --ntasks-per-node=2 --time=10 -o "$J/cut-2.out" \
   slurm/campaign-mpirun.sbatch "$study" "$cut" --samples "$samples")
 say "job $c: campaign-mpirun.sbatch, resubmitted; stopped with scancel --signal=USR1 --batch once it runs"
-# Wait until the campaign reports that it has started (rank 0 creates $cut.started when every
-# rank runs with its stop handlers), however long the machine takes to start it.
+# Wait until the campaign reports that it has started (rank 0 creates $cut.started.JOBID when
+# every rank runs with its stop handlers), however long the machine takes to start it.
 for _ in $(seq 1500); do
-  [[ -e "$cut.started" ]] && break
+  [[ -e "$cut.started.$c" ]] && break
   [[ -z "$(squeue -h -j "$c" -o %i)" ]] && break
   sleep 0.2
 done
-[[ -e "$cut.started" ]] || { show_log "$J/cut-2.out"; die "job $c: the campaign did not report its start within 300 s"; }
+[[ -e "$cut.started.$c" ]] || { show_log "$J/cut-2.out"; die "job $c: the campaign did not report its start within 300 s"; }
 scancel --signal=USR1 --batch "$c"
 wait_job "$c" 200
 expect_job "$c" FAILED 75:0 "$J/cut-2.out"
@@ -347,5 +352,68 @@ ok "merge job $mrg completed"
 "$PY" "$parts_py" check "$merged" || die "merged file: sample ids"
 "$PY" "$parts_py" compare "$merged" "$ref" || die "the merged file differs from the single run"
 ok "merged file equals the single run (/samples, /response)"
+
+# ---------------------------------------------------------------- 4. a file in use: 75, retried
+# Two jobs on the same file at once, one rank each (the node has two cores): the second meets
+# the file in use, pound campaign exits 75 before it starts, and the script tries again every
+# 2 s until the first job has written the file, which the second then finds complete.
+# wait_started PATTERN JOB LOG: waits until a file matches PATTERN (the job's campaign has
+# started: RUN.h5.started.JOBID).
+wait_started() {
+  for _ in $(seq 1500); do
+    compgen -G "$1" >/dev/null && return 0
+    [[ -z "$(squeue -h -j "$2" -o %i)" ]] && break
+    sleep 0.2
+  done
+  show_log "$3"
+  die "job $2: the campaign did not report its start within 300 s"
+}
+# expect_retried ID LOG FILE: the job met FILE in use (exit 75), tried again and found it complete.
+expect_retried() {
+  grep -q "campaign: stopped: another campaign is writing $3 (pid" "$2" \
+    && grep -q "exit status 75 before the start, try 1 of 100); trying again in 2 s" "$2" \
+    && grep -q "$3 is already complete" "$2" \
+    || { show_log "$2"; die "job $1 did not meet $3 in use, try again and find it complete"; }
+}
+busy_samples=$(( samples / 6 ))  # about 20 s on one rank
+busy_ref=$J/busy-ref.h5
+"$POUND" campaign --config "$study" --out "$busy_ref" --samples "$busy_samples" --quiet 2>/dev/null &
+ref_pid=$!
+
+in_use=$J/in-use.h5
+e=$(submit --nodes=1 --ntasks-per-node=1 --time=10 -o "$J/in-use-1.out" \
+  slurm/campaign.sbatch "$study" "$in_use" --samples "$busy_samples")
+wait_started "$in_use.started.*" "$e" "$J/in-use-1.out"
+f=$(POUND_LOCK_TRIES=100 POUND_LOCK_SLEEP=2 submit --nodes=1 --ntasks-per-node=1 --time=10 \
+  -o "$J/in-use-2.out" slurm/campaign-mpirun.sbatch "$study" "$in_use" --samples "$busy_samples")
+say "job $f: campaign-mpirun.sbatch on $in_use while job $e (campaign.sbatch, $busy_samples samples, 1 rank) writes it"
+wait_job "$e" 400
+wait_job "$f" 400
+expect_job "$e" COMPLETED 0:0 "$J/in-use-1.out"
+expect_job "$f" COMPLETED 0:0 "$J/in-use-2.out"
+excerpt "$J/in-use-2.out"
+expect_retried "$f" "$J/in-use-2.out" "$in_use"
+ok "job $f met $in_use in use by job $e: pound campaign exited 75 $(grep -c 'trying again in' "$J/in-use-2.out") time(s), the script tried again and found the file complete (JobState=COMPLETED ExitCode=0:0)"
+
+chunks_out=$J/in-use-array.h5
+part=$chunks_out.parts/part-0000-of-0001.h5
+g=$(submit --array=0 --ntasks=1 --time=10 -o "$J/in-use-chunk-1.out" \
+  slurm/campaign-array.sbatch 1 "$study" "$chunks_out" --samples "$busy_samples")
+wait_started "$part.started.*" "$g" "$J/in-use-chunk-1.out"
+h=$(POUND_LOCK_TRIES=100 POUND_LOCK_SLEEP=2 submit --array=0 --ntasks=1 --time=10 \
+  -o "$J/in-use-chunk-2.out" slurm/campaign-array.sbatch 1 "$study" "$chunks_out" --samples "$busy_samples")
+say "array job $h: chunk 0 of 1 again while array job $g writes its part"
+wait_job "$g" 400
+wait_job "$h" 400
+expect_job "${g}_0" COMPLETED 0:0 "$J/in-use-chunk-1.out"
+expect_job "${h}_0" COMPLETED 0:0 "$J/in-use-chunk-2.out"
+excerpt "$J/in-use-chunk-2.out"
+expect_retried "${h}_0" "$J/in-use-chunk-2.out" "$part"
+ok "array job $h met its part in use by array job $g: exit 75 $(grep -c 'trying again in' "$J/in-use-chunk-2.out") time(s), tried again, found the part complete"
+
+wait "$ref_pid" || die "the run of $busy_samples samples without Slurm failed"
+"$PY" "$parts_py" compare "$in_use" "$busy_ref" || die "$in_use differs from the same run without Slurm"
+"$PY" "$parts_py" compare "$part" "$busy_ref" || die "$part differs from the same run without Slurm"
+ok "both files written while a second job waited equal the run without Slurm (/samples, /response)"
 
 say "$checks checks hold"

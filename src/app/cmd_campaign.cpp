@@ -3,16 +3,19 @@
 #include <sys/stat.h>
 #include <sysexits.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
 #include "app/commands.hpp"
 #include "campaign/campaign_study.hpp"
 #include "campaign/mpi_campaign.hpp"
+#include "campaign/output_lock.hpp"
 #include "io/options.hpp"
 
 namespace pound::app {
@@ -24,14 +27,19 @@ enum CampaignExit : int {
   kFinished = 0,           ///< RUN.h5 complete (or already complete), every sample ok
   kBadInput = 2,           ///< bad input, or a file that cannot be written for another reason
   kFailedSamples = 4,      ///< RUN.h5 complete, some samples failed (their messages are in it)
-  kStopped = EX_TEMPFAIL,  ///< 75: stopped early (signal, full disk), journal kept: resume
+  kStopped = EX_TEMPFAIL,  ///< 75: stopped early (signal, full disk), journal kept: resume;
+                           ///< or another campaign writes the same output: nothing changed
 };
+/// Not an exit status: claim_output() found the output free and ready, the run goes on.
+constexpr int kRun = -1;
 
 const char* const kExitStatusHelp =
     "\nExit status: 0 finished (RUN.h5 complete, or already complete); 2 bad input, or a file\n"
     "that cannot be written (read-only, no permission: the journal is kept); 4 finished with\n"
     "failed samples (their messages are in RUN.h5); 75 (EX_TEMPFAIL) stopped early by\n"
     "SIGTERM, SIGUSR1, SIGINT or a full disk, the journal kept: run again with --resume.\n"
+    "75 also when another campaign is writing the same RUN.h5 (it holds RUN.h5.lock):\n"
+    "nothing was changed; run again once it has ended, or wait for it with --wait-lock.\n"
     "Under mpirun the status is mpirun's: it passes 75 on when the ranks are signalled, or\n"
     "when mpirun gets SIGUSR1 (which it forwards); Ctrl-C or SIGTERM to mpirun itself stops\n"
     "the ranks the same way, journal kept, but mpirun then exits 1.\n";
@@ -129,6 +137,9 @@ std::vector<OptionSpec> campaign_command_specs() {
   specs.push_back({"started-file", "", "",
                    "FILE that rank 0 creates once every rank runs and honours stop signals (job "
                    "scripts wait for it before passing a signal on)"});
+  specs.push_back({"wait-lock", "s", "0",
+                   "while another campaign writes the same --out (holds OUT.lock), wait up to "
+                   "this long for it to end instead of stopping at once (exit status 75)"});
   return specs;
 }
 
@@ -162,7 +173,63 @@ CampaignStudy read_study(const Options& opt) {
   if (opt.given("seed") && seed < 0) throw opt.invalid("seed", "valid: >= 0");
   CampaignStudy study = campaign_from_options(opt, samples, seed);
   read_sample_range(opt, study);
+  opt.get_nonnegative("wait-lock");  // checked on every rank, as the other run options
   return study;
+}
+
+// Rank 0, before anything about the output is looked at or changed: takes the output's lock,
+// held in `lock` for the whole run (output_lock.hpp), then checks the output (check_output).
+// Prints what ends the run here and returns its exit status, or kRun.
+int claim_output(const Options& opt, const std::string& out, OutputLock& lock) {
+  const double wait = opt.get_double("wait-lock");
+  bool told = false;
+  const auto got = lock.acquire(out, wait, [&](const LockHolder& holder) {
+    if (!told)
+      std::fprintf(stderr, "campaign: another campaign is writing %s (%s); waiting up to %g s\n",
+                   out.c_str(), holder.text().c_str(), wait);
+    told = true;
+    return !stop_requested();  // SIGTERM, SIGUSR1, SIGINT end the wait
+  });
+  if (got == OutputLock::Outcome::busy) {
+    if (stop_requested())
+      std::fprintf(stderr,
+                   "campaign: stopped by a signal while waiting for another campaign writing %s "
+                   "to end; nothing was changed\n",
+                   out.c_str());
+    else
+      std::fprintf(stderr, "%s\n", busy_output_message(out, lock, wait).c_str());
+    return kStopped;
+  }
+  if (got == OutputLock::Outcome::unsupported)
+    std::fprintf(stderr,
+                 "campaign: warning: %s: cannot lock it (%s): this file system has no locks, so "
+                 "make sure that no other campaign writes %s\n",
+                 lock.path().c_str(), lock.reason().c_str(), out.c_str());
+  bool complete = false;
+  const std::string error = check_output(out, opt.flag("resume"), opt.flag("force"), &complete);
+  if (!error.empty()) {
+    std::cerr << "pound campaign: error: " << error << "\n";
+    return kBadInput;
+  }
+  if (complete) {
+    std::cerr << "campaign: " << out << " is already complete\n";
+    return kFinished;
+  }
+  return kRun;
+}
+
+// Rank 0's `decision` on every rank. The others wait for it without spinning (rank 0 may wait
+// minutes for the lock, --wait-lock): a non-blocking broadcast, tested every 10 ms.
+int share_decision(int decision) {
+  MPI_Request request;
+  MPI_Ibcast(&decision, 1, MPI_INT, 0, MPI_COMM_WORLD, &request);
+  int done = 0;
+  MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+  while (!done) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+  }
+  return decision;
 }
 
 // Rank 0, before the run: the sample count, ranks, seed, range and the resolved study.
@@ -251,15 +318,13 @@ int run_campaign(int argc, const char* const* argv) {
     return help ? kFinished : kBadInput;
   }
   const std::string out = opt.get_string("out");
-  bool complete = false;
-  if (rank == 0) error = check_output(out, opt.flag("resume"), opt.flag("force"), &complete);
-  int state[2] = {error.empty() ? 0 : 1, complete ? 1 : 0};
-  MPI_Bcast(state, 2, MPI_INT, 0, MPI_COMM_WORLD);
-  if (state[0] || state[1]) {
-    if (rank == 0 && state[0]) std::cerr << "pound campaign: error: " << error << "\n";
-    if (rank == 0 && state[1]) std::cerr << "campaign: " << out << " is already complete\n";
+  // Rank 0 decides; every rank ends here when the output is taken, in error or complete. The
+  // lock is held until this function returns: after the result file and the journal's removal.
+  OutputLock lock;
+  const int decision = share_decision(rank == 0 ? claim_output(opt, out, lock) : kRun);
+  if (decision != kRun) {
     MPI_Finalize();
-    return state[0] ? kBadInput : kFinished;
+    return decision;
   }
   if (rank == 0) echo_start(study, opt, size);
   if (rank == 0 && opt.given("started-file")) announce_start(opt.get_string("started-file"));

@@ -277,8 +277,8 @@ CampaignStudy campaign_from_options(const Options& opt, long samples_override, l
   // The study as resolved; run-control options (output, resume, ...) are not part of it, the
   // sample count and seed are stored on their own.
   st.resolved =
-      opt.resolved_text({"out", "resume", "force", "quiet", "started-file", "samples", "seed",
-                         "sample-range", "chunk", "campaign.samples", "campaign.seed"});
+      opt.resolved_text({"out", "resume", "force", "quiet", "started-file", "wait-lock", "samples",
+                         "seed", "sample-range", "chunk", "campaign.samples", "campaign.seed"});
   return st;
 }
 

@@ -43,6 +43,7 @@ int sh(const std::string& cmd) {
 
 using pound::test::expect_same_numbers;
 using pound::test::read_raw;
+using pound::test::session_members;
 
 // The "units" attribute of a dataset ("" when absent).
 std::string units_of(const std::string& file, const std::string& path) {
@@ -188,26 +189,6 @@ TEST(CampaignRun, BatchedOutcomesGiveTheSameNumbersOnThreeRanks) {
   ASSERT_EQ(sh("mpirun -np 3 --oversubscribe " + pound(n + " --campaign.batch 5 --out " + three)),
             0);
   expect_same_numbers(one, three);
-}
-
-// The processes of session `sid` (a job started with setsid: mpirun and its ranks, which
-// Open MPI puts into process groups of their own).
-std::vector<pid_t> session_members(pid_t sid) {
-  std::vector<pid_t> out;
-  for (const auto& e : fs::directory_iterator("/proc")) {
-    const std::string name = e.path().filename();
-    if (name.find_first_not_of("0123456789") != std::string::npos) continue;
-    std::ifstream in(e.path() / "stat");
-    std::string stat((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    const std::size_t close = stat.rfind(')');
-    if (close == std::string::npos) continue;
-    std::istringstream rest(stat.substr(close + 1));
-    std::string state;
-    long ppid = 0, pgrp = 0, session = 0;
-    rest >> state >> ppid >> pgrp >> session;
-    if (session == sid) out.push_back(static_cast<pid_t>(std::stol(name)));
-  }
-  return out;
 }
 
 TEST(CampaignRun, KilledBatchedRunOnThreeRanksResumesToTheUninterruptedFile) {

@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -66,6 +67,26 @@ inline int run_shell(const std::string& cmd, const std::string& log) {
 /// The exit status of a run_shell() status, -1 when a signal ended it.
 inline int exit_code(int status) {
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+/// The processes of session `sid` (a job started with setsid: mpirun and its ranks, which
+/// Open MPI puts into process groups of their own).
+inline std::vector<pid_t> session_members(pid_t sid) {
+  std::vector<pid_t> out;
+  for (const auto& e : std::filesystem::directory_iterator("/proc")) {
+    const std::string name = e.path().filename();
+    if (name.find_first_not_of("0123456789") != std::string::npos) continue;
+    std::ifstream in(e.path() / "stat");
+    std::string stat((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::size_t close = stat.rfind(')');
+    if (close == std::string::npos) continue;
+    std::istringstream rest(stat.substr(close + 1));
+    std::string state;
+    long ppid = 0, pgrp = 0, session = 0;
+    rest >> state >> ppid >> pgrp >> session;
+    if (session == sid) out.push_back(static_cast<pid_t>(std::stol(name)));
+  }
+  return out;
 }
 
 /// The raw bytes of one dataset.
