@@ -26,8 +26,9 @@ bool nonnegative(double x) {
 }
 
 // The cone's constants (Wolf 1994 ch. 2 and its table of cone properties; Wolf & Deeks 2004
-// ch. 3; chapter and table numbers of Wolf 1994 as remembered, not checked against the book,
-// docs/ssi.md "Sources"). A truncated semi-infinite cone of apex height z0 carries
+// ch. 3; chapter and table numbers of Wolf 1994 as remembered and equation numbers of Wolf &
+// Deeks as a public implementation of it cites them, neither book read: docs/ssi.md, "What was
+// checked"). A truncated semi-infinite cone of apex height z0 carries
 // one-dimensional waves of velocity c: shear waves (c = Vs) for sway, dilatational waves
 // (c = Vp) for rocking. Its static stiffness,
 //   sway     K_x = rho Vs^2 A0 / z0           A0 = pi r^2,
