@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <map>
 
+#include "campaign/sampled_foundation.hpp"
 #include "contact/registry.hpp"
 #include "core/error.hpp"
 #include "hysteresis/registry.hpp"
@@ -67,7 +68,8 @@ Building& building(SampleModel& m, int b) {
 
 const std::vector<SampledParameterSpec>& sampled_parameter_table() {
   using S = SampleModel;
-  static const std::vector<SampledParameterSpec> table = {
+  // The soil and foundation entries (issue 29) follow, from sampled_foundation.cpp.
+  static const std::vector<SampledParameterSpec> table = with_foundation_parameters({
       {"e",
        "-",
        "coefficient of restitution (distribution)",
@@ -162,7 +164,7 @@ const std::vector<SampledParameterSpec>& sampled_parameter_table() {
          for (auto& b : m.row.buildings) b.hardening.assign(b.masses.size(), v);
        },
        nullptr},
-  };
+  });
   return table;
 }
 

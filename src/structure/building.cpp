@@ -102,6 +102,8 @@ void validate(const Building& b, const std::string& where) {
     if (!imk_problem.empty())
       throw InputError(where + ": storey " + std::to_string(j + 1) + ": " + imk_problem);
   }
+  const std::string foundation = foundation_problem(b.foundation, b.floors());
+  if (!foundation.empty()) throw InputError(where + ": foundation: " + foundation);
 }
 
 std::string imk_parameter_problem(const StoreyParameters& p, bool imk) {

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "hysteresis/storey_law.hpp"
+#include "structure/foundation.hpp"
 
 namespace pound {
 
@@ -51,6 +52,9 @@ struct Building {
   bool p_delta = false;
   std::vector<double> gravity_loads;  ///< gravity load per floor [N]; empty: m_j g
   DampingStiffness damping_stiffness = DampingStiffness::initial;
+  /// The base on the soil (issue 29, structure/foundation.hpp): fixed (the default, the base
+  /// moves with the ground), springs or a cone. Not simulated yet: only fixed runs.
+  Foundation foundation;
 
   int floors() const { return static_cast<int>(masses.size()); }
   bool inelastic() const { return hysteresis != "elastic"; }
@@ -82,7 +86,8 @@ BuildingMatrices assemble(const Building& b);
 /// 0 <= b < 1, n > 0, Fc / Fy >= 1, theta_p, theta_pc, lambda, c > 0, 0 <= Fr / Fy < 1 and,
 /// with "imk", theta_u not below the cap drift ratio uy / h + theta_p), gravity loads > 0 and
 /// with P-Delta k0_j > P_j / h_j, tangent damping only with Rayleigh damping and a
-/// piecewise-linear law; throws InputError naming `where` and the offending floor.
+/// piecewise-linear law, and the foundation (foundation_problem); throws InputError naming
+/// `where` and the offending floor.
 void validate(const Building& b, const std::string& where);
 /// The part of validate() for gravity: loads > 0; with P-Delta every storey stiffer than its
 /// geometric stiffness P / h (else it buckles under its own gravity load, the lateral stiffness

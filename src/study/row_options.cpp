@@ -10,6 +10,7 @@
 #include "hysteresis/registry.hpp"
 #include "motion/motion_processing.hpp"
 #include "motion/motion_reader.hpp"
+#include "study/foundation_options.hpp"
 #include "study/ground_options.hpp"
 
 namespace pound {
@@ -61,6 +62,11 @@ std::vector<OptionSpec> row_option_specs() {
   at = std::find_if(specs.begin(), specs.end(),
                     [](const OptionSpec& o) { return o.key == "pair#.gap"; });
   specs.insert(at + 1, ground.begin(), ground.end());
+  // Each building's foundation (issue 29), after the ground under it.
+  const auto foundation = foundation_option_specs();
+  at = std::find_if(specs.begin(), specs.end(),
+                    [](const OptionSpec& o) { return o.key == "ground.coherency_parameters"; });
+  specs.insert(at + 1, foundation.begin(), foundation.end());
   return specs;
 }
 
@@ -292,6 +298,7 @@ BuildingRow row_from_options(const Options& opt) {
       throw opt.invalid(pre + "damping_type", "valid: rayleigh or modal");
     read_hysteresis(opt, pre, bd);
     read_gravity(opt, pre, bd);
+    bd.foundation = foundation_from_options(opt, pre, masses.size());
     validate_gravity(bd, opt.where(pre + (bd.p_delta ? "p_delta" : "damping_stiffness")));
     validate(bd, opt.where(pre + "masses"));
     row.buildings.push_back(bd);

@@ -1,5 +1,6 @@
 #include "study/row_study.hpp"
 
+#include "study/foundation_options.hpp"
 #include "study/sears_row_options.hpp"
 
 namespace pound {
@@ -21,6 +22,8 @@ RowStudy read_row_study(const Options& opt, const StudyUseOf& use_of) {
   }
   s.integrator = integrator_from_options(opt);
   s.simulation = simulation_from_options(opt);
+  // Last, after every key was checked: no solver simulates a foundation yet (issue 29).
+  refuse_unsimulated_foundations(opt, s.row);
   return s;
 }
 

@@ -6,6 +6,7 @@
 #include "contact/registry.hpp"
 #include "core/format.hpp"
 #include "motion/motion_reader.hpp"
+#include "study/foundation_options.hpp"
 #include "study/row_options.hpp"
 #include "study/row_study.hpp"
 #include "study/sears_row_options.hpp"
@@ -110,6 +111,9 @@ SimulationRun simulate_model(const BuildingRow& row, const RowGround& ground,
                              const ContactSpec& contact, const sears::SearsRowModel& sears,
                              const IntegratorSettings& integrator,
                              const RowSimulationOptions& options) {
+  // Neither solver has foundation degrees of freedom yet (issue 29): refused, never ignored.
+  const std::string foundation = unsimulated_foundation(row);
+  if (!foundation.empty()) throw InputError(foundation);
   SimulationRun r;
   if (is_sears_model(contact.model)) {
     auto ss = sears::simulate_sears_row(row, ground, sears, options);

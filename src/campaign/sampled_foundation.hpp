@@ -1,0 +1,18 @@
+#pragma once
+// The sampled soil and foundation parameters of a campaign (issue 29, docs/ssi.md), entries of
+// the table of sampled_parameters.hpp kept here: [sample] buildingN.soil_shear_velocity,
+// soil_density, soil_poisson and foundation_radius set the cone under building N,
+// buildingN.foundation_scale multiplies its springs and dashpots. Each is applied to the
+// sample's Building::foundation and checked, when the study is read, against the foundation the
+// building has (a clear message when it has another).
+#include <vector>
+
+#include "campaign/sampled_parameters.hpp"
+
+namespace pound {
+
+/// `table` with the soil and foundation entries after its own.
+std::vector<SampledParameterSpec> with_foundation_parameters(
+    std::vector<SampledParameterSpec> table);
+
+}  // namespace pound

@@ -1,0 +1,143 @@
+#include "study/foundation_options.hpp"
+
+#include <cmath>
+
+namespace pound {
+
+std::vector<OptionSpec> foundation_option_specs() {
+  const std::string springs = "springs: ", cone = "cone: ", both = "springs and cone: ";
+  return {
+      {"building#.foundation", "", "fixed",
+       "the base on the soil: fixed (moves with the ground), springs (sway and rocking springs "
+       "and dashpots) or cone (a rigid circular surface footing on a half-space, Wolf 1994); "
+       "only fixed is simulated yet (docs/ssi.md)"},
+      {"building#.sway_stiffness", "N/m", "", springs + "sway spring K_x > 0"},
+      {"building#.rocking_stiffness", "N m/rad", "", springs + "rocking spring K_theta > 0"},
+      {"building#.sway_damping", "N s/m", "", springs + "sway dashpot C_x > 0"},
+      {"building#.rocking_damping", "N m s/rad", "", springs + "rocking dashpot C_theta > 0"},
+      {"building#.foundation_radius", "m", "",
+       cone + "radius r > 0 of the circular footing (a square of side B: B / sqrt(pi) for "
+              "sway, B (3 pi)^(-1/4) for rocking)"},
+      {"building#.soil_shear_velocity", "m/s", "", cone + "shear wave velocity Vs > 0 of the soil"},
+      {"building#.soil_density", "kg/m^3", "", cone + "mass density rho > 0 of the soil"},
+      {"building#.soil_poisson", "-", "", cone + "Poisson's ratio nu of the soil, in [0, 0.5)"},
+      {"building#.foundation_mass", "kg", "0", both + "mass m_0 >= 0 of the base slab"},
+      {"building#.foundation_inertia", "kg m^2", "0",
+       both + "rotary inertia I_0 >= 0 of the base about the base"},
+      {"building#.floor_inertias", "kg m^2", "0",
+       both + "each floor's rotary inertia about its own centre, >= 0 (one value for all "
+              "floors, or a list)"},
+  };
+}
+
+namespace {
+
+// A key's value checked by `valid`, or the message `what` naming it.
+template <class Valid>
+double checked(const Options& opt, const std::string& key, const std::string& what, Valid valid) {
+  const double x = opt.get_double(key);
+  if (!valid(x)) throw opt.invalid(key, "valid: " + what);
+  return x;
+}
+
+bool positive(double x) {
+  return x > 0.0;
+}
+bool nonnegative(double x) {
+  return x >= 0.0;
+}
+bool poisson(double x) {
+  return x >= 0.0 && x < 0.5;
+}
+
+struct FoundationKey {
+  const char* key;             // after the building's prefix
+  FoundationKind kind;         // the kind that reads it (fixed: every flexible kind)
+  double Foundation::*member;  // where it goes
+  const char* what;            // what is valid
+  bool (*valid)(double);       // its range
+};
+
+constexpr FoundationKey kKeys[] = {
+    {"sway_stiffness", FoundationKind::springs, &Foundation::sway_stiffness,
+     "a sway stiffness K_x > 0 N/m", positive},
+    {"rocking_stiffness", FoundationKind::springs, &Foundation::rocking_stiffness,
+     "a rocking stiffness K_theta > 0 N m/rad", positive},
+    {"sway_damping", FoundationKind::springs, &Foundation::sway_damping,
+     "a sway damping C_x > 0 N s/m", positive},
+    {"rocking_damping", FoundationKind::springs, &Foundation::rocking_damping,
+     "a rocking damping C_theta > 0 N m s/rad", positive},
+    {"foundation_radius", FoundationKind::cone, &Foundation::radius, "a footing radius r > 0 m",
+     positive},
+    {"soil_shear_velocity", FoundationKind::cone, &Foundation::soil_shear_velocity,
+     "a shear wave velocity Vs > 0 m/s", positive},
+    {"soil_density", FoundationKind::cone, &Foundation::soil_density,
+     "a soil density rho > 0 kg/m^3", positive},
+    {"soil_poisson", FoundationKind::cone, &Foundation::soil_poisson,
+     "a Poisson's ratio nu in [0, 0.5)", poisson},
+    {"foundation_mass", FoundationKind::fixed, &Foundation::foundation_mass,
+     "a foundation mass m_0 >= 0 kg", nonnegative},
+    {"foundation_inertia", FoundationKind::fixed, &Foundation::foundation_inertia,
+     "a rotary inertia I_0 >= 0 kg m^2", nonnegative},
+};
+
+// floor_inertias: one value for every floor or one per floor, each >= 0.
+std::vector<double> floor_inertias(const Options& opt, const std::string& key, std::size_t n) {
+  std::vector<double> v = opt.get_doubles(key);
+  if (v.size() == 1 && n > 1) v.assign(n, v[0]);
+  if (v.size() != n)
+    throw opt.invalid(key, "expected " + std::to_string(n) + " values (one per floor), got " +
+                               std::to_string(v.size()));
+  for (double x : v)
+    if (!(x >= 0.0)) throw opt.invalid(key, "valid: floor rotary inertias >= 0 kg m^2");
+  return v;
+}
+
+}  // namespace
+
+Foundation foundation_from_options(const Options& opt, const std::string& pre, std::size_t floors) {
+  Foundation f;
+  const std::string name = opt.get_string(pre + "foundation");
+  if (!parse_foundation_kind(name, f.kind))
+    throw opt.invalid(pre + "foundation", "valid: " + foundation_kind_names());
+  // Every given key is checked for its range; only the building's kind keeps it.
+  for (const auto& k : kKeys) {
+    const std::string key = pre + k.key;
+    const bool used = f.flexible() && (k.kind == FoundationKind::fixed || k.kind == f.kind);
+    if (!opt.given(key)) {
+      // Named where the foundation was chosen (the same line whichever study file lacks it).
+      if (used && k.kind != FoundationKind::fixed)
+        throw opt.invalid(pre + "foundation", "needs " + key + ", " + k.what + " (missing)");
+      continue;
+    }
+    const double x = checked(opt, key, k.what, k.valid);
+    if (used) f.*k.member = x;
+  }
+  const std::string fi = pre + "floor_inertias";
+  if (opt.given(fi)) {
+    auto v = floor_inertias(opt, fi, floors);
+    if (f.flexible()) f.floor_inertias = std::move(v);
+  }
+  return f;
+}
+
+std::string unsimulated_foundation(const BuildingRow& row) {
+  for (std::size_t b = 0; b < row.buildings.size(); ++b) {
+    const Foundation& f = row.buildings[b].foundation;
+    if (f.flexible())
+      return "foundation '" + std::string(foundation_kind_name(f.kind)) + "' of building " +
+             std::to_string(b + 1) +
+             " is not simulated yet (issue 29); only foundation = fixed runs for now";
+  }
+  return "";
+}
+
+void refuse_unsimulated_foundations(const Options& opt, const BuildingRow& row) {
+  const std::string why = unsimulated_foundation(row);
+  if (why.empty()) return;
+  for (std::size_t b = 0; b < row.buildings.size(); ++b)
+    if (row.buildings[b].foundation.flexible())
+      throw InputError(opt.where("building" + std::to_string(b + 1) + ".foundation") + ": " + why);
+}
+
+}  // namespace pound
