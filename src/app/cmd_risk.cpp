@@ -96,6 +96,10 @@ void print_text(const CampaignData& c, const HazardCurve& h, const RiskReport& r
   std::printf("\nCode rules at %s %s g (%s), from the median free-run peak displacements\n",
               im.c_str(), fmt("%.4g", r.design_im / kGravity).c_str(),
               r.design_im_given ? "--design-im" : "the hazard's 475-year intensity");
+  std::printf(
+      "  (the rules assume one ground motion under both buildings: they leave out the relative\n"
+      "  ground displacement of spatially varying ground, which the gap above includes; "
+      "docs/ground.md)\n");
   std::printf("  %-4s  %-5s %10s %6s %10s %14s %22s\n", "pair", "rule", "gap [m]", "level",
               "pounding", "nu [1/yr]", ("P(pounding in " + T + " y)").c_str());
   for (const auto& p : r.pairs) {
