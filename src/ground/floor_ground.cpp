@@ -14,10 +14,16 @@ FloorGround::FloorGround(const AssembledRow& a, const RowGround* ground) : groun
   agc_.assign(channels_ + 1, 0.0);  // agc_[channels_] stays 0: floors on no ground
   ag_.assign(n, 0.0);
   dof_channel_.assign(n, channels_);
+  const int floors = a.floors > 0 ? a.floors : n;  // (a row built by hand has floors only)
   for (int b = 0; b < nb && ground_; ++b) {
-    const int end = b + 1 < nb ? a.offset[b + 1] : n;
+    const int end = b + 1 < nb ? a.offset[b + 1] : floors;
     for (int i = a.offset[b]; i < end; ++i) dof_channel_[i] = ground_->channel(b);
   }
+  // A flexible foundation's sway moves with its building's ground; its rotation takes none
+  // (AssembledRow::influence).
+  for (int i = floors; i < n && ground_; ++i)
+    if (a.influence.size() == n && a.influence(i) != 0.0)
+      dof_channel_[i] = ground_->channel(a.building_of[i]);
   for (const auto& s : a.sites)
     site_channels_.emplace_back(dof_channel_[s.dof_left], dof_channel_[s.dof_right]);
 }

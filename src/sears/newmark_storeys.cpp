@@ -38,8 +38,18 @@ Eigen::MatrixXd NewmarkStoreys::influence(const Eigen::LLT<Eigen::MatrixXd>& mt)
   for (int j = 0; j < n; ++j) {
     B(j, j) = 1.0;
     if (storeys_[j].below >= 0) B(storeys_[j].below, j) = -1.0;
+    if (storeys_[j].rot >= 0) B(storeys_[j].rot, j) = -storeys_[j].p.h;
   }
   return mt.solve(B);
+}
+
+Eigen::VectorXd NewmarkStoreys::forces(const Eigen::VectorXd& r) const {
+  Eigen::VectorXd Br = r;
+  for (int j = 0, n = static_cast<int>(storeys_.size()); j < n; ++j) {
+    if (storeys_[j].below >= 0) Br(storeys_[j].below) -= r(j);
+    if (storeys_[j].rot >= 0) Br(storeys_[j].rot) -= storeys_[j].p.h * r(j);
+  }
+  return Br;
 }
 
 bool NewmarkStoreys::trial(const Eigen::VectorXd& u, const Eigen::VectorXd& u_end,
@@ -138,7 +148,9 @@ double NewmarkStoreys::stored(const Eigen::VectorXd& u) const {
     const RowStorey& s = storeys_[i];
     const double d = drift(u, int(i));
     e += s.law->stored(s.p, committed_[i], d, committed_[i].x);
-    if (s.kg != 0.0) e -= 0.5 * s.kg * d * d;  // P-Delta
+    // P-Delta on the chord (the drift on a fixed base).
+    const double c = s.rot >= 0 ? storey_chord(s, int(i), u.data()) : d;
+    if (s.kg != 0.0) e -= 0.5 * s.kg * c * c;
   }
   return e;
 }

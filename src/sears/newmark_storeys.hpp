@@ -34,6 +34,8 @@ class NewmarkStoreys {
   bool linear() const { return linear_; }
   /// The committed correction r per floor DOF [N].
   const Eigen::VectorXd& correction() const { return r_; }
+  /// B r: the correction's forces on the DOFs [N] (each storey's r along its deformation).
+  Eigen::VectorXd forces(const Eigen::VectorXd& r) const;
   /// R = Mt^-1 B for a Newmark matrix Mt [1/kg].
   Eigen::MatrixXd influence(const Eigen::LLT<Eigen::MatrixXd>& mt) const;
 
@@ -71,8 +73,9 @@ class NewmarkStoreys {
 
  private:
   double drift(const Eigen::VectorXd& u, int i) const {
-    const int b = storeys_[i].below;
-    return u(i) - (b >= 0 ? u(b) : 0.0);
+    const RowStorey& st = storeys_[i];
+    const double d = u(i) - (st.below >= 0 ? u(st.below) : 0.0);
+    return st.rot >= 0 ? d - st.p.h * u(st.rot) : d;  // on a flexible foundation (issue 29)
   }
 
   std::vector<RowStorey> storeys_;

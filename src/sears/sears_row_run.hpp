@@ -43,6 +43,7 @@ class SearsRowRun {
  private:
   void build_operators();
   void initial_state();
+  Eigen::VectorXd solve_mass(const Eigen::VectorXd& x) const;
   void loads(const Eigen::VectorXd& f, std::vector<EndLoads>& to) const;
   // Each ground channel's acceleration at t [m/s^2] (FloorGround::channel_acc).
   const double* ag_at(double t) { return ground.channel_acc(t); }

@@ -7,14 +7,14 @@ namespace pound::sears {
 
 namespace {
 
-// Gershgorin's bound on the largest eigenvalue of M^-1/2 A M^-1/2 for the block [o, end) of a
+// Gershgorin's bound on the largest eigenvalue of M^-1/2 A M^-1/2 for the DOFs `d` of a
 // symmetric A [1/s^2].
-double largest_eigenvalue_bound(const AssembledRow& a, const Eigen::MatrixXd& A, int o, int end) {
+double largest_eigenvalue_bound(const AssembledRow& a, const Eigen::MatrixXd& A,
+                                const std::vector<int>& d) {
   double lam = 0.0;
-  for (int i = o; i < end; ++i) {
+  for (int i : d) {
     double row = 0.0;
-    for (int j = o; j < end; ++j)
-      row += std::fabs(A(i, j)) * std::sqrt(a.inv_mass(i) * a.inv_mass(j));
+    for (int j : d) row += std::fabs(A(i, j)) * std::sqrt(a.inv_mass(i) * a.inv_mass(j));
     lam = std::max(lam, row);
   }
   return lam;
@@ -29,17 +29,25 @@ TranslationBound::TranslationBound(const AssembledRow& a, double ag_max)
       ag_max_(std::fabs(ag_max)) {
   const int n = a.dofs(), nb = static_cast<int>(a.offset.size());
   building_of_.assign(n, 0);
+  dofs_.assign(nb, {});
+  const int floors = a.floors > 0 ? a.floors : n;  // (a row built by hand has floors only)
   for (int b = 0; b < nb; ++b) {
-    const int end = b + 1 < nb ? a.offset[b + 1] : n;
-    begin_.push_back(a.offset[b]);
-    size_.push_back(end - a.offset[b]);
+    const int end = b + 1 < nb ? a.offset[b + 1] : floors;
+    for (int k = a.offset[b]; k < end; ++k) dofs_[b].push_back(k);
+  }
+  // A flexible foundation's sway and rotation belong to their building (issue 29).
+  for (int k = floors; k < n; ++k) dofs_[a.building_of[k]].push_back(k);
+  for (int b = 0; b < nb; ++b) {
+    // The translating mass: the earthquake's load on the building is -ag sum m (influence 1).
     double m = 0.0;
-    for (int k = a.offset[b]; k < end; ++k) {
+    for (int k : dofs_[b]) {
       building_of_[k] = b;
-      m += a.M(k, k);
+      if (a.influence.size() != n || a.influence(k) != 0.0) m += a.M(k, k);
     }
     sqrt_mass_.push_back(std::sqrt(m));
   }
+  // A massless base is a first-order DOF: the bounds below need M positive definite.
+  for (int k = 0; k < n; ++k) valid_ = valid_ && a.M(k, k) > 0.0;
   sqrt2E_.assign(nb, 0.0);
   own_.assign(nb, 0);
   omega_g_.assign(nb, 0.0);
@@ -49,9 +57,8 @@ TranslationBound::TranslationBound(const AssembledRow& a, double ag_max)
   std::vector<char> tangent(nb, 0);
   const Eigen::MatrixXd K0 = a.K + Kg_;
   for (int b = 0; b < nb; ++b) {
-    const int end = b + 1 < nb ? a.offset[b + 1] : n;
-    omega_g_[b] = std::sqrt(largest_eigenvalue_bound(a, Kg_, a.offset[b], end));
-    lambda0[b] = largest_eigenvalue_bound(a, K0, a.offset[b], end);
+    omega_g_[b] = std::sqrt(largest_eigenvalue_bound(a, Kg_, dofs_[b]));
+    lambda0[b] = largest_eigenvalue_bound(a, K0, dofs_[b]);
   }
   for (int k = 0; k < n && static_cast<int>(a.storeys.size()) == n; ++k) {
     const RowStorey& st = a.storeys[k];
@@ -86,17 +93,17 @@ TranslationBound::TranslationBound(const AssembledRow& a, double ag_max)
 
 void TranslationBound::set_state(const Eigen::VectorXd& u, const Eigen::VectorXd& v,
                                  const std::vector<double>& strain) {
-  for (std::size_t b = 0; b < begin_.size(); ++b) {
-    const int o = begin_[b], m = size_[b];
+  for (std::size_t b = 0; b < dofs_.size(); ++b) {
+    const std::vector<int>& d = dofs_[b];
     const bool own = !strain.empty() && strain[b] >= 0.0;
     own_[b] = own;
     double twoE = own ? 2.0 * strain[b] : 0.0;
-    for (int i = o; i < o + m; ++i) {
+    for (int i : d) {
       twoE += M_(i, i) * v(i) * v(i);
       if (!own)
-        for (int j = o; j < o + m; ++j) twoE += u(i) * K_(i, j) * u(j);
+        for (int j : d) twoE += u(i) * K_(i, j) * u(j);
       else if (omega_g_[b] > 0.0)  // P-Delta: E' = T + U + G
-        for (int j = o; j < o + m; ++j) twoE += u(i) * Kg_(i, j) * u(j);
+        for (int j : d) twoE += u(i) * Kg_(i, j) * u(j);
     }
     sqrt2E_[b] = std::sqrt(std::max(0.0, twoE));
   }

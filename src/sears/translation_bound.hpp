@@ -57,16 +57,20 @@ class TranslationBound {
   /// be in different buildings.
   double approach(int dof_left, int dof_right, const Eigen::VectorXd& v, double ground_rate,
                   double h) const;
+  /// False for a row with a massless base (a foundation without mass or rotary inertia): its
+  /// first-order DOFs are outside the proof, and no step may rely on the bound.
+  bool valid() const { return valid_; }
 
  private:
-  std::vector<int> building_of_;   // per DOF
-  std::vector<int> begin_, size_;  // per building
-  std::vector<double> sqrt_mass_;  // sqrt(m_b) per building [sqrt(kg)]
-  std::vector<double> sqrt2E_;     // sqrt(2 E_b) (yielding storeys: sqrt(2 E'_b)) [sqrt(J)]
-  std::vector<double> omega_g_;    // per building: w_g (P-Delta) [1/s]
-  std::vector<char> own_;          // per building: its strain energy given (yielding storeys)
-  Eigen::VectorXd G_;              // per DOF, linear storeys [1/(s sqrt(kg))]
-  Eigen::VectorXd G_own_;          // per DOF, yielding storeys (with P-Delta's gamma_k)
+  std::vector<int> building_of_;        // per DOF
+  std::vector<std::vector<int>> dofs_;  // per building: its floors, then its base's DOFs
+  bool valid_ = true;                   // no massless DOF (the proof needs M > 0)
+  std::vector<double> sqrt_mass_;       // sqrt(m_b) per building [sqrt(kg)]
+  std::vector<double> sqrt2E_;          // sqrt(2 E_b) (yielding storeys: sqrt(2 E'_b)) [sqrt(J)]
+  std::vector<double> omega_g_;         // per building: w_g (P-Delta) [1/s]
+  std::vector<char> own_;               // per building: its strain energy given (yielding storeys)
+  Eigen::VectorXd G_;                   // per DOF, linear storeys [1/(s sqrt(kg))]
+  Eigen::VectorXd G_own_;               // per DOF, yielding storeys (with P-Delta's gamma_k)
   Eigen::MatrixXd K_, Kg_, M_;
   double ag_max_ = 0.0;
 };

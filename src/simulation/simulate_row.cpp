@@ -34,7 +34,7 @@ RowSimulation summarize_runs(const BuildingRow& row, const RowGround& ground, do
         const bool collapsed = !r.collapse.empty() && r.collapse[b].collapsed;
         if (r.u_end.size() <= i || collapsed || r.stopped)
           return std::numeric_limits<double>::quiet_NaN();
-        return std::fabs(r.u_end(i) - (j > 0 ? r.u_end(i - 1) : 0.0)) / bd.storey_heights[j];
+        return std::fabs(storey_drift(a.storeys[i], i, r.u_end.data())) / bd.storey_heights[j];
       };
       f.residual_drift_ratio_pounding = residual(out.pounding);
       f.residual_drift_ratio_free = residual(out.free);

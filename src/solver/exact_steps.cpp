@@ -53,6 +53,50 @@ std::uint64_t bits_hash(const Eigen::MatrixXd& k) {
 
 }  // namespace
 
+// Massless base DOFs b (issue 29; RowDynamics::project): v_b = -S (K_b u + C_ba v_a + off_b),
+// S = C_bb^-1, replaces their velocity entries in u' = v and in the damping of the others,
+//   v_a' = -M_a^-1 [(K_a - C_ab S K_b) u + (C_aa - C_ab S C_ba) v_a + off_a - C_ab S off_b] - ag,
+// and their velocity entries stay put (v_b' = 0; the caller projects them after the step).
+void ExactSteps::eliminate_massless(const RowDynamics& dyn, const Eigen::MatrixXd& K,
+                                    const Eigen::MatrixXd& C, Eigen::MatrixXd& A,
+                                    Eigen::MatrixXd& B) {
+  const int n = static_cast<int>(K.rows());
+  const std::vector<int>& bs = dyn.massless();
+  const int nb = static_cast<int>(bs.size());
+  const Eigen::MatrixXd& S = dyn.massless_inverse();
+  Eigen::MatrixXd Kb(nb, n), Cb(nb, n), Cxb(n, nb);
+  std::vector<char> is_b(n, 0);
+  for (int k = 0; k < nb; ++k) is_b[bs[k]] = 1;
+  for (int k = 0; k < nb; ++k) {
+    Kb.row(k) = K.row(bs[k]);
+    Cb.row(k) = C.row(bs[k]);
+    Cxb.col(k) = C.col(bs[k]);
+  }
+  for (int k = 0; k < nb; ++k) Cb(k, bs[k]) = 0.0;  // (their own velocities are not states)
+  for (int k = 0; k < nb; ++k)
+    for (int j = 0; j < nb; ++j) Cb(k, bs[j]) = 0.0;
+  const Eigen::MatrixXd SK = S * Kb, SC = S * Cb;  // v_b = -SK u - SC v - S off_b
+  const Eigen::VectorXd& im = dyn_inv_mass(dyn);
+  for (int i = 0; i < n; ++i) {
+    if (is_b[i]) continue;
+    const Eigen::RowVectorXd cib = Cxb.row(i);
+    A.block(n + i, 0, 1, n) = -im(i) * (K.row(i) - cib * SK);
+    Eigen::RowVectorXd ci = C.row(i) - cib * SC;
+    for (int j : bs) ci(j) = 0.0;
+    A.block(n + i, n, 1, n) = -im(i) * ci;
+    for (int k = 0; k < nb; ++k) B(n + i, bs[k]) += im(i) * (cib * S.col(k))(0);
+  }
+  for (int k = 0; k < nb; ++k) {
+    const int b = bs[k];
+    A.row(b).setZero();
+    A.block(b, 0, 1, n) = -SK.row(k);
+    A.block(b, n, 1, n) = -SC.row(k);
+    A.row(n + b).setZero();
+    B.row(n + b).setZero();
+    for (int j = 0; j < nb; ++j) B(b, bs[j]) = -S(k, j);
+  }
+}
+
 void ExactSteps::undo_iteration() {
   if (visited_ >= 0) --visits_[visited_];
   declined_ = declined_before_iteration_;
@@ -94,7 +138,8 @@ const LinearStep* ExactSteps::propagator(const RowDynamics& dyn, const Assembled
     Eigen::MatrixXd B = Eigen::MatrixXd::Zero(2 * n, n + m);
     B.block(n, 0, n, n) = -Eigen::MatrixXd(im.asDiagonal());
     for (int i = 0; i < n; ++i)
-      if (dyn.channel(i) < m) B(n + i, n + dyn.channel(i)) = -1.0;
+      if (dyn.channel(i) < m && im(i) != 0.0) B(n + i, n + dyn.channel(i)) = -1.0;
+    if (!dyn.massless().empty()) eliminate_massless(dyn, e.K, c_scratch_, A, B);
     // Balance displacements against velocities by the row's largest frequency scale.
     const double w = std::sqrt(A.bottomLeftCorner(n, n).cwiseAbs().rowwise().sum().maxCoeff());
     Eigen::VectorXd scale = Eigen::VectorXd::Ones(2 * n);

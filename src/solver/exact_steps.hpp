@@ -89,6 +89,10 @@ class ExactSteps {
   }
 
  private:
+  static void eliminate_massless(const RowDynamics& dyn, const Eigen::MatrixXd& K,
+                                 const Eigen::MatrixXd& C, Eigen::MatrixXd& A, Eigen::MatrixXd& B);
+  static const Eigen::VectorXd& dyn_inv_mass(const RowDynamics& dyn) { return dyn.inv_mass(); }
+
   bool enabled_ = false;
   double h_ = 0.0;      // grid step [s]
   long point_ = 0;      // index of the last grid point reached

@@ -39,6 +39,14 @@ RowDynamics::RowDynamics(const AssembledRow& row, const std::vector<RowStorey>& 
   force_.setZero(ns_);
   scratch_.setZero(n_);
   held_.assign(n_, 0);
+  for (int i = 0; i < n_; ++i)
+    if (row_.inv_mass(i) == 0.0) massless_.push_back(i);
+  if (!massless_.empty()) {
+    veff_.setZero(n_);
+    rb_.setZero(static_cast<int>(massless_.size()));
+    vb_ = rb_;
+    factor_massless();
+  }
 }
 
 // The floors' ground channels, and the ground states of the channels that a contact site meets
@@ -72,13 +80,15 @@ void RowDynamics::rhs(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy) {
   const double* im = row_.inv_mass.data();
   double* du = dy.data();
   double* dv = du + n_;
+  if (!massless_.empty()) v = massless_velocities(y);  // y's are stale there: see project()
   std::copy(v, v + n_, du);
   if (linear_)
     forces_.linear(u, v, a_g, dv);
   else if (affine_)
     forces_.affine(u, v, a_g, dv);
   else
-    forces_.general(y, storey, layout_.storey_offset, a_g, dy.data());
+    forces_.general(y, storey, layout_.storey_offset, a_g, dy.data(), v);
+  if (!massless_.empty()) massless_rates(dv);
   for (int i = 0; i < ns_; ++i) {
     const double f = force_(i);
     du[layout_.impulses + i] = f;
@@ -90,7 +100,7 @@ void RowDynamics::rhs(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy) {
   if (any_held_)
     for (int i = 0; i < n_; ++i)
       if (held_[i]) du[i] = dv[i] = 0.0;
-  if (track_) energy_rates(y, t, du + layout_.energies);
+  if (track_) energy_rates(y, v, t, du + layout_.energies);
   if (layout_.size == layout_.ground) return;
   const double* agc = ground_.channel_acc(t);
   for (int c = 0; c < ground_.channels(); ++c) {  // ug' = vg, vg' = ag
@@ -104,6 +114,55 @@ void RowDynamics::rhs(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy) {
 void RowDynamics::storey_changed(int) {
   if (affine_) forces_.set_lines(storey);
   if (forces_.tangent_damping()) forces_.set_tangent_damping(storey);
+  if (!massless_.empty()) factor_massless();
+}
+
+// Massless base DOFs (a flexible foundation without mass or rotary inertia; issue 29): their
+// rows of M u'' + C u' + f = 0 have no inertia, so that C_bb v_b = -(C_ba v_a + f_b(u)) gives
+// their velocities from the state (b massless, a the others). S = C_bb^-1 is formed here.
+void RowDynamics::factor_massless() {
+  const int m = static_cast<int>(massless_.size());
+  Eigen::MatrixXd Cbb = Eigen::MatrixXd::Zero(m, m);
+  std::vector<int> slot(n_, -1);
+  for (int k = 0; k < m; ++k) slot[massless_[k]] = k;
+  for (int k = 0; k < m; ++k)
+    forces_.row_entries(massless_[k], 0, [&](int j, double c, double) {
+      if (slot[j] >= 0) Cbb(k, slot[j]) = c;
+    });
+  massless_S_ = Cbb.inverse();
+}
+
+const double* RowDynamics::massless_velocities(const Eigen::VectorXd& y) {
+  const double* u = y.data();
+  double* v = veff_.data();
+  std::copy(u + n_, u + 2 * n_, v);
+  for (int b : massless_) v[b] = 0.0;
+  const int kind = linear_ ? 0 : (affine_ ? 1 : 2);
+  const int m = static_cast<int>(massless_.size());
+  for (int k = 0; k < m; ++k)
+    rb_(k) = -forces_.raw_force(massless_[k], u, v, kind, storey, u, layout_.storey_offset);
+  vb_.noalias() = massless_S_ * rb_;
+  for (int k = 0; k < m; ++k) v[massless_[k]] = vb_(k);
+  return v;
+}
+
+// After the massive DOFs' accelerations dv: the massless ones' velocity rates, from the
+// derivative of C_bb v_b = -(C_ba v_a + K_b u): v_b' = -S (K_b u' + C_ba v_a') (linear and
+// piecewise-linear storeys; 0 for other laws, whose v_b the projection keeps on the constraint).
+void RowDynamics::massless_rates(double* dv) {
+  const int m = static_cast<int>(massless_.size());
+  const double* v = veff_.data();
+  for (int k = 0; k < m; ++k) {
+    double r = 0.0;
+    if (linear_ || affine_)
+      forces_.row_entries(massless_[k], linear_ ? 0 : 1, [&](int j, double c, double kk) {
+        r += kk * v[j];
+        if (row_.inv_mass(j) != 0.0) r += c * dv[j];
+      });
+    rb_(k) = -r;
+  }
+  vb_.noalias() = massless_S_ * rb_;
+  for (int k = 0; k < m; ++k) dv[massless_[k]] = vb_(k);
 }
 
 void RowDynamics::damping_matrix(Eigen::MatrixXd& C) const {
@@ -113,14 +172,13 @@ void RowDynamics::damping_matrix(Eigen::MatrixXd& C) const {
     C = row_.C;
 }
 
-void RowDynamics::energy_rates(const Eigen::VectorXd& y, double t, double* dE) {
-  const double* v = y.data() + n_;
+void RowDynamics::energy_rates(const Eigen::VectorXd& y, const double* v, double t, double* dE) {
   double* cv = scratch_.data();
   forces_.damping(v, cv);
   std::fill(mv_.begin(), mv_.end(), 0.0);
   double vcv = 0.0, contact = 0.0, ground_work = 0.0;
   for (int i = 0; i < n_; ++i) {
-    mv_[ground_.channel(i)] += v[i] / row_.inv_mass(i);
+    if (row_.inv_mass(i) != 0.0) mv_[ground_.channel(i)] += v[i] / row_.inv_mass(i);
     vcv += v[i] * cv[i];
   }
   for (int i = 0; i < ns_; ++i) {
@@ -144,7 +202,9 @@ double RowDynamics::storey_energies(const Eigen::VectorXd& y, Eigen::VectorXd& h
     const double d = drift(y, 0, i);
     hysteretic(i) = st.law->dissipated(st.p, storey[i], d, continuous_states(y, i));
     strain += st.law->stored(st.p, storey[i], d, continuous_states(y, i));
-    if (st.kg != 0.0) strain -= 0.5 * st.kg * d * d;  // P-Delta: -P d^2 / (2 h)
+    // P-Delta: -P c^2 / (2 h), c the storey's chord (its drift on a fixed base).
+    const double c = st.rot >= 0 ? storey_chord(st, i, y.data()) : d;
+    if (st.kg != 0.0) strain -= 0.5 * st.kg * c * c;
   }
   return strain;
 }

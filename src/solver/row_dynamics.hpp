@@ -109,8 +109,10 @@ class RowDynamics {
   /// Drift of floor DOF `dof`'s storey in the block of y starting at `off` (0: displacements,
   /// n: velocities) [m], [m/s].
   double drift(const Eigen::VectorXd& y, int off, int dof) const {
-    const int b = storeys_[dof].below;
-    return y(off + dof) - (b >= 0 ? y(off + b) : 0.0);
+    const RowStorey& st = storeys_[dof];
+    const int b = st.below;
+    const double d = y(off + dof) - (b >= 0 ? y(off + b) : 0.0);
+    return st.rot >= 0 ? d - st.p.h * y(off + st.rot) : d;  // on a flexible foundation
   }
   /// The continuous states of floor DOF `dof`'s storey in y (null: none).
   const double* continuous_states(const Eigen::VectorXd& y, int dof) const {
@@ -130,6 +132,17 @@ class RowDynamics {
   bool held(int i) const { return held_[i]; }
   /// After storey `dof` changed branch: the piecewise-linear forces' lines.
   void storey_changed(int dof);
+  /// Massless base DOFs (issue 29) are first-order: their velocities follow from the state, and
+  /// rhs() computes them (dy holds them as the displacements' rates) instead of reading y's
+  /// velocity entries there. project() writes them into y (after each new state and its dy), so
+  /// that drifts' rates, peaks and energies read the right ones. No-op without such DOFs.
+  void project(Eigen::VectorXd& y, const Eigen::VectorXd& dy) const {
+    for (int b : massless_) y(n_ + b) = dy(b);
+  }
+  const std::vector<int>& massless() const { return massless_; }
+  const Eigen::VectorXd& inv_mass() const { return row_.inv_mass; }
+  /// S = C_bb^-1 over the massless DOFs (their order in massless()) [m/(N s)].
+  const Eigen::MatrixXd& massless_inverse() const { return massless_S_; }
   /// The stiffness of the linear or piecewise-linear right-hand side [N/m] and the offsets of
   /// the branches' lines [N] (solver/row_forces.hpp).
   void stiffness(Eigen::MatrixXd& K) const { forces_.stiffness(affine_, K); }
@@ -150,7 +163,10 @@ class RowDynamics {
   // E' = [input, damping v^T C v, contact sum_s F_s delta'_s] [W], the input being the work
   // of the effective earthquake forces -M ag on the floors, sum_i -ag_i m_i v_i, plus that of
   // the ground's relative motion on the contacts, sum_s F_s (vg_L - vg_R) (docs/ground.md).
-  void energy_rates(const Eigen::VectorXd& y, double t, double* dE);
+  void energy_rates(const Eigen::VectorXd& y, const double* v, double t, double* dE);
+  void factor_massless();
+  const double* massless_velocities(const Eigen::VectorXd& y);
+  void massless_rates(double* dv);
   void set_ground_layout();
 
   const AssembledRow& row_;
@@ -163,7 +179,10 @@ class RowDynamics {
   FloorGround ground_;                            // the ground under floors and sites
   std::vector<std::pair<int, int>> site_ground_;  // per site: ug offsets of L and R, or -1
   mutable std::vector<double> mv_;                // per channel: sum m_i v_i (energy rates)
-  std::vector<char> held_;                        // per DOF: held still (hold)
+  std::vector<int> massless_;                     // DOFs without mass (a flexible foundation's)
+  Eigen::MatrixXd massless_S_;                    // C_bb^-1 over them
+  Eigen::VectorXd veff_, rb_, vb_;  // scratch: velocities with theirs, their forces, rates
+  std::vector<char> held_;          // per DOF: held still (hold)
   bool any_held_ = false;
   Eigen::VectorXd force_;            // contact force per site [N]
   mutable Eigen::VectorXd scratch_;  // damping forces C v [N] (energy rates)

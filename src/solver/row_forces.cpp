@@ -27,10 +27,25 @@ RowForces::RowForces(const AssembledRow& row, const std::vector<RowStorey>& stor
   };
   kl_ = band(row_.K, -1), kd_ = band(row_.K, 0), ku_ = band(row_.K, 1);
   cl_ = band(row_.C, -1), cd_ = band(row_.C, 0), cu_ = band(row_.C, 1);
+  for (int i = 0; i < n_; ++i) {
+    const RowStorey& st = storeys_[i];
+    topology_ = topology_ || st.rot >= 0 || (st.below >= 0 && st.below != i - 1);
+  }
+  // The compressed rows: the nonzeros of K and C, and with a flexible foundation every pair of
+  // a storey's DOFs (its line and tangent damper change there).
+  std::vector<std::vector<char>> used(n_, std::vector<char>(n_, 0));
+  for (int i = 0; i < n_; ++i)
+    for (int j = 0; j < n_; ++j) used[i][j] = row_.K(i, j) != 0.0 || row_.C(i, j) != 0.0;
+  for (int i = 0; i < n_ && topology_; ++i) {
+    const RowStorey& st = storeys_[i];
+    for (int a : {i, st.below, st.rot})
+      for (int b : {i, st.below, st.rot})
+        if (a >= 0 && b >= 0) used[a][b] = 1;
+  }
   row_start_.assign(1, 0);
   for (int i = 0; i < n_; ++i) {
     for (int j = 0; j < n_; ++j) {
-      if (row_.K(i, j) == 0.0 && row_.C(i, j) == 0.0) continue;
+      if (!used[i][j]) continue;
       col_.push_back(j);
       k_val_.push_back(row_.K(i, j));
       c_val_.push_back(row_.C(i, j));
@@ -38,6 +53,7 @@ RowForces::RowForces(const AssembledRow& row, const std::vector<RowStorey>& stor
     row_start_.push_back(static_cast<int>(col_.size()));
   }
   tl_.assign(n_, 0.0), td_.assign(n_, 0.0), tu_.assign(n_, 0.0), off_.assign(n_, 0.0);
+  if (topology_) set_topology();
   // Tangent-stiffness damping: the initial damping and, per such storey, where its entries
   // (i, i), (b, b), (i, b), (b, i) stand in the compressed rows (b the floor below, -1: none).
   for (int i = 0; i < n_; ++i) tangent_damping_ = tangent_damping_ || storeys_[i].damping_a1 > 0.0;
@@ -57,7 +73,72 @@ RowForces::RowForces(const AssembledRow& row, const std::vector<RowStorey>& stor
   }
 }
 
+void RowForces::set_topology() {
+  auto at = [&](int i, int j) {
+    for (int e = row_start_[i]; e < row_start_[i + 1]; ++e)
+      if (col_[e] == j) return e;
+    return -1;
+  };
+  entries_.assign(n_, {});
+  for (int i = 0; i < n_; ++i) {
+    const RowStorey& st = storeys_[i];
+    const int dof[3] = {i, st.below, st.rot};
+    const double g[3] = {1.0, -1.0, -st.p.h}, c[3] = {1.0, -1.0, 0.0};
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b)
+        if (dof[a] >= 0 && dof[b] >= 0)
+          entries_[i].push_back({at(dof[a], dof[b]), g[a] * g[b], c[a] * c[b]});
+  }
+  kt_val_.assign(col_.size(), 0.0);
+  touching_.assign(n_, {});
+  for (int i = 0; i < n_; ++i) {
+    const RowStorey& st = storeys_[i];
+    touching_[i].push_back({i, 1.0, 1.0});
+    if (st.below >= 0) touching_[st.below].push_back({i, -1.0, -1.0});
+    if (st.rot >= 0) touching_[st.rot].push_back({i, -st.p.h, 0.0});
+  }
+}
+
+double RowForces::raw_force(int i, const double* u, const double* v, int kind,
+                            const std::vector<StoreyState>& states, const double* y,
+                            const std::vector<int>& xoff) const {
+  double f = 0.0;
+  for (int e = row_start_[i]; e < row_start_[i + 1]; ++e) {
+    f += c_val_[e] * v[col_[e]];
+    if (kind == 0) f += k_val_[e] * u[col_[e]];
+    if (kind == 1) f += kt_val_[e] * u[col_[e]];
+  }
+  if (kind == 1) f += off_[i];
+  if (kind != 2) return f;
+  for (const Touch& t : touching_[i]) {
+    const RowStorey& st = storeys_[t.storey];
+    const double* x = xoff[t.storey] >= 0 ? y + xoff[t.storey] : nullptr;
+    const double V = st.law->shear(st.p, states[t.storey], storey_drift(st, t.storey, u), x);
+    f += t.g * V - t.c * st.kg * storey_chord(st, t.storey, u);
+  }
+  return f;
+}
+
+// The storeys' lines along their deformations and P-Delta along their chords (row_forces.hpp).
+void RowForces::set_lines_general(const std::vector<StoreyState>& states) {
+  std::fill(kt_val_.begin(), kt_val_.end(), 0.0);
+  std::fill(off_.begin(), off_.end(), 0.0);
+  for (int i = 0; i < n_; ++i) {
+    const RowStorey& st = storeys_[i];
+    double slope = 0.0, offset = 0.0;
+    st.law->branch_line(st.p, states[i], slope, offset);
+    for (const StoreyEntry& e : entries_[i]) kt_val_[e.entry] += slope * e.g - st.kg * e.c;
+    off_[i] += offset;
+    if (st.below >= 0) off_[st.below] -= offset;
+    if (st.rot >= 0) off_[st.rot] -= st.p.h * offset;
+  }
+}
+
 void RowForces::set_lines(const std::vector<StoreyState>& states) {
+  if (topology_) {
+    set_lines_general(states);
+    return;
+  }
   std::fill(tl_.begin(), tl_.end(), 0.0);
   std::fill(td_.begin(), td_.end(), 0.0);
   std::fill(tu_.begin(), tu_.end(), 0.0);
@@ -90,6 +171,10 @@ void RowForces::set_tangent_damping(const std::vector<StoreyState>& states) {
     // a1 (max(k_t, 0) - k0) between floor i and the floor below (Charney 2008): a damper of
     // that coefficient in parallel with the initial stiffness' one.
     const double dc = st.damping_a1 * (std::max(slope, 0.0) - st.p.k0);
+    if (topology_) {  // along the storey's deformation
+      for (const StoreyEntry& e : entries_[i]) c_val_[e.entry] += dc * e.g;
+      continue;
+    }
     const int b = st.below;
     const auto& e = damping_entry_[i];
     auto add = [&](int entry, double x) {
@@ -119,6 +204,11 @@ void RowForces::stiffness(bool affine, Eigen::MatrixXd& K) const {
     return;
   }
   K.setZero(n_, n_);  // allocates only the first time
+  if (topology_) {
+    for (int i = 0; i < n_; ++i)
+      for (int e = row_start_[i]; e < row_start_[i + 1]; ++e) K(i, col_[e]) = kt_val_[e];
+    return;
+  }
   for (int i = 0; i < n_; ++i) {
     K(i, i) = td_[i];
     if (i > 0) K(i, i - 1) = tl_[i];
@@ -127,15 +217,25 @@ void RowForces::stiffness(bool affine, Eigen::MatrixXd& K) const {
 }
 
 void RowForces::general(const Eigen::VectorXd& y, const std::vector<StoreyState>& states,
-                        const std::vector<int>& xoff, const double* ag, double* dy) const {
+                        const std::vector<int>& xoff, const double* ag, double* dy,
+                        const double* vel) const {
   const double* u = y.data();
-  const double* v = u + n_;
+  const double* v = vel ? vel : u + n_;
   double* dv = dy + n_;
   damping(v, dv);
   for (int i = 0; i < n_; ++i) {
     const RowStorey& st = storeys_[i];
-    const double d = u[i] - (st.below >= 0 ? u[st.below] : 0.0);
     const double* x = xoff[i] >= 0 ? u + xoff[i] : nullptr;
+    if (st.rot >= 0) {  // on a flexible foundation: the law along d, P-Delta along the chord
+      const double d = storey_drift(st, i, u), c = storey_chord(st, i, u);
+      const double V = st.law->shear(st.p, states[i], d, x), P = -st.kg * c;
+      dv[i] += V + P;
+      if (st.below >= 0) dv[st.below] -= V + P;
+      dv[st.rot] -= st.p.h * V;
+      if (x) st.law->rates(st.p, states[i], d, storey_drift(st, i, v), x, dy + xoff[i]);
+      continue;
+    }
+    const double d = u[i] - (st.below >= 0 ? u[st.below] : 0.0);
     double V = st.law->shear(st.p, states[i], d, x);
     if (st.kg != 0.0) V -= st.kg * d;  // P-Delta
     dv[i] += V;

@@ -33,9 +33,10 @@ class RowForces {
   void set_lines(const std::vector<StoreyState>& states);
   /// dv = -M^-1 (C v + f) - ag with f from the laws' shears at drifts d of u; the laws'
   /// continuous states are read at `x` + xoff[i] and their rates written at dy + xoff[i]
-  /// (dy = the whole state derivative, dv = dy + n).
+  /// (dy = the whole state derivative, dv = dy + n); `v` the velocities (null: y's).
   void general(const Eigen::VectorXd& y, const std::vector<StoreyState>& states,
-               const std::vector<int>& xoff, const double* ag, double* dy) const;
+               const std::vector<int>& xoff, const double* ag, double* dy,
+               const double* v = nullptr) const;
   /// Tangent-stiffness damping: C = C0 + sum a1 (max(k_t, 0) - k0) per such storey, from every
   /// storey's current branch.
   void set_tangent_damping(const std::vector<StoreyState>& states);
@@ -50,10 +51,46 @@ class RowForces {
   /// The offsets of set_lines() [N] (zero before the first call).
   const std::vector<double>& offsets() const { return off_; }
 
+  /// The force C v + f(u) on DOF i alone [N] (no mass, no ground, no contact), for a massless
+  /// base DOF's velocity (a row with a flexible foundation; issue 29): f from K (`kind` 0,
+  /// linear storeys), the lines of set_lines() (1) or the laws' shears (2; `y` the whole state
+  /// for the laws' continuous states at y + xoff[s]).
+  double raw_force(int i, const double* u, const double* v, int kind,
+                   const std::vector<StoreyState>& states, const double* y,
+                   const std::vector<int>& xoff) const;
+  /// The entries of row i of the current damping matrix, and of the stiffness of `kind` 0 or 1
+  /// (for the massless DOFs' elimination): calls f(column, C_ij, K_ij).
+  template <class F>
+  void row_entries(int i, int kind, F f) const {
+    for (int e = row_start_[i]; e < row_start_[i + 1]; ++e)
+      f(col_[e], c_val_[e], kind == 0 ? k_val_[e] : (topology_ ? kt_val_[e] : 0.0));
+  }
+
  private:
+  // A row with a storey on a flexible foundation (RowStorey::rot, or a base sway below it,
+  // issue 29): its storeys' lines and tangent dampers go into compressed rows along each
+  // storey's deformation g = e_i - e_below - h e_rot and chord c = e_i - e_below.
+  struct StoreyEntry {
+    int entry;  // in the compressed rows
+    double g;   // g_a g_b
+    double c;   // c_a c_b
+  };
+  void set_topology();
+  void set_lines_general(const std::vector<StoreyState>& states);
+
   const AssembledRow& row_;
   const std::vector<RowStorey>& storeys_;
   const int n_;
+  bool topology_ = false;                          // a storey off the shear building's bands
+  std::vector<std::vector<StoreyEntry>> entries_;  // per storey (topology_)
+  // Per DOF the storeys acting on it: (storey, coefficient of its law's shear, of its P-Delta
+  // force along the chord) (topology_).
+  struct Touch {
+    int storey;
+    double g, c;
+  };
+  std::vector<std::vector<Touch>> touching_;
+  std::vector<double> kt_val_;                       // K_t in the compressed rows (topology_)
   bool tridiagonal_ = false;                         // K and C tridiagonal
   std::vector<double> kl_, kd_, ku_, cl_, cd_, cu_;  // their bands [N/m], [N s/m]
   std::vector<int> row_start_, col_;                 // compressed rows of K and C
@@ -110,6 +147,14 @@ inline void RowForces::affine(const double* __restrict u, const double* __restri
   }
   double* cv = cv_.data();
   damping(v, cv);
+  if (topology_) {
+    for (int i = 0; i < n_; ++i) {
+      double ku = 0.0;
+      for (int e = row_start_[i]; e < row_start_[i + 1]; ++e) ku += kt_val_[e] * u[col_[e]];
+      dv[i] = -im[i] * (cv[i] + ku + off[i]) - ag[i];
+    }
+    return;
+  }
   for (int i = 0; i < n_; ++i) {
     const double ku =
         td[i] * u[i] + (i > 0 ? tl[i] * u[i - 1] : 0.0) + (i + 1 < n_ ? tu[i] * u[i + 1] : 0.0);

@@ -269,7 +269,8 @@ EnergyBalance RowRun::energy_now() const {
   EnergyBalance e;
   Eigen::VectorXd hysteretic;
   const double strain = dyn_.storey_energies(y_, hysteretic);
-  for (int i = 0; i < n_; ++i) e.kinetic += 0.5 * std::pow(y_(n_ + i), 2) / row_.inv_mass(i);
+  for (int i = 0; i < n_; ++i)  // (a massless base DOF has none)
+    if (row_.inv_mass(i) != 0.0) e.kinetic += 0.5 * std::pow(y_(n_ + i), 2) / row_.inv_mass(i);
   e.strain = strain;
   e.hysteretic = hysteretic.sum();
   e.input = y_(at.energies);

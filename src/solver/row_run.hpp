@@ -62,12 +62,19 @@ class RowRun {
     double a, fa, b, fb;
   };
 
-  void rhs(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy) { dyn_.rhs(t, y, dy); }
+  // The derivative dy at a new state y (and a massless base's velocities into y: project()).
+  void rhs(double t, Eigen::VectorXd& y, Eigen::VectorXd& dy) {
+    dyn_.rhs(t, y, dy);
+    dyn_.project(y, dy);
+  }
   void step(double t, double h, const Eigen::VectorXd& y, const Eigen::VectorXd& k1,
             Eigen::VectorXd& y1, Eigen::VectorXd& err, Eigen::VectorXd& k7) {
-    auto f = [this](double tt, const Eigen::VectorXd& yy, Eigen::VectorXd& dy) { rhs(tt, yy, dy); };
+    auto f = [this](double tt, const Eigen::VectorXd& yy, Eigen::VectorXd& dy) {
+      dyn_.rhs(tt, yy, dy);
+    };
     dopri5_step(f, t, h, y, k1, y1, err, work_);
     k7 = work_.k7;
+    dyn_.project(y1, k7);
   }
   double error_norm(const Eigen::VectorXd& y0, const Eigen::VectorXd& y1,
                     const Eigen::VectorXd& err) const;

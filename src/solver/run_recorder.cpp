@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/error.hpp"
 
@@ -49,12 +50,16 @@ RunRecorder::RunRecorder(const AssembledRow& row, const std::vector<RowStorey>& 
       history_(history) {
   below_.assign(n_, -1);
   weight_.assign(n_, 0.0);
+  rot_.assign(n_, -1);
+  rot_h_.assign(n_, 0.0);
   for (int i = 0; i < n_; ++i) {  // a row's floors stand on the floor before them or the ground
     const int b = storeys[i].below;
-    if (b != -1 && b != i - 1)
-      throw std::logic_error("storey below floor DOF " + std::to_string(i));
+    // ... or on a flexible foundation (issue 29): the drifts of peaks_over_step's general path.
+    if ((b != -1 && b != i - 1) || storeys[i].rot >= 0) general_ = true;
     below_[i] = b;
     weight_[i] = b < 0 ? 0.0 : 1.0;
+    rot_[i] = storeys[i].rot;
+    rot_h_[i] = storeys[i].rot >= 0 ? storeys[i].p.h : 0.0;
   }
   bounds_.assign(2 * n_, 0.0);
   for (const auto& s : row.sites) site_dofs_.emplace_back(s.dof_left, s.dof_right);
@@ -69,10 +74,16 @@ void RunRecorder::set_collapse(const std::vector<RowStorey>& storeys, double rat
   storey_no_.assign(n_, 1);
   nb_ = 0;
   for (int i = 0; i < n_; ++i) {
-    collapse_drift_[i] = ratio * storeys[i].p.h;
     building_[i] = storeys[i].building;
-    storey_no_[i] = below_[i] >= 0 ? storey_no_[below_[i]] + 1 : 1;
     nb_ = std::max(nb_, building_[i] + 1);
+    if (storeys[i].foundation) {  // a foundation spring: no storey, no collapse drift
+      collapse_drift_[i] = std::numeric_limits<double>::infinity();
+      storey_no_[i] = 0;
+      continue;
+    }
+    collapse_drift_[i] = ratio * storeys[i].p.h;
+    const int b = below_[i];
+    storey_no_[i] = b >= 0 && !storeys[b].foundation ? storey_no_[b] + 1 : 1;
   }
 }
 
@@ -83,8 +94,7 @@ void RunRecorder::start(const Eigen::VectorXd& u0) {
   held_.assign(n_, 0);
   any_held_ = false;
   energy_held_ = false;
-  for (int k = 0; k < n_ && check_collapse_; ++k)
-    last_drift_[k] = below_[k] >= 0 ? u0(k) - u0(below_[k]) : u0(k);
+  for (int k = 0; k < n_ && check_collapse_; ++k) last_drift_[k] = drift(u0.data(), k);
   r_.peak_disp.setZero(n_);
   r_.peak_drift.setZero(n_);
   r_.peak_abs_accel.setZero(n_);
@@ -110,6 +120,34 @@ std::vector<int> RunRecorder::hold_collapsed(bool& all) {
     }
   any_held_ = any_held_ || !now.empty();
   return now;
+}
+
+void RunRecorder::peaks_over_step_general(const Eigen::VectorXd& y0, const Eigen::VectorXd& y1,
+                                          const Eigen::VectorXd& dy0, const Eigen::VectorXd& dy1,
+                                          double t0, double h) {
+  const int n = n_;
+  const double h2 = h * h;
+  // The quintic of q = sum_j w_j u_j from the values, rates and accelerations at both ends.
+  auto quintic = [&](int i, int b, int r, double hr) {
+    QuinticHermite q{y0(i), y1(i), h * y0(n + i), h * y1(n + i), h2 * dy0(n + i), h2 * dy1(n + i)};
+    for (auto [j, w] : {std::pair{b, -1.0}, std::pair{r, -hr}}) {
+      if (j < 0) continue;
+      q.g0 += w * y0(j);
+      q.g1 += w * y1(j);
+      q.m0 += w * h * y0(n + j);
+      q.m1 += w * h * y1(n + j);
+      q.c0 += w * h2 * dy0(n + j);
+      q.c1 += w * h2 * dy1(n + j);
+    }
+    return q;
+  };
+  for (int i = 0; i < n; ++i) {
+    if (any_held_ && held_[i]) continue;
+    r_.peak_disp(i) = quintic(i, -1, -1, 0.0).raise_peak(r_.peak_disp(i));
+    const QuinticHermite d = quintic(i, below_[i], rot_[i], rot_h_[i]);
+    r_.peak_drift(i) = d.raise_peak(r_.peak_drift(i));
+    if (check_collapse_ && r_.peak_drift(i) > collapse_drift_[i]) step_collapse(i, d, t0, h);
+  }
 }
 
 void RunRecorder::sampled_collapse(int k, double d, double t, double h) {

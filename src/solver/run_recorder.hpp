@@ -58,7 +58,9 @@ class RunRecorder {
     for (int k = 0; k < n_; ++k) {
       if (any_held_ && held_[k]) continue;
       const int b = below_[k];
-      const double a = a_rel[k] + ag[k], d = b >= 0 ? u(k) - u(b) : u(k);
+      double d = b >= 0 ? u(k) - u(b) : u(k);
+      if (rot_[k] >= 0) d -= rot_h_[k] * u(rot_[k]);  // on a flexible foundation
+      const double a = a_rel[k] + ag[k];
       r_.peak_disp(k) = std::max(r_.peak_disp(k), std::fabs(u(k)));
       r_.peak_drift(k) = std::max(r_.peak_drift(k), std::fabs(d));
       r_.peak_abs_accel(k) = std::max(r_.peak_abs_accel(k), std::fabs(a));
@@ -162,6 +164,17 @@ class RunRecorder {
 
  private:
   [[noreturn]] static void throw_non_finite(double t, const char* what);
+  // The drift of DOF k's storey at displacements u [m] (row.hpp storey_drift).
+  double drift(const double* u, int k) const {
+    double d = below_[k] >= 0 ? u[k] - u[below_[k]] : u[k];
+    if (rot_[k] >= 0) d -= rot_h_[k] * u[rot_[k]];
+    return d;
+  }
+  // peaks_over_step for a row with a flexible foundation (general_): the drift quintics with
+  // the base's sway below the first storey and its rotation in every storey.
+  void peaks_over_step_general(const Eigen::VectorXd& y0, const Eigen::VectorXd& y1,
+                               const Eigen::VectorXd& dy0, const Eigen::VectorXd& dy1, double t0,
+                               double h);
   // Collapse at the step end t of a step of h at storey k whose drift went from last_drift_[k]
   // to d (linear between).
   void sampled_collapse(int k, double d, double t, double h);
@@ -177,6 +190,9 @@ class RunRecorder {
   bool contacts_ = false, history_ = false;
   std::vector<int> below_;      // per DOF: the floor DOF under its storey, -1 on the ground
   std::vector<double> weight_;  // per DOF: 1 where its storey stands on a floor, 0 on the ground
+  std::vector<int> rot_;        // per DOF: its building's base rotation DOF, -1 (fixed base)
+  std::vector<double> rot_h_;   // per DOF: its storey's height where rot_ >= 0 [m]
+  bool general_ = false;        // a storey on a flexible foundation (issue 29)
   std::vector<double> bounds_;  // scratch of peaks_over_step (peak_bounds)
   std::vector<std::pair<int, int>> site_dofs_;  // per site: left and right floor DOF
   // Collapse: per DOF its storey's collapse drift [m] (infinite: none), building, storey number
@@ -199,6 +215,10 @@ inline void RunRecorder::peaks_over_step(const Eigen::VectorXd& y0, const Eigen:
   // Displacement and drift extrema inside the step from the quintic Hermite interpolant of the
   // displacements, velocities and accelerations at both ends (sixth-order accurate: exact steps
   // of h_max = T_min / 20 leave the peaks within 1e-8 of the motion between them).
+  if (general_) {
+    peaks_over_step_general(y0, y1, dy0, dy1, t0, h);
+    return;
+  }
   const int n = n_;
   const double h2 = h * h;
   const double* bound = bounds_.data();

@@ -5,6 +5,8 @@
 #include <limits>
 
 #include "hysteresis/registry.hpp"
+#include "structure/building_on_base.hpp"
+#include "structure/foundation.hpp"
 
 namespace pound {
 
@@ -32,45 +34,83 @@ std::vector<RowStorey> elastic_storeys(const AssembledRow& a) {
 
 AssembledRow assemble(const BuildingRow& row) {
   AssembledRow out;
+  const int nb = static_cast<int>(row.buildings.size());
+  std::vector<BaseMatrices> bm;
   int n = 0;
   for (const auto& b : row.buildings) {
     out.offset.push_back(n);
     n += b.floors();
+    bm.push_back(assemble_on_base(b));
   }
+  out.floors = n;
+  out.sway.assign(nb, -1);
+  out.rot.assign(nb, -1);
+  for (int b = 0; b < nb; ++b)
+    if (bm[b].flexible) {
+      out.sway[b] = n++;
+      out.rot[b] = n++;
+    }
   out.M = Eigen::MatrixXd::Zero(n, n);
   out.C = Eigen::MatrixXd::Zero(n, n);
   out.K = Eigen::MatrixXd::Zero(n, n);
   out.Kg = Eigen::MatrixXd::Zero(n, n);
-  for (std::size_t b = 0; b < row.buildings.size(); ++b) {
+  out.influence = Eigen::VectorXd::Ones(n);
+  out.building_of.assign(n, 0);
+  out.storeys.resize(n);
+  for (int b = 0; b < nb; ++b) {
     const Building& bd = row.buildings[b];
-    const auto m = assemble(bd);
-    const int o = out.offset[b], nb = bd.floors();
-    out.M.block(o, o, nb, nb) = m.M;
-    out.C.block(o, o, nb, nb) = m.C;
-    if (bd.p_delta) {
-      out.K.block(o, o, nb, nb) = m.K - m.Kg;
-      out.Kg.block(o, o, nb, nb) = m.Kg;
-    } else {
-      out.K.block(o, o, nb, nb) = m.K;
+    const BaseMatrices& m = bm[b];
+    const int o = out.offset[b], nf = bd.floors();
+    // Local DOF l of the building (its floors, then sway and rotation) -> global DOF.
+    auto at = [&](int l) { return l < nf ? o + l : (l == nf ? out.sway[b] : out.rot[b]); };
+    for (int l = 0; l < m.dofs(); ++l) {
+      out.building_of[at(l)] = b;
+      out.influence(at(l)) = m.influence(l);
+      for (int k = 0; k < m.dofs(); ++k) {
+        out.M(at(l), at(k)) = m.M(l, k);
+        out.C(at(l), at(k)) = m.C(l, k);
+        out.K(at(l), at(k)) = bd.p_delta ? m.K0(l, k) - m.Kg(l, k) : m.K0(l, k);
+        if (bd.p_delta) out.Kg(at(l), at(k)) = m.Kg(l, k);
+      }
     }
     out.periods.push_back(m.periods);
     const StoreyLaw& law = find_storey_law(bd.hysteresis, bd.name);
     // Linear: the forces are K u and the damping C v with constant matrices.
     out.linear = out.linear && law.linear();
-    for (int j = 0; j < nb; ++j) {
-      RowStorey s;
+    const double a1 = m.rayleigh_a1;
+    for (int j = 0; j < nf; ++j) {
+      RowStorey& s = out.storeys[o + j];
       s.law = &law;
       s.p = bd.storey(j);
-      s.below = j > 0 ? o + j - 1 : -1;
-      s.above = j + 1 < nb ? o + j + 1 : -1;
-      s.building = static_cast<int>(b);
+      s.below = j > 0 ? o + j - 1 : out.sway[b];
+      s.above = j + 1 < nf ? o + j + 1 : -1;
+      s.building = b;
+      s.rot = out.rot[b];
       s.kg = bd.geometric_stiffness(j);
-      if (bd.damping_stiffness == DampingStiffness::tangent) s.damping_a1 = m.rayleigh_a1;
-      out.storeys.push_back(s);
+      if (bd.damping_stiffness == DampingStiffness::tangent) s.damping_a1 = a1;
+    }
+    if (!m.flexible) continue;
+    // The base's sway and rotation, each on its foundation spring (a linear "storey").
+    const StoreyLaw& elastic = find_storey_law("elastic", bd.name);
+    const FoundationConstants f = foundation_constants(bd.foundation);
+    for (int k = 0; k < 2; ++k) {
+      RowStorey& s = out.storeys[k == 0 ? out.sway[b] : out.rot[b]];
+      s.law = &elastic;
+      s.p.k0 = k == 0 ? f.sway_stiffness : f.rocking_stiffness;
+      s.building = b;
+      s.above = k == 0 ? o : -1;
+      s.foundation = true;
     }
   }
-  out.inv_mass = out.M.diagonal().cwiseInverse();
-  for (int p = 0; p + 1 < static_cast<int>(row.buildings.size()); ++p) {
+  out.inv_mass = Eigen::VectorXd::Zero(n);
+  out.massless.assign(n, 0);
+  for (int i = 0; i < n; ++i) {
+    if (out.M(i, i) > 0.0)
+      out.inv_mass(i) = 1.0 / out.M(i, i);
+    else
+      out.massless[i] = 1;
+  }
+  for (int p = 0; p + 1 < nb; ++p) {
     for (int j = 0; j < colliding_levels(row, p); ++j) {
       ContactSite s;
       s.pair = p;

@@ -27,13 +27,22 @@ struct ContactSite {
   double gap = 0.0;   ///< at-rest gap [m]
 };
 
-/// The storey below one floor DOF (storey j joins floor j-1, or the ground, to floor j).
+/// The storey below one floor DOF (storey j joins floor j-1, or the ground, to floor j). A
+/// building on a flexible foundation (structure/building_on_base.hpp) has two DOFs more, its
+/// base's sway and rotation, each held by its foundation spring as by a linear "storey" on the
+/// ground (`foundation`); its storeys' deformations are d = u_dof - u_below - h u_rot.
 struct RowStorey {
   const StoreyLaw* law = nullptr;  ///< hysteresis/registry.hpp
   StoreyParameters p;              ///< k0 = the storey stiffness of K
   int below = -1;                  ///< global DOF of the floor below, -1 for the ground
   int above = -1;                  ///< global DOF of the floor above, -1 for the roof
   int building = 0;                ///< 0-based
+  /// The building's base rotation DOF (-1: a fixed base): the deformation loses h theta, h the
+  /// storey's height p.h [m] (issue 29).
+  int rot = -1;
+  /// The spring of a base DOF on the ground (sway or rotation), not a storey of floors: no
+  /// drift ratio, collapse or ductility (issue 29).
+  bool foundation = false;
   /// P-Delta: the geometric stiffness P / h of the storey [N/m] (0 without): the storey's shear
   /// is the law's V minus kg times its drift.
   double kg = 0.0;
@@ -58,7 +67,35 @@ struct AssembledRow {
   std::vector<RowStorey> storeys;  ///< one per floor DOF
   bool linear = true;              ///< every storey law linear (elastic)
   int dofs() const { return static_cast<int>(inv_mass.size()); }
+  // Foundations (issue 29): the floors' DOFs come first, building after building (offset); the
+  // bases' sway and rotation of the buildings on a flexible foundation follow them.
+  int floors = 0;                ///< floor DOFs (the first `floors` DOFs)
+  std::vector<int> sway, rot;    ///< per building its base DOFs, -1 on a fixed base
+  std::vector<int> building_of;  ///< per DOF its building (0-based)
+  /// Per DOF 1 where the earthquake loads -m ag (floors, base sway), 0 on a rotation.
+  Eigen::VectorXd influence;
+  /// Per DOF: no mass (a foundation whose mass or rotary inertia is 0): a first-order DOF held by
+  /// its dashpot; inv_mass is 0 there.
+  std::vector<char> massless;
+  bool any_massless() const {
+    for (char m : massless)
+      if (m) return true;
+    return false;
+  }
 };
+
+/// The deformation of DOF i's storey at displacements u [m]: u_i - u_below - h u_rot (the ground
+/// and a fixed base contribute nothing; a foundation spring's is its DOF's displacement).
+inline double storey_drift(const RowStorey& s, int i, const double* u) {
+  double d = u[i];
+  if (s.below >= 0) d -= u[s.below];
+  if (s.rot >= 0) d -= s.p.h * u[s.rot];
+  return d;
+}
+/// Its chord u_i - u_below, on which P-Delta acts [m] (the deformation plus the base's tilt).
+inline double storey_chord(const RowStorey& s, int i, const double* u) {
+  return s.below >= 0 ? u[i] - u[s.below] : u[i];
+}
 
 /// Linear elastic storeys for an assembled row built by hand (free bodies, tests): the storey
 /// stiffness k_i = K(i, i) + K(i, i+1) and the floors below from the building offsets.

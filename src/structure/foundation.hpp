@@ -9,8 +9,8 @@
 //            constants of Wolf's cone model (Wolf 1994, "Foundation Vibration Analysis Using
 //            Simple Physical Models", Prentice Hall, ch. 2; Wolf & Deeks 2004, "Foundation
 //            Vibration Analysis: A Strength-of-Materials Approach", Elsevier, ch. 3).
-// The model only: the solvers do not simulate a foundation yet (study/foundation_options.hpp
-// refuses a study with one, naming it).
+// The solvers take it through structure/building_on_base.hpp: the base's sway and rotation are
+// degrees of freedom of the row (docs/ssi.md, "In the solvers").
 #include <complex>
 #include <string>
 #include <vector>

@@ -121,23 +121,4 @@ Foundation foundation_from_options(const Options& opt, const std::string& pre, s
   return f;
 }
 
-std::string unsimulated_foundation(const BuildingRow& row) {
-  for (std::size_t b = 0; b < row.buildings.size(); ++b) {
-    const Foundation& f = row.buildings[b].foundation;
-    if (f.flexible())
-      return "foundation '" + std::string(foundation_kind_name(f.kind)) + "' of building " +
-             std::to_string(b + 1) +
-             " is not simulated yet (issue 29); only foundation = fixed runs for now";
-  }
-  return "";
-}
-
-void refuse_unsimulated_foundations(const Options& opt, const BuildingRow& row) {
-  const std::string why = unsimulated_foundation(row);
-  if (why.empty()) return;
-  for (std::size_t b = 0; b < row.buildings.size(); ++b)
-    if (row.buildings[b].foundation.flexible())
-      throw InputError(opt.where("building" + std::to_string(b + 1) + ".foundation") + ": " + why);
-}
-
 }  // namespace pound

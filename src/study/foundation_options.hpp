@@ -31,13 +31,4 @@ std::vector<OptionSpec> foundation_option_specs();
 Foundation foundation_from_options(const Options& opt, const std::string& prefix,
                                    std::size_t floors);
 
-/// "foundation 'cone' of building 2 is not simulated yet (issue 29)..." for the first building
-/// of the row whose foundation is not fixed; "" when every one is fixed.
-std::string unsimulated_foundation(const BuildingRow& row);
-
-/// The solvers do not simulate foundations yet (issue 29): a row with one is refused, with the
-/// line of unsimulated_foundation() after where its [buildingN] foundation was given, so that
-/// no command ignores a foundation without a word.
-void refuse_unsimulated_foundations(const Options& opt, const BuildingRow& row);
-
 }  // namespace pound

@@ -22,8 +22,6 @@ RowStudy read_row_study(const Options& opt, const StudyUseOf& use_of) {
   }
   s.integrator = integrator_from_options(opt);
   s.simulation = simulation_from_options(opt);
-  // Last, after every key was checked: no solver simulates a foundation yet (issue 29).
-  refuse_unsimulated_foundations(opt, s.row);
   return s;
 }
 

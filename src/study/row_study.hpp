@@ -39,9 +39,7 @@ struct StudyUse {
 using StudyUseOf = std::function<StudyUse(const BuildingRow&)>;
 
 /// Reads and validates the row's keys; throws InputError (one line naming the file and line or
-/// the flag, the key and what is valid) on the first bad value. Last, after every key was
-/// checked, a building whose foundation is not fixed is refused: the solvers do not simulate
-/// foundations yet (issue 29, refuse_unsimulated_foundations).
+/// the flag, the key and what is valid) on the first bad value.
 RowStudy read_row_study(const Options& opt, const StudyUseOf& use_of = nullptr);
 
 }  // namespace pound

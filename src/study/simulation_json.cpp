@@ -1,13 +1,56 @@
 #include "study/simulation_json.hpp"
 
+#include <algorithm>
+#include <string>
+#include <utility>
+
 #include "io/json.hpp"
+#include "structure/foundation.hpp"
 
 namespace pound {
 namespace {
 
-// Per building: index, name, position and arrival delay, collapse, and its floors.
+// Building b's periods with its foundation, the foundation's constants in SI units whatever
+// way they were given, and its base's peak sway and rotation in each run (null on a fixed
+// base). The floors' displacements are relative to the free-field ground: they include the
+// base's sway and rocking (docs/ssi.md); the drifts are the storeys' deformations alone.
+void write_foundation(JsonWriter& w, const SimulationRun& run, const AssembledRow& a, int b,
+                      const Building& bd) {
+  const Eigen::VectorXd& periods = a.periods[static_cast<std::size_t>(b)];
+  w.key("periods_s").begin_array();
+  for (int i = 0; i < std::min<int>(3, static_cast<int>(periods.size())); ++i) w.value(periods(i));
+  w.end_array();
+  const FoundationConstants f = foundation_constants(bd.foundation);
+  w.key("foundation")
+      .begin_object()
+      .field("kind", std::string(foundation_kind_name(bd.foundation.kind)))
+      .field("sway_stiffness", f.sway_stiffness)
+      .field("rocking_stiffness", f.rocking_stiffness)
+      .field("sway_damping", f.sway_damping)
+      .field("rocking_damping", f.rocking_damping)
+      .field("trapped_rocking_inertia", f.trapped_rocking_inertia)
+      .field("foundation_mass", f.foundation_mass)
+      .field("foundation_inertia", f.foundation_inertia)
+      .end_object();
+  for (auto [key, dof] :
+       {std::pair{"peak_base_sway_m", a.sway[static_cast<std::size_t>(b)]},
+        std::pair{"peak_base_rotation_rad", a.rot[static_cast<std::size_t>(b)]}}) {
+    w.key(key).begin_object();
+    for (const RowResult* r : {&run.sim.pounding, &run.sim.free}) {
+      w.key(r == &run.sim.pounding ? "pounding" : "free");
+      if (dof >= 0 && dof < r->peak_disp.size())
+        w.value(r->peak_disp(dof));
+      else
+        w.null();
+    }
+    w.end_object();
+  }
+}
+
+// Per building: index, name, position and arrival delay, collapse, foundation, and its floors.
 void write_buildings(JsonWriter& w, const SimulationRun& run, const BuildingRow& row) {
   const RowSimulation& s = run.sim;
+  const AssembledRow a = assemble(row);
   for (std::size_t b = 0; b < row.buildings.size(); ++b) {
     w.begin_object().field("index", static_cast<long>(b)).field("name", row.buildings[b].name);
     // Where it stands along the row (null: not known) and when the ground motion reaches it.
@@ -37,6 +80,7 @@ void write_buildings(JsonWriter& w, const SimulationRun& run, const BuildingRow&
     };
     per_run("collapse_time_s", [](const BuildingCollapse& c) { return c.time; });
     per_run("collapse_storey", [](const BuildingCollapse& c) { return c.storey; });
+    write_foundation(w, run, a, static_cast<int>(b), row.buildings[b]);
     w.key("floors").begin_array();
     for (const auto& f : s.floors) {
       if (f.building != static_cast<int>(b)) continue;

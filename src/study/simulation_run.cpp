@@ -111,9 +111,6 @@ SimulationRun simulate_model(const BuildingRow& row, const RowGround& ground,
                              const ContactSpec& contact, const sears::SearsRowModel& sears,
                              const IntegratorSettings& integrator,
                              const RowSimulationOptions& options) {
-  // Neither solver has foundation degrees of freedom yet (issue 29): refused, never ignored.
-  const std::string foundation = unsimulated_foundation(row);
-  if (!foundation.empty()) throw InputError(foundation);
   SimulationRun r;
   if (is_sears_model(contact.model)) {
     auto ss = sears::simulate_sears_row(row, ground, sears, options);

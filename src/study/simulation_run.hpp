@@ -71,8 +71,7 @@ struct SimulationRun {
 /// The row on `ground` with and without pounding: by the damped Sears model (`sears`) when
 /// contact.model is sears, else by the lumped solver with contact's law and `integrator`. The
 /// one place that chooses between the two solvers (`pound simulate`, the Python module and the
-/// campaign's samples). Throws NumericalError on a numerical failure, InputError for a building
-/// whose foundation is not fixed (not simulated yet, issue 29).
+/// campaign's samples). Throws NumericalError on a numerical failure.
 SimulationRun simulate_model(const BuildingRow& row, const RowGround& ground,
                              const ContactSpec& contact, const sears::SearsRowModel& sears,
                              const IntegratorSettings& integrator,

@@ -1,10 +1,10 @@
 // The foundation keys (issue 29) are read by the one study reader (study/row_study.hpp) of
 // `pound simulate` and `pound campaign`: a bad value gets the same one line from both, exit
-// code 2 and no output file, as the other shared keys do (shared_keys_test.cpp). A good
-// foundation other than fixed is refused the same way, with one line saying that it is not
-// simulated yet, until the solvers have foundation degrees of freedom.
+// code 2 and no output file, as the other shared keys do (shared_keys_test.cpp); a good one is
+// simulated and reported.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <string>
 #include <utility>
@@ -120,11 +120,30 @@ TEST(FoundationKeys, ABadValueGetsTheSameLineFromSimulateAndCampaign) {
 }
 
 // Not simulated yet: stopped before any simulation with one clear line, never ignored.
-TEST(FoundationKeys, AGoodFoundationIsRefusedUntilTheSolversSimulateIt) {
-  expect_same_refusal(with(kCone, "building1.foundation", "cone"), "building1.foundation",
-                      "foundation 'cone' of building 1 is not simulated yet (issue 29)");
-  expect_same_refusal(with(kSprings, "building2.foundation", "springs"), "building2.foundation",
-                      "foundation 'springs' of building 2 is not simulated yet (issue 29)");
+// A good foundation is simulated (issue 29): pound simulate --json gives each building's
+// periods with its foundation and the foundation's constants in SI units, and its base's peak
+// sway and rotation.
+TEST(FoundationKeys, AGoodFoundationIsSimulatedAndReported) {
+  const std::string src = POUND_SOURCE_DIR;
+  const ScratchDir dir("pound_foundation_keys_");
+  std::string flags;
+  for (const Flags* f : {&kCone, &kSprings})
+    for (const auto& [k, v] : *f) flags += " --" + k + " " + v;
+  const int code = run_command(std::string(POUND_BINARY) + " simulate --config " + src +
+                               "/studies/ch6-sdof-pair.ini --json" + flags + " >" +
+                               (dir / "out.json") + " 2>" + (dir / "err.txt"));
+  ASSERT_EQ(code, 0) << slurp(dir / "err.txt");
+  const std::string json = slurp(dir / "out.json");
+  // The cone of building 1: G = 1900 x 150^2, K_x = 8 G r / (2 - nu) at r = 6.8, nu = 0.3.
+  const double G = 1900.0 * 150.0 * 150.0, kx = 8.0 * G * 6.8 / (2.0 - 0.3);
+  char expect[64];
+  std::snprintf(expect, sizeof expect, "\"sway_stiffness\":%.17g", kx);
+  EXPECT_NE(json.find("\"kind\":\"cone\""), std::string::npos) << json;
+  EXPECT_NE(json.find(expect), std::string::npos) << expect << " in " << json;
+  EXPECT_NE(json.find("\"kind\":\"springs\",\"sway_stiffness\":1000000000,"), std::string::npos)
+      << json;
+  EXPECT_NE(json.find("\"periods_s\":[0.5"), std::string::npos) << json;  // longer than 0.5 s
+  EXPECT_EQ(json.find("\"peak_base_sway_m\":{\"pounding\":null"), std::string::npos) << json;
 }
 
 }  // namespace

@@ -6,10 +6,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
 #include "campaign/campaign_study.hpp"
+#include "campaign/sample.hpp"
 #include "core/error.hpp"
 #include "study/row_options.hpp"
 
@@ -131,18 +133,23 @@ TEST(SampledFoundation, EachNeedsItsFoundationAndRange) {
   EXPECT_EQ(error_of({"--sample.building1.soil_poisson", "uniform(0, 0.49)"}), "(no error)");
 }
 
-// The campaign reads the row and checks its sampled parameters, then stops: no solver simulates
-// a foundation yet.
-TEST(SampledFoundation, ACampaignOnAFoundationIsRefusedForNow) {
-  try {
-    campaign_from_options(
-        campaign_options({"--sample.building1.soil_shear_velocity", "uniform(100, 200)"}), 4, 1);
-    FAIL() << "a campaign on a cone was accepted";
-  } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()),
-              "command line: --building1.foundation: foundation 'cone' of building 1 is not "
-              "simulated yet (issue 29); only foundation = fixed runs for now");
+// A campaign on soil samples it (issue 29): each sample's cone has its own shear wave velocity,
+// the /samples column, and the samples are simulated.
+TEST(SampledFoundation, ACampaignSamplesTheSoilAndSimulatesIt) {
+  const CampaignStudy st = campaign_from_options(
+      campaign_options({"--sample.building1.soil_shear_velocity", "uniform(100, 200)"}), 4, 1);
+  SampleRunner runner(st);
+  double lo = 1e300, hi = 0.0;
+  for (long id = 0; id < 4; ++id) {
+    const SampleOutcome o = runner.run(id);
+    EXPECT_EQ(o.status, SampleStatus::ok) << o.message;
+    ASSERT_EQ(o.values.size(), 1u);
+    lo = std::min(lo, o.values[0]);
+    hi = std::max(hi, o.values[0]);
   }
+  EXPECT_GE(lo, 100.0);
+  EXPECT_LE(hi, 200.0);
+  EXPECT_GT(hi - lo, 10.0);  // the four samples have their own soils
 }
 
 }  // namespace

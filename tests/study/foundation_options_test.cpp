@@ -1,7 +1,6 @@
 // The foundation keys (issue 29, study/foundation_options.hpp): read once by the study reader
 // into each Building, with their defaults, one or per-floor inertias, the keys of another kind
-// range-checked and ignored, errors naming the key and what is valid; and the refusal of a
-// foundation other than fixed, which the solvers do not simulate yet.
+// range-checked and ignored, errors naming the key and what is valid.
 #include "study/foundation_options.hpp"
 
 #include <gtest/gtest.h>
@@ -69,7 +68,6 @@ TEST(FoundationOptions, FixedIsTheDefault) {
     EXPECT_EQ(b.foundation.kind, FoundationKind::fixed);
     EXPECT_TRUE(b.foundation.floor_inertias.empty());
   }
-  EXPECT_EQ(unsimulated_foundation(row), "");
 }
 
 TEST(FoundationOptions, ConeAndSpringsKeysReachEachBuilding) {
@@ -153,25 +151,14 @@ TEST(FoundationOptions, BadValuesNameTheKeyAndWhatIsValid) {
 // Until the solvers have foundation degrees of freedom, the study reader stops a row with one,
 // after every other key was checked, naming where it was given; simulate_model (the one entry
 // of both solvers) refuses it too, so that no caller ignores a foundation without a word.
-TEST(FoundationOptions, AFoundationOtherThanFixedIsRefusedForNow) {
-  EXPECT_EQ(error_of(kCone),
-            "command line: --building1.foundation: foundation 'cone' of building 1 is not "
-            "simulated yet (issue 29); only foundation = fixed runs for now");
-  EXPECT_EQ(error_of(kSprings),
-            "command line: --building2.foundation: foundation 'springs' of building 2 is not "
-            "simulated yet (issue 29); only foundation = fixed runs for now");
-  // A bad value elsewhere is named first.
+TEST(FoundationOptions, TheStudyReaderKeepsEveryFoundation) {
+  EXPECT_EQ(error_of(kCone), "");
+  EXPECT_EQ(error_of(kSprings), "");
+  // A bad value elsewhere is still named.
   EXPECT_NE(error_of(joined(kCone, {"--contact.e", "2"})).find("contact.e"), std::string::npos);
-  const BuildingRow row = row_from_options(parsed(kCone));
-  try {
-    simulate_model(row, RowGround(), ContactSpec(), sears::SearsRowModel(), IntegratorSettings(),
-                   RowSimulationOptions());
-    FAIL() << "a cone foundation was simulated";
-  } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()),
-              "foundation 'cone' of building 1 is not simulated yet (issue 29); only foundation = "
-              "fixed runs for now");
-  }
+  const RowStudy st = read_row_study(parsed(kCone));
+  EXPECT_EQ(st.row.buildings[0].foundation.kind, FoundationKind::cone);
+  EXPECT_EQ(st.row.buildings[1].foundation.kind, FoundationKind::fixed);
 }
 
 TEST(FoundationOptions, KeysAreDeclaredWithUnits) {

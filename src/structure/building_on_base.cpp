@@ -1,0 +1,99 @@
+#include "structure/building_on_base.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "structure/foundation.hpp"
+
+namespace pound {
+
+Eigen::VectorXd undamped_periods(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K) {
+  const int n = static_cast<int>(M.rows());
+  std::vector<int> a, b;  // DOFs with and without mass
+  for (int i = 0; i < n; ++i) (M(i, i) > 0.0 ? a : b).push_back(i);
+  const int na = static_cast<int>(a.size()), nb = static_cast<int>(b.size());
+  Eigen::MatrixXd Kaa(na, na), Kab(na, nb), Kbb(nb, nb);
+  Eigen::VectorXd m(na);
+  for (int i = 0; i < na; ++i) {
+    m(i) = M(a[i], a[i]);
+    for (int j = 0; j < na; ++j) Kaa(i, j) = K(a[i], a[j]);
+    for (int j = 0; j < nb; ++j) Kab(i, j) = K(a[i], b[j]);
+  }
+  for (int i = 0; i < nb; ++i)
+    for (int j = 0; j < nb; ++j) Kbb(i, j) = K(b[i], b[j]);
+  // Static condensation of the massless DOFs (Guyan): their forces are in equilibrium.
+  if (nb > 0) Kaa -= Kab * Kbb.ldlt().solve(Kab.transpose());
+  const Eigen::VectorXd s = m.cwiseSqrt().cwiseInverse();
+  const Eigen::MatrixXd A = s.asDiagonal() * Kaa * s.asDiagonal();
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(A);
+  const Eigen::VectorXd w = eig.eigenvalues().cwiseMax(0.0).cwiseSqrt();  // ascending
+  Eigen::VectorXd periods(na);
+  for (int i = 0; i < na; ++i)
+    periods(i) = w(i) > 0.0 ? 2.0 * M_PI / w(i) : std::numeric_limits<double>::infinity();
+  return periods;
+}
+
+BaseMatrices assemble_on_base(const Building& b) {
+  const BuildingMatrices fixed = assemble(b);
+  BaseMatrices out;
+  out.rayleigh_a1 = fixed.rayleigh_a1;
+  const int n = b.floors();
+  out.heights.resize(n);
+  double h = 0.0;
+  for (int j = 0; j < n; ++j) out.heights[j] = h += b.storey_heights[j];
+  if (!b.foundation.flexible()) {
+    out.M = fixed.M;
+    out.K0 = fixed.K;
+    out.Kg = fixed.Kg;
+    out.C = fixed.C;
+    out.influence = Eigen::VectorXd::Ones(n);
+    out.periods = fixed.periods;
+    return out;
+  }
+  const FoundationConstants f = foundation_constants(b.foundation);
+  const int m = n + 2, sway = n, rot = n + 1;
+  out.flexible = true;
+  out.M = Eigen::MatrixXd::Zero(m, m);
+  out.K0 = Eigen::MatrixXd::Zero(m, m);
+  out.Kg = Eigen::MatrixXd::Zero(m, m);
+  out.C = Eigen::MatrixXd::Zero(m, m);
+  out.influence = Eigen::VectorXd::Ones(m);
+  out.influence(rot) = 0.0;
+  double inertia = f.foundation_inertia;
+  for (int j = 0; j < n; ++j) {
+    out.M(j, j) = b.masses[j];
+    inertia += f.floor_inertia(static_cast<std::size_t>(j));
+  }
+  out.M(sway, sway) = f.foundation_mass;
+  out.M(rot, rot) = inertia;
+  // Storey j: its deformation d_j = g_j . x with g_j = e_j - e_j-1 (e_-1: the sway) - h_j e_rot,
+  // its chord c_j = e_j - e_j-1 (physics.md section 5a).
+  for (int j = 0; j < n; ++j) {
+    Eigen::VectorXd g = Eigen::VectorXd::Zero(m), c = Eigen::VectorXd::Zero(m);
+    c(j) = 1.0;
+    c(j > 0 ? j - 1 : sway) = -1.0;
+    g = c;
+    g(rot) = -b.storey_heights[j];
+    out.K0 += b.stiffnesses[j] * g * g.transpose();
+    out.Kg += b.geometric_stiffness(j) * c * c.transpose();
+  }
+  out.K0(sway, sway) += f.sway_stiffness;
+  out.K0(rot, rot) += f.rocking_stiffness;
+  // The structure's damping on the floors' displacements relative to the base,
+  // U_j - u0 - H_j theta: C = T^T C_fixed T, and the dashpots.
+  Eigen::MatrixXd T = Eigen::MatrixXd::Zero(n, m);
+  for (int j = 0; j < n; ++j) {
+    T(j, j) = 1.0;
+    T(j, sway) = -1.0;
+    T(j, rot) = -out.heights[j];
+  }
+  out.C = T.transpose() * fixed.C * T;
+  out.C(sway, sway) += f.sway_damping;
+  out.C(rot, rot) += f.rocking_damping;
+  out.periods = undamped_periods(out.M, out.K0);
+  return out;
+}
+
+}  // namespace pound

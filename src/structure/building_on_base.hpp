@@ -1,0 +1,50 @@
+#pragma once
+// One building on its foundation (issue 29; docs/ssi.md, physics.md section 5a): the matrices of
+// its floors and, on a flexible foundation, its base's sway u0 and rotation theta.
+//
+// Coordinates: U_j, floor j's horizontal displacement relative to the free-field ground under
+// the building, U_j = u0 + H_j theta + (the storey deformations below floor j), H_j the floor's
+// height above the base; then u0 and theta. So the mass matrix is diagonal (m_j; the base's m0;
+// the rotary inertia I0 + trapped soil + sum of the floors' own J_j, every floor turning with
+// the base), and the contact between neighbours acts on U (plus the ground's own displacement)
+// as on a fixed base. Storey j's deformation, on which its law acts, is
+//     d_j = U_j - U_j-1 - h_j theta    (U_0 = u0),
+// and its P-Delta acts on its chord U_j - U_j-1 (the storey's tilt d_j / h_j + theta: gravity acts
+// on the rotation too, the overturning moment of the floors' weights about the base). The
+// foundation's springs and dashpots act on u0 and theta; the earthquake loads -m ag on every
+// translating mass (the floors and m0), none on the rotation. The structure's own damping is the
+// fixed-base building's (structure/building.hpp) acting on the deformations: C = T^T C_fixed T,
+// T the map from (U, u0, theta) to the floors' displacements relative to the base,
+// U_j - u0 - H_j theta. On a fixed base the matrices are the fixed-base ones.
+// Kernel only: no files, no printing.
+#include <Eigen/Dense>
+#include <vector>
+
+#include "structure/building.hpp"
+
+namespace pound {
+
+struct BaseMatrices {
+  /// Degrees of freedom: the n floors, then (flexible foundation) sway and rotation.
+  Eigen::MatrixXd M;          ///< diagonal: m_j [kg], m0 [kg], rotary inertia [kg m^2]
+  Eigen::MatrixXd K0;         ///< the storeys' initial stiffnesses and the foundation springs
+  Eigen::MatrixXd Kg;         ///< P-Delta on the storeys' chords (zero without): K0 - Kg acts
+  Eigen::MatrixXd C;          ///< the structure's damping on the deformations, and the dashpots
+  Eigen::VectorXd influence;  ///< per DOF: 1 where the earthquake loads -m ag, 0 (rotation)
+  /// Undamped periods with the foundation, without P-Delta, longest first [s]; a massless sway
+  /// or rotation is condensed out (it has no mode of its own).
+  Eigen::VectorXd periods;
+  std::vector<double> heights;  ///< H_j of floor j above the base [m]
+  bool flexible = false;        ///< sway and rotation DOFs
+  double rayleigh_a1 = 0.0;     ///< the fixed-base building's Rayleigh a1 [s] (tangent damping)
+  int dofs() const { return static_cast<int>(M.rows()); }
+};
+
+/// The matrices of `b` on its foundation (b.foundation; fixed: the fixed-base building's).
+BaseMatrices assemble_on_base(const Building& b);
+
+/// The undamped periods of K x = w^2 M x, longest first [s], with the DOFs whose mass is zero
+/// condensed statically (K* = K_aa - K_ab K_bb^-1 K_ba on the others). Needs M diagonal.
+Eigen::VectorXd undamped_periods(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K);
+
+}  // namespace pound
