@@ -74,7 +74,7 @@ RowSimulation simulate_row(const BuildingRow& row, const RowGround& ground,
                            const ContactSpec& contact, const IntegratorSettings& integ,
                            const RowSimulationOptions& opt) {
   const AssembledRow a = assemble(row);
-  const auto laws = make_site_laws(contact, row, a);
+  const auto laws = make_site_laws(contact, a);
   RowProblem p;
   p.row = &a;
   opt.apply_to(p, ground);
