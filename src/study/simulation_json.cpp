@@ -105,15 +105,12 @@ std::string simulation_json(const BuildingRow& row, const SimulationRun& run) {
   w.end_array();
   if (!slabs.empty()) {
     // Damped Sears model: peak accelerations of the colliding slabs.
-    w.key("slabs").begin_array();
-    for (const auto& p : slabs)
-      w.begin_object()
-          .field("building", p.building)
+    w.objects("slabs", slabs, [&](const sears::SlabPeaks& p) {
+      w.field("building", p.building)
           .field("floor", p.floor)
           .field("peak_face_accel_mps2", p.face_accel)
-          .field("peak_centre_accel_mps2", p.centre_accel)
-          .end_object();
-    w.end_array();
+          .field("peak_centre_accel_mps2", p.centre_accel);
+    });
   }
   // Energy balance of each run [J] (RowResult::energy).
   for (const auto* r : {&s.pounding, &s.free}) {
