@@ -84,8 +84,8 @@ Differences compare(const RowSimulation& d, const RowSimulation& r, const std::v
   Differences x;
   for (std::size_t i = 0; i < d.floors.size(); ++i) {
     x.disp = std::max(x.disp, rel(d.floors[i].disp_pounding, r.floors[i].disp_pounding));
-    x.drift =
-        std::max(x.drift, rel(d.floors[i].drift_ratio_pounding, r.floors[i].drift_ratio_pounding));
+    x.drift = std::max(
+        x.drift, rel(d.floors[i].peak_drift_ratio_pounding, r.floors[i].peak_drift_ratio_pounding));
   }
   for (std::size_t s = 0; s < d.sites.size(); ++s)
     x.force = std::max(x.force, rel(d.sites[s].peak_force, r.sites[s].peak_force));
@@ -199,8 +199,8 @@ SearsDifferences sears_differences(const sears::SearsRowSimulation& e,
   double* d = x.d;
   for (std::size_t i = 0; i < r.base.floors.size(); ++i) {
     d[0] = std::max(d[0], rel(e.base.floors[i].disp_pounding, r.base.floors[i].disp_pounding));
-    d[1] = std::max(
-        d[1], rel(e.base.floors[i].drift_ratio_pounding, r.base.floors[i].drift_ratio_pounding));
+    d[1] = std::max(d[1], rel(e.base.floors[i].peak_drift_ratio_pounding,
+                              r.base.floors[i].peak_drift_ratio_pounding));
     d[2] = std::max(d[2], rel(e.base.floors[i].accel_pounding, r.base.floors[i].accel_pounding));
   }
   for (std::size_t k = 0; k < r.base.sites.size(); ++k) {
@@ -327,18 +327,18 @@ void inelastic_case(const std::string& src, long samples) {
         if (std::isfinite(p[i]) && std::isfinite(q[i])) out = std::max(out, rel(p[i], q[i]));
     };
     cmp(oi.disp_pounding, of.disp_pounding, x.disp);
-    cmp(oi.drift_pounding, of.drift_pounding, x.drift);
+    cmp(oi.peak_drift_ratio_pounding, of.peak_drift_ratio_pounding, x.drift);
     cmp(oi.peak_force, of.peak_force, x.force);
     for (std::size_t k = 0; k < oi.impacts.size(); ++k)
       if (std::isfinite(oi.impacts[k])) x.same_impacts &= oi.impacts[k] == of.impacts[k];
     double duct = 0.0;
-    for (std::size_t k = 0; k < oi.drift_pounding.size(); ++k)
-      if (std::isfinite(oi.drift_pounding[k])) {
+    for (std::size_t k = 0; k < oi.peak_drift_ratio_pounding.size(); ++k)
+      if (std::isfinite(oi.peak_drift_ratio_pounding[k])) {
         const std::size_t b = k / static_cast<std::size_t>(study.max_floors()),
                           j = k % static_cast<std::size_t>(study.max_floors());
         const Building& bd = study.row.buildings[b];
         if (!bd.yield_shears.empty())
-          duct = std::max(duct, oi.drift_pounding[k] * bd.storey_heights[j] /
+          duct = std::max(duct, oi.peak_drift_ratio_pounding[k] * bd.storey_heights[j] /
                                     bd.storey(static_cast<int>(j)).uy());
       }
     std::printf("%4ld %-10s %8.3f %9.2f %10.4f %10.4f %10.4f %8.3f %7.3f%% %7.3f%% %7.3f%% %8s%s\n",
@@ -592,7 +592,7 @@ int main(int argc, char** argv) {
         if (std::isfinite(p[i]) && std::isfinite(q[i])) out = std::max(out, rel(p[i], q[i]));
     };
     cmp(e.disp_pounding, f.disp_pounding, x.disp);
-    cmp(e.drift_pounding, f.drift_pounding, x.drift);
+    cmp(e.peak_drift_ratio_pounding, f.peak_drift_ratio_pounding, x.drift);
     cmp(e.peak_force, f.peak_force, x.force);
     for (std::size_t s = 0; s < e.impacts.size(); ++s) {
       if (!std::isfinite(e.impacts[s])) continue;

@@ -48,7 +48,7 @@ def fractions(df, names, levels, limit):
     rows = []
     for b, name in enumerate(names, start=1):
         for run in ("pounding", "free"):
-            exceeds = ok[f"building{b}.peak_drift_{run}"] > limit
+            exceeds = ok[f"building{b}.peak_drift_ratio_{run}"] > limit
             collapsed = ok.get(f"building{b}.collapsed_{run}")
             for g, part in exceeds.groupby(group):
                 row = {"building": name, "run": run, "stripe": int(g),

@@ -81,6 +81,7 @@ extern "C" int LLVMFuzzerInitialize(int* argc, char*** argv) {
                         "seed",
                         "samples",
                         "peak_force",
+                        "peak_drift_ratio_pounding",
                         "peak_drift_pounding",
                         "im_levels_mps2",
                         "building_names",

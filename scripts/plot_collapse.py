@@ -174,7 +174,7 @@ def read_ida(campaign_path):
              "im": c.im[ok] / G,
              "stripe": (c.stripes if c.stripes is not None else np.zeros_like(c.ids))[ok]}
         for case in ("pounding", "free"):
-            d[case] = peak_over_floors(c.response(f"peak_drift_{case}")[ok])
+            d[case] = peak_over_floors(c.response(f"peak_drift_ratio_{case}")[ok])
             collapsed = c.response(f"collapsed_{case}")
             d[f"collapsed_{case}"] = collapsed[ok] > 0.5 if collapsed is not None else None
         model = c.parameters.get("model")

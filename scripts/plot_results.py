@@ -191,9 +191,9 @@ def plot_amplification(campaign_path, out):
         if np.nanmin(im) < np.nanmax(im):
             params[f"{im_name(measure)}"] = (im, "g")
         resp = {}
-        for r in ("disp", "drift"):
-            p = np.nanmax(c.response(f"peak_{r}_pounding")[ok], axis=2)
-            q = np.nanmax(c.response(f"peak_{r}_free")[ok], axis=2)
+        for r, array in (("disp", "peak_disp"), ("drift", "peak_drift_ratio")):
+            p = np.nanmax(c.response(f"{array}_pounding")[ok], axis=2)
+            q = np.nanmax(c.response(f"{array}_free")[ok], axis=2)
             with np.errstate(divide="ignore", invalid="ignore"):
                 resp[r] = np.where(q > 0, p / q, np.nan)
     if not params:

@@ -25,6 +25,11 @@ _PAIR_SUMMED = ("impacts",)
 # are as wide as the tallest building, NaN beyond a building's floors). The free run gives
 # every floor of every successful sample a finite peak displacement.
 _FLOOR_EVIDENCE = ("peak_disp_free", "peak_disp_pounding")
+# Per-floor datasets renamed since (issue 31, src/campaign/floor_arrays.hpp): their current name
+# and the one files written before hold them under. response() reads either.
+_FORMER_NAMES = {"peak_drift_ratio_pounding": "peak_drift_pounding",
+                 "peak_drift_ratio_free": "peak_drift_free"}
+_CURRENT_NAMES = {former: name for name, former in _FORMER_NAMES.items()}
 _BLOCK = 65536  # rows read at a time where a whole dataset is not needed
 
 
@@ -254,9 +259,18 @@ class CampaignFile:
         """/response/<name> as stored ([samples, buildings, floors], [samples, buildings] or
         [samples, pairs, levels]; NaN where a building has fewer floors, a pair fewer levels
         or the sample failed); None when the file has no such dataset (collapse arrays before
-        issue 23)."""
+        issue 23). A dataset renamed since is found under its former name in a file written
+        before (peak_drift_ratio_pounding: peak_drift_pounding)."""
         r = self._file["response"]
+        if name not in r:
+            name = _FORMER_NAMES.get(name, name)
         return r[name][()] if name in r else None
+
+    @property
+    def response_names(self):
+        """The names of the datasets under /response, by their current names (a dataset that
+        a file written before its renaming holds under its former name by its new one)."""
+        return [_CURRENT_NAMES.get(name, name) for name in self._file["response"]]
 
     @cached_property
     def amplification(self):
@@ -312,7 +326,7 @@ def _reduce(values, summed):
 def _response_columns(c, floors):
     """The /response datasets as columns (see read_campaign)."""
     cols = {}
-    for name in c._file["response"]:
+    for name in c.response_names:
         data = c.response(name)
         if data.ndim < 2:
             continue
@@ -342,7 +356,7 @@ def open_campaign(path):
 
         with pound.open_campaign("results/default/campaign.h5") as c:
             c.building_names, c.floors, c.im_levels        # ['5-storey', '3-storey'], [5, 3], ...
-            drift = c.response("peak_drift_pounding")[c.ok]  # [samples, buildings, floors]
+            drift = c.response("peak_drift_ratio_pounding")[c.ok]  # [samples, buildings, floors]
 
     Raises pound.Error when the file cannot be opened or is not a campaign result file.
     """
@@ -356,7 +370,7 @@ def read_campaign(path, floors=False):
     motion's intensity measure, m/s2), scale, stripe (0-based: sample id mod the number of
     levels, when the campaign has intensity levels), every sampled parameter by its study key
     (e, gap, k_factor, building1.mass_scale, model, ...), and per building b and run (pounding,
-    free) its peak demands: building<b>.peak_disp_<run> (m), .peak_drift_<run> (drift ratio),
+    free) its peak demands: building<b>.peak_disp_<run> (m), .peak_drift_ratio_<run>,
     .peak_accel_<run> (m/s2), .residual_drift_<run>, .ductility_<run>: the largest over the
     building's floors; .hysteretic_energy_<run> (J): the sum over its storeys; per pair p:
     pair<p>.peak_force (N) and pair<p>.approach_free (m), the largest over the levels, and

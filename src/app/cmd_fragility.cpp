@@ -6,12 +6,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <iostream>
 #include <string>
 #include <vector>
 
+#include "app/analysis_command.hpp"
 #include "app/commands.hpp"
-#include "app/help.hpp"
 #include "app/limit_text.hpp"
 #include "app/table_number.hpp"
 #include "core/error.hpp"
@@ -141,26 +140,19 @@ void print_text(const CampaignData& c, const FragilityReport& r,
     for (const auto& u : r.unranked) std::printf(" %s", u.c_str());
     std::printf(")\n");
   }
-  std::printf("\nFiles:");
-  for (const auto& f : files) std::printf(" %s", f.c_str());
-  std::printf("\n");
+  print_files(files);
+}
+
+void print_run(const FragilityRun& run) {
+  print_text(run.data, run.report, run.files);
 }
 
 }  // namespace
 
 int run_fragility(int argc, const char* const* argv) {
-  Options opt("fragility", kFragilitySummary, fragility_option_specs());
-  if (help_asked(opt, argc, argv)) return 0;
-  const FragilityRun run = run_fragility_analysis(opt, true);
-  if (opt.flag("json"))
-    std::cout << fragility_json(run) << "\n";
-  else
-    print_text(run.data, run.report, run.files);
-  const FragilityReport& r = run.report;
-  if (r.failed)
-    std::fprintf(stderr, "fragility: %zu of %zu samples failed and are excluded\n", r.failed,
-                 r.samples);
-  return 0;
+  return run_analysis_command<FragilityRun>("fragility", kFragilitySummary,
+                                            fragility_option_specs(), argc, argv,
+                                            run_fragility_analysis, fragility_json, print_run);
 }
 
 }  // namespace pound::app

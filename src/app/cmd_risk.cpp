@@ -7,12 +7,11 @@
 // reports; the campaign file is opened read-only, the results go to DIR (default RUN-risk/).
 #include <cmath>
 #include <cstdio>
-#include <iostream>
 #include <string>
 #include <vector>
 
+#include "app/analysis_command.hpp"
 #include "app/commands.hpp"
-#include "app/help.hpp"
 #include "app/limit_text.hpp"
 #include "app/table_number.hpp"
 #include "core/error.hpp"
@@ -170,25 +169,18 @@ void print_text(const CampaignData& c, const HazardCurve& h, const RiskReport& r
     std::printf("\nWhat could not be estimated:\n");
     for (const auto& n : r.notes) std::printf("  - %s\n", n.c_str());
   }
-  std::printf("\nFiles:");
-  for (const auto& f : files) std::printf(" %s", f.c_str());
-  std::printf("\n");
+  print_files(files);
+}
+
+void print_run(const RiskRun& run) {
+  print_text(run.data, run.hazard, run.report, run.settings, run.modes, run.files);
 }
 
 }  // namespace
 
 int run_risk(int argc, const char* const* argv) {
-  Options opt("risk", kRiskSummary, risk_option_specs());
-  if (help_asked(opt, argc, argv)) return 0;
-  const RiskRun run = run_risk_analysis(opt, true);
-  if (opt.flag("json"))
-    std::cout << risk_json(run) << "\n";
-  else
-    print_text(run.data, run.hazard, run.report, run.settings, run.modes, run.files);
-  const RiskReport& r = run.report;
-  if (r.failed)
-    std::fprintf(stderr, "risk: %zu of %zu samples failed and are excluded\n", r.failed, r.samples);
-  return 0;
+  return run_analysis_command<RiskRun>("risk", kRiskSummary, risk_option_specs(), argc, argv,
+                                       run_risk_analysis, risk_json, print_run);
 }
 
 }  // namespace pound::app

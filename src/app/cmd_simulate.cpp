@@ -49,7 +49,7 @@ void print_table(const RowSimulation& s, const BuildingRow& row,
   for (const auto& f : s.floors)
     std::printf("%-12s %5d %12.5g %12.5g %8.4f %12.5g %12.5g %8.4f %12.4g %12.4g\n",
                 row.buildings[f.building].name.c_str(), f.floor, f.disp_pounding, f.disp_free,
-                f.disp_amplification, f.drift_ratio_pounding, f.drift_ratio_free,
+                f.disp_amplification, f.peak_drift_ratio_pounding, f.peak_drift_ratio_free,
                 f.drift_amplification, f.accel_pounding / kGravity, f.accel_free / kGravity);
   // Yielding storeys (hysteresis other than elastic, or yield shears given).
   bool yielding = false;

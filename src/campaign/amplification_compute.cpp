@@ -4,12 +4,14 @@
 // the same code once per model with a sample filter, over the pooled table's intensity groups.
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <memory>
 
 #include "campaign/amplification_file.hpp"
 #include "campaign/campaign_rows.hpp"
 #include "campaign/collapse_flags.hpp"
+#include "campaign/floor_arrays.hpp"
 #include "core/error.hpp"
 #include "io/h5.hpp"
 #include "io/options.hpp"
@@ -156,9 +158,11 @@ void building_ratios(const Pass& p, const RowBlocks& pd, const RowBlocks& fd, st
 // The amplification of peak displacement, drift and acceleration per group, building, floor.
 void measure_statistics(const Pass& p, AmplificationTable& t) {
   const hsize_t n = p.rows.rows();
-  for (const char* name : kAmplificationMeasures) {
-    const std::string pounding = std::string("/response/peak_") + name + "_pounding";
-    const std::string free = std::string("/response/peak_") + name + "_free";
+  for (std::size_t m = 0; m < std::size(kAmplificationMeasures); ++m) {
+    const char* name = kAmplificationMeasures[m];
+    const std::string array = std::string("/response/") + kAmplificationArrays[m];
+    const std::string pounding = stored_dataset_path(p.file, array + "_pounding");
+    const std::string free = stored_dataset_path(p.file, array + "_free");
     const RowBlocks pd(p.file, pounding, p.path), fd(p.file, free, p.path);
     // The same [samples, buildings, floors] for every measure, at least one building and one
     // floor: `pound summary` indexes the three measures' statistics with one (b, f).

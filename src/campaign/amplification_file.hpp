@@ -51,6 +51,10 @@ namespace pound {
 
 /// The amplification measures, in the order of AmplificationTable::measures.
 inline constexpr const char* kAmplificationMeasures[] = {"disp", "drift", "accel"};
+/// The per-floor arrays of each measure (floor_arrays.hpp), /response/<name>_pounding and
+/// <name>_free, in the order of kAmplificationMeasures.
+inline constexpr const char* kAmplificationArrays[] = {"peak_disp", "peak_drift_ratio",
+                                                       "peak_accel"};
 
 /// One amplification measure: its name ("disp", "drift", "accel") and statistics [G, B, F].
 struct AmplificationMeasure {

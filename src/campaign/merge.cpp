@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "campaign/amplification_file.hpp"
+#include "campaign/floor_arrays.hpp"
 #include "core/error.hpp"
 #include "io/h5.hpp"
 #include "io/number.hpp"
@@ -162,7 +163,7 @@ void copy_rows(const Part& p, const Part& first, const JoinedDataset& d, const s
   auto bad = [&](const std::string& what) {
     return InputError(p.path + ": " + d.name + " " + what);
   };
-  const Id dp{H5Dopen2(p.file, d.name.c_str(), H5P_DEFAULT), H5Dclose};
+  const Id dp{H5Dopen2(p.file, stored_dataset_path(p.file, d.name).c_str(), H5P_DEFAULT), H5Dclose};
   if (dp.id < 0) throw InputError(p.path + ": dataset " + d.name + " is missing");
   const Id sp{H5Dget_space(dp.id), H5Sclose};
   std::vector<hsize_t> pd(static_cast<std::size_t>(d.rank));
@@ -205,7 +206,8 @@ void join_dataset(hid_t f, const std::vector<Part>& parts, const std::string& gr
   auto bad = [&](const std::string& what) {
     return InputError(first.path + ": " + name + " " + what);
   };
-  const Id d0{H5Dopen2(first.file, name.c_str(), H5P_DEFAULT), H5Dclose};
+  const Id d0{H5Dopen2(first.file, stored_dataset_path(first.file, name).c_str(), H5P_DEFAULT),
+              H5Dclose};
   if (d0.id < 0) throw bad("is not a dataset");
   const Id type{H5Dget_type(d0.id), H5Tclose};
   const Id s0{H5Dget_space(d0.id), H5Sclose};
@@ -239,7 +241,8 @@ void merge_campaign_parts(const std::vector<std::string>& paths, const std::stri
   h5::File f(out);
   for (const char* group : {"/samples", "/response", "/run"})
     for (const auto& member : h5::group_members(parts.front().file, group))
-      join_dataset(f.id(), parts, group, std::string(group) + "/" + member, total, out);
+      join_dataset(f.id(), parts, group, current_dataset_path(std::string(group) + "/" + member),
+                   total, out);
   // Root attributes of the first part, with the merged range.
   {
     Id root{H5Gopen2(f.id(), "/", H5P_DEFAULT), H5Gclose};

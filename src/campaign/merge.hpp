@@ -5,7 +5,9 @@
 // 0..N-1 exactly once. Every dataset under /samples, /response and /run is copied row by row
 // into place; the root attributes are those of the part holding sample 0, with sample_range
 // "0:N" and merged_from listing the parts; /amplification is computed again for the joined
-// samples (amplification_file.hpp).
+// samples (amplification_file.hpp). A per-floor array that a part written before its renaming
+// holds under its former name (floor_arrays.hpp, peak_drift_pounding) is read from there and
+// written under its current name (peak_drift_ratio_pounding).
 #include <string>
 #include <vector>
 

@@ -8,7 +8,9 @@
 //   /samples/scale [N]                 factor applied to the motion [-]
 //   /samples/<key> [N]                 each sampled parameter by its study key (model: names)
 //   /response/peak_disp_pounding, peak_disp_free [N, buildings, floors]     m
-//   /response/peak_drift_pounding, peak_drift_free [N, buildings, floors]   drift ratio, -
+//   /response/peak_drift_ratio_pounding, peak_drift_ratio_free [N, buildings, floors]
+//                                      peak storey drift ratio, - (peak_drift_pounding,
+//                                      peak_drift_free in files written before 2026-11-26)
 //   /response/peak_accel_pounding, peak_accel_free [N, buildings, floors]   m/s^2 (absolute)
 //   /response/residual_drift_pounding, residual_drift_free [N, buildings, floors]
 //                                      |storey drift| at the end of the run / height, -

@@ -45,7 +45,7 @@ struct SampleOutcome {
   double scale = 0.0;                            ///< factor applied to the motion [-]
   std::vector<double> values;                    ///< sampled parameter values (as in SampleDraw)
   std::vector<double> disp_pounding, disp_free;  ///< [m]
-  std::vector<double> drift_pounding, drift_free;  ///< peak drift ratios [-]
+  std::vector<double> peak_drift_ratio_pounding, peak_drift_ratio_free;  ///< peak drift ratios [-]
   std::vector<double> accel_pounding, accel_free;  ///< peak absolute accelerations [m/s^2]
   /// |storey drift| at the end of the run / storey height [-]
   std::vector<double> residual_drift_pounding, residual_drift_free;

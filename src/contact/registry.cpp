@@ -1,12 +1,10 @@
 #include "contact/registry.hpp"
 
-#include "contact/hertzdamp.hpp"
-#include "contact/hertzdamp_ye.hpp"
 #include "contact/hunt_crossley.hpp"
-#include "contact/kelvin_ye.hpp"
 #include "contact/lve.hpp"
 #include "contact/mlve.hpp"
 #include "contact/nlve.hpp"
+#include "contact/rate_damped.hpp"
 #include "contact/stereomechanical.hpp"
 #include "core/error.hpp"
 
@@ -24,17 +22,15 @@ std::unique_ptr<ContactLaw> make_hc(const ContactParameters& p) {
 
 const std::vector<ContactModelInfo>& contact_models() {
   static const std::vector<ContactModelInfo> models = {
-      {"stereomechanical", "Goldsmith 1960", "", true, make<Stereomechanical>},
-      {"lve", "Anagnostopoulos 1988 (Th. 3.1)", "N/m", true, make<LinearViscoelastic>},
-      {"mlve", "Mahmoud & Jankowski 2011 (Th. 3.2)", "N/m", true, make<ModifiedLinearViscoelastic>},
-      {"nlve", "Jankowski 2005 (Th. 3.3)", "N/m^1.5", true, make<NonlinearViscoelastic>},
-      {"hertzdamp", "Muthukumar & DesRoches 2006", "N/m^1.5", true, make<Hertzdamp>},
-      {"hertzdamp-ye", "Ye, Li & Zhu 2009", "N/m^1.5", true, make<HertzdampYe>},
-      {"kelvin-ye", "Ye, Li & Zhu 2009", "N/m", true, make<KelvinYe>},
-      {"hc-linear", "exact Hunt-Crossley, Khatiwada et al. 2014 (Th. 4.20)", "N/m", true,
-       make_hc<10>},
-      {"hc-hertz", "exact Hunt-Crossley, Khatiwada et al. 2014 (Th. 4.20)", "N/m^1.5", true,
-       make_hc<15>},
+      {"stereomechanical", "Goldsmith 1960", "", make<Stereomechanical>},
+      {"lve", "Anagnostopoulos 1988 (Th. 3.1)", "N/m", make<LinearViscoelastic>},
+      {"mlve", "Mahmoud & Jankowski 2011 (Th. 3.2)", "N/m", make<ModifiedLinearViscoelastic>},
+      {"nlve", "Jankowski 2005 (Th. 3.3)", "N/m^1.5", make<NonlinearViscoelastic>},
+      {"hertzdamp", "Muthukumar & DesRoches 2006", "N/m^1.5", make_hertzdamp},
+      {"hertzdamp-ye", "Ye, Li & Zhu 2009", "N/m^1.5", make_hertzdamp_ye},
+      {"kelvin-ye", "Ye, Li & Zhu 2009", "N/m", make_kelvin_ye},
+      {"hc-linear", "exact Hunt-Crossley, Khatiwada et al. 2014 (Th. 4.20)", "N/m", make_hc<10>},
+      {"hc-hertz", "exact Hunt-Crossley, Khatiwada et al. 2014 (Th. 4.20)", "N/m^1.5", make_hc<15>},
   };
   return models;
 }

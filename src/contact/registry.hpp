@@ -14,7 +14,6 @@ struct ContactModelInfo {
   std::string name;            ///< the name users write (model = ...)
   std::string reference;       ///< paper / thesis equation
   std::string stiffness_unit;  ///< unit of k: "N/m", "N/m^1.5", or "" when k is unused
-  bool uses_e = true;          ///< whether the coefficient of restitution enters
   std::unique_ptr<ContactLaw> (*make)(const ContactParameters&);
 };
 

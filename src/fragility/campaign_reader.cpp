@@ -149,10 +149,11 @@ CampaignData read_campaign(const std::string& path) {
     }
     c.parameters.push_back({key, r.doubles("/samples/" + key)});
   }
-  // The per-floor arrays the file holds (an older file lacks the newer ones), one shape.
+  // The per-floor arrays the file holds (an older file lacks the newer ones, and may hold an
+  // array under its former name), one shape.
   std::size_t floors = 0;
   for (const auto& field : floor_array_fields()) {
-    const std::string p = std::string("/response/") + field.name;
+    const std::string p = stored_dataset_path(r.id(), std::string("/response/") + field.name);
     if (!r.exists(p)) continue;
     FloorArray a = floor_array(r, p, c.samples);
     if (c.floor_arrays.empty()) c.buildings = a.buildings, floors = a.floors;

@@ -57,8 +57,9 @@ struct CampaignData {
   std::vector<std::string> text_parameters;  ///< sampled labels (e.g. model), not ranked
   std::size_t buildings = 0;                 ///< buildings of the row
   /// The per-floor arrays of campaign/floor_arrays.hpp that the file holds, by dataset name
-  /// under /response ("peak_drift_pounding", "ductility_free", ...; units as listed there). A
-  /// file written before an array existed lacks it.
+  /// under /response ("peak_drift_ratio_pounding", "ductility_free", ...; units as listed
+  /// there), also when the file holds it under its former name (stored_dataset_path). A file
+  /// written before an array existed lacks it.
   std::map<std::string, FloorArray> floor_arrays;
   /// Peak pounding force [samples][pairs][levels] [N]; pair p lies between buildings p, p+1.
   FloorArray peak_force;

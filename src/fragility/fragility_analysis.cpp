@@ -26,7 +26,7 @@ struct EdpInfo {
 };
 constexpr EdpInfo kEdps[] = {
     {Edp::collapse, "collapse", "-", ""},
-    {Edp::drift, "drift", "-", "peak_drift"},
+    {Edp::drift, "drift", "-", "peak_drift_ratio"},
     {Edp::disp, "disp", "m", "peak_disp"},
     {Edp::accel, "accel", "m/s^2", "peak_accel"},
     {Edp::force, "force", "N", ""},

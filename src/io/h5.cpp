@@ -99,36 +99,6 @@ void ensure_group(hid_t file, const std::string& path) {
   H5Gclose(g);
 }
 
-void write(hid_t file, const std::string& path, const std::vector<double>& data, std::size_t rows,
-           std::size_t cols, const std::string& units) {
-  ensure_group(file, parent_of(path));
-  hsize_t dims[2] = {rows, cols};
-  const hid_t space = H5Screate_simple(cols ? 2 : 1, dims, nullptr);
-  const hid_t ds = H5Dcreate2(file, path.c_str(), H5T_NATIVE_DOUBLE, space, H5P_DEFAULT,
-                              H5P_DEFAULT, H5P_DEFAULT);
-  if (ds < 0) throw write_error("HDF5: cannot create dataset " + path);
-  if (!data.empty())
-    check(H5Dwrite(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()),
-          "write of " + path);
-  H5Dclose(ds);
-  H5Sclose(space);
-  if (!units.empty()) attribute(file, path, "units", units);
-}
-
-void write(hid_t file, const std::string& path, const std::vector<int>& data) {
-  ensure_group(file, parent_of(path));
-  hsize_t dims[1] = {data.size()};
-  const hid_t space = H5Screate_simple(1, dims, nullptr);
-  const hid_t ds =
-      H5Dcreate2(file, path.c_str(), H5T_NATIVE_INT, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-  if (ds < 0) throw write_error("HDF5: cannot create dataset " + path);
-  if (!data.empty())
-    check(H5Dwrite(ds, H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()),
-          "write of " + path);
-  H5Dclose(ds);
-  H5Sclose(space);
-}
-
 namespace {
 
 void write_shaped(hid_t file, const std::string& path, hid_t type, const void* data,
@@ -155,6 +125,16 @@ void write_array(hid_t file, const std::string& path, const std::vector<double>&
 void write_array(hid_t file, const std::string& path, const std::vector<int>& data,
                  const std::vector<std::size_t>& shape) {
   write_shaped(file, path, H5T_NATIVE_INT, data.empty() ? nullptr : data.data(), shape);
+}
+
+void write(hid_t file, const std::string& path, const std::vector<double>& data, std::size_t rows,
+           std::size_t cols, const std::string& units) {
+  write_array(file, path, data, cols ? std::vector<std::size_t>{rows, cols} : std::vector{rows},
+              units);
+}
+
+void write(hid_t file, const std::string& path, const std::vector<int>& data) {
+  write_array(file, path, data, {data.size()});
 }
 
 void attribute(hid_t file, const std::string& object, const std::string& name,

@@ -28,10 +28,23 @@ class JsonWriter {
     key(k);
     return value(v);
   }
+  /// "k": [ {...}, ... ], one object per item, whose members `write(item)` writes.
+  template <class Items, class Write>
+  JsonWriter& objects(const std::string& k, const Items& items, Write write) {
+    key(k).begin_array();
+    for (const auto& item : items) {
+      begin_object();
+      write(item);
+      end_object();
+    }
+    return end_array();
+  }
   std::string str() const { return out_.str(); }
 
  private:
   void comma();
+  JsonWriter& open(char bracket);
+  JsonWriter& close(char bracket);
   std::ostringstream out_;
   std::vector<bool> first_;  // per open container: nothing written yet
   bool after_key_ = false;

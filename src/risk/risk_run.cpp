@@ -147,37 +147,24 @@ std::string risk_json(const RiskRun& run) {
       w.null();
     w.field("gap_band_finite", long(p.gap_band.finite));
     w.field("rho", p.rho);
-    w.key("code_rules").begin_array();
-    for (const auto& k : p.rules)
-      w.begin_object()
-          .field("rule", to_string(k.rule))
+    w.objects("code_rules", p.rules, [&](const CodeRuleResult& k) {
+      w.field("rule", to_string(k.rule))
           .field("gap_m", k.gap)
           .field("level", long(k.level))
           .field("status", to_string(k.estimate.fit.status))
           .field("maf_pounding", k.estimate.maf)
-          .field("probability_pounding", k.estimate.probability)
-          .end_object();
-    w.end_array();
+          .field("probability_pounding", k.estimate.probability);
+    });
     w.end_object();
   }
   w.end_array();
-  w.key("damage").begin_array();
-  for (const auto& d : r.damage) {
-    w.begin_object();
-    damage_fields(w, d);
-    w.end_object();
-  }
-  w.end_array();
-  w.key("collapse").begin_array();
-  for (const auto& k : r.collapse) {
-    w.begin_object();
+  w.objects("damage", r.damage, [&](const DamageRisk& d) { damage_fields(w, d); });
+  w.objects("collapse", r.collapse, [&](const CollapseRisk& k) {
     damage_fields(w, k);
     with_and_without(w, "theta", k.theta_pounding, k.free.finite() ? k.free.theta : NAN);
     with_and_without(w, "probability", k.probability_pounding, k.probability_free);
     with_and_without(w, "cmr", k.cmr_pounding, k.cmr_free);
-    w.end_object();
-  }
-  w.end_array();
+  });
   w.key("notes").array(r.notes);
   w.key("files").array(run.files);
   w.end_object();

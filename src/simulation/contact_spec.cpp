@@ -5,9 +5,7 @@
 namespace pound {
 
 std::vector<std::unique_ptr<ContactLaw>> make_site_laws(const ContactSpec& spec,
-                                                        const BuildingRow& row,
                                                         const AssembledRow& assembled) {
-  (void)row;
   const auto& info = find_contact_model(spec.model, "contact.model");
   std::vector<std::unique_ptr<ContactLaw>> laws;
   for (const auto& s : assembled.sites) {

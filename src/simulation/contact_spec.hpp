@@ -14,9 +14,8 @@ struct ContactSpec {
   ContactParameters params;   ///< k, e, v0_min, xi_relation; m1, m2 are set per site
 };
 
-/// One law per contact site of the row, with that site's floor masses.
+/// One law per contact site of the assembled row, with that site's floor masses.
 std::vector<std::unique_ptr<ContactLaw>> make_site_laws(const ContactSpec& spec,
-                                                        const BuildingRow& row,
                                                         const AssembledRow& assembled);
 
 }  // namespace pound

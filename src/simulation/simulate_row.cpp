@@ -25,9 +25,9 @@ RowSimulation summarize_runs(const BuildingRow& row, const RowGround& ground, do
       f.disp_pounding = out.pounding.peak_disp(i);
       f.disp_free = out.free.peak_disp(i);
       f.disp_amplification = ratio(f.disp_pounding, f.disp_free);
-      f.drift_ratio_pounding = out.pounding.peak_drift(i) / bd.storey_heights[j];
-      f.drift_ratio_free = out.free.peak_drift(i) / bd.storey_heights[j];
-      f.drift_amplification = ratio(f.drift_ratio_pounding, f.drift_ratio_free);
+      f.peak_drift_ratio_pounding = out.pounding.peak_drift(i) / bd.storey_heights[j];
+      f.peak_drift_ratio_free = out.free.peak_drift(i) / bd.storey_heights[j];
+      f.drift_amplification = ratio(f.peak_drift_ratio_pounding, f.peak_drift_ratio_free);
       f.accel_pounding = out.pounding.peak_abs_accel(i);
       f.accel_free = out.free.peak_abs_accel(i);
       auto residual = [&](const RowResult& r) {
@@ -74,7 +74,7 @@ RowSimulation simulate_row(const BuildingRow& row, const RowGround& ground,
                            const ContactSpec& contact, const IntegratorSettings& integ,
                            const RowSimulationOptions& opt) {
   const AssembledRow a = assemble(row);
-  const auto laws = make_site_laws(contact, row, a);
+  const auto laws = make_site_laws(contact, a);
   RowProblem p;
   p.row = &a;
   opt.apply_to(p, ground);

@@ -19,8 +19,9 @@ struct FloorResponse {
   int floor = 0;                                ///< 1-based floor number
   double disp_pounding = 0.0, disp_free = 0.0;  ///< peak |u| [m]
   double disp_amplification = 0.0;              ///< disp_pounding / disp_free [-] (mu_max/u_max)
-  double drift_ratio_pounding = 0.0, drift_ratio_free = 0.0;  ///< peak storey drift / height [-]
-  double drift_amplification = 0.0;                           ///< [-]
+  double peak_drift_ratio_pounding = 0.0,
+         peak_drift_ratio_free = 0.0;             ///< peak storey drift / height [-]
+  double drift_amplification = 0.0;               ///< [-]
   double accel_pounding = 0.0, accel_free = 0.0;  ///< peak absolute acceleration [m/s^2]
   /// |storey drift| at the end of the run (record plus extra_time) / storey height [-]; NaN
   /// for a building that collapsed, and for every building of a run that stopped at a collapse

@@ -1,7 +1,7 @@
 #pragma once
 // What a run of a building row reports, recorded the same way by both solvers (the adaptive
 // lumped-mass solver, solver/row_solver.cpp, and the damped Sears solver,
-// sears/sears_row_solver.cpp): the peak floor values (physics.md section 4), the free run's
+// sears/sears_row_run.cpp): the peak floor values (physics.md section 4), the free run's
 // approach at every contact site, the contact phases (impacts, first contact, last separation,
 // peak force and penetration, impulse), the time histories and the end state. A solver calls it
 // after its steps with the values it has; a new reported quantity is written here once.

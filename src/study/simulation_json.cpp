@@ -89,8 +89,8 @@ void write_buildings(JsonWriter& w, const SimulationRun& run, const BuildingRow&
           .field("peak_disp_pounding_m", f.disp_pounding)
           .field("peak_disp_free_m", f.disp_free)
           .field("disp_amplification", f.disp_amplification)
-          .field("peak_drift_ratio_pounding", f.drift_ratio_pounding)
-          .field("peak_drift_ratio_free", f.drift_ratio_free)
+          .field("peak_drift_ratio_pounding", f.peak_drift_ratio_pounding)
+          .field("peak_drift_ratio_free", f.peak_drift_ratio_free)
           .field("drift_amplification", f.drift_amplification)
           .field("peak_abs_accel_pounding_mps2", f.accel_pounding)
           .field("peak_abs_accel_free_mps2", f.accel_free)
@@ -149,15 +149,12 @@ std::string simulation_json(const BuildingRow& row, const SimulationRun& run) {
   w.end_array();
   if (!slabs.empty()) {
     // Damped Sears model: peak accelerations of the colliding slabs.
-    w.key("slabs").begin_array();
-    for (const auto& p : slabs)
-      w.begin_object()
-          .field("building", p.building)
+    w.objects("slabs", slabs, [&](const sears::SlabPeaks& p) {
+      w.field("building", p.building)
           .field("floor", p.floor)
           .field("peak_face_accel_mps2", p.face_accel)
-          .field("peak_centre_accel_mps2", p.centre_accel)
-          .end_object();
-    w.end_array();
+          .field("peak_centre_accel_mps2", p.centre_accel);
+    });
   }
   // Energy balance of each run [J] (RowResult::energy).
   for (const auto* r : {&s.pounding, &s.free}) {

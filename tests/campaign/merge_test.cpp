@@ -62,9 +62,9 @@ std::string part(const std::string& name, hsize_t rows, bool store, bool scalar_
     h5::write(f, "/samples/status", status);
     h5::write(f, "/samples/im", im, 4);
     h5::attribute(f, "/", "im_levels_mps2", "1, 2");
-    for (const char* dataset :
-         {"peak_disp_pounding", "peak_disp_free", "peak_drift_pounding", "peak_drift_free",
-          "peak_accel_pounding", "peak_accel_free", "impacts", "peak_force"}) {
+    for (const char* dataset : {"peak_disp_pounding", "peak_disp_free", "peak_drift_ratio_pounding",
+                                "peak_drift_ratio_free", "peak_accel_pounding", "peak_accel_free",
+                                "impacts", "peak_force"}) {
       const hsize_t dims[3] = {4, 1, 1};
       const hid_t sp = H5Screate_simple(3, dims, nullptr);
       const std::string path_in_file = std::string("/response/") + dataset;
@@ -175,7 +175,7 @@ TEST(Merge, ACompressedPartMergesToTheSameNumbers) {
   merge_campaign_parts({plain}, a);
   ASSERT_NO_THROW(merge_campaign_parts({packed}, b));
   for (const char* name : {"/samples/id", "/samples/status", "/samples/im",
-                           "/response/peak_drift_pounding", "/response/peak_force"}) {
+                           "/response/peak_drift_ratio_pounding", "/response/peak_force"}) {
     std::vector<hsize_t> da, db;
     const hid_t fa = H5Fopen(a.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
     const hid_t fb = H5Fopen(b.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);

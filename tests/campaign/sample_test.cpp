@@ -109,9 +109,10 @@ TEST(Sample, ResidualDriftDuctilityAndHystereticEnergyComeFromTheSimulation) {
     for (int j = 0; j < 2; ++j) {
       const std::size_t i = static_cast<std::size_t>(j);
       const double uy = fy[j] / 2e6;  // [m]
-      EXPECT_NEAR(o.ductility_pounding[i], o.drift_pounding[i] * 3.0 / uy,
+      EXPECT_NEAR(o.ductility_pounding[i], o.peak_drift_ratio_pounding[i] * 3.0 / uy,
                   1e-12 * o.ductility_pounding[i]);
-      EXPECT_NEAR(o.ductility_free[i], o.drift_free[i] * 3.0 / uy, 1e-12 * o.ductility_free[i]);
+      EXPECT_NEAR(o.ductility_free[i], o.peak_drift_ratio_free[i] * 3.0 / uy,
+                  1e-12 * o.ductility_free[i]);
       EXPECT_GT(o.ductility_free[i], 0.0);
     }
     EXPECT_TRUE(std::isnan(o.ductility_pounding[2]));  // building 2, floor 1: no yield shears
@@ -119,8 +120,8 @@ TEST(Sample, ResidualDriftDuctilityAndHystereticEnergyComeFromTheSimulation) {
     for (std::size_t i : {0u, 1u, 2u}) {
       // The residual drift is part of the peak; elastic storeys dissipate no energy.
       EXPECT_GE(o.residual_drift_pounding[i], 0.0);
-      EXPECT_LE(o.residual_drift_pounding[i], o.drift_pounding[i]);
-      EXPECT_LE(o.residual_drift_free[i], o.drift_free[i]);
+      EXPECT_LE(o.residual_drift_pounding[i], o.peak_drift_ratio_pounding[i]);
+      EXPECT_LE(o.residual_drift_free[i], o.peak_drift_ratio_free[i]);
       EXPECT_EQ(o.hysteretic_energy_pounding[i], 0.0);
       EXPECT_EQ(o.hysteretic_energy_free[i], 0.0);
     }
@@ -143,9 +144,9 @@ TEST(Sample, StrengthScaleDividesTheDuctilityDemand) {
   const SampleOutcome x = ra.run(2), y = rb.run(2);
   ASSERT_EQ(x.status, SampleStatus::ok) << x.message;
   ASSERT_EQ(y.status, SampleStatus::ok) << y.message;
-  ASSERT_EQ(x.drift_pounding.size(), y.drift_pounding.size());
-  EXPECT_EQ(std::memcmp(x.drift_pounding.data(), y.drift_pounding.data(),
-                        x.drift_pounding.size() * sizeof(double)),
+  ASSERT_EQ(x.peak_drift_ratio_pounding.size(), y.peak_drift_ratio_pounding.size());
+  EXPECT_EQ(std::memcmp(x.peak_drift_ratio_pounding.data(), y.peak_drift_ratio_pounding.data(),
+                        x.peak_drift_ratio_pounding.size() * sizeof(double)),
             0);  // bit for bit, the NaN of building 2's missing floor included
   for (std::size_t i : {0u, 1u}) {
     EXPECT_NEAR(y.ductility_pounding[i], x.ductility_pounding[i] / 1.3,
@@ -367,7 +368,7 @@ TEST(Sample, GeneratedMotionsWithoutVariabilityAreThoseOfBeforeIssue12) {
   SampleRunner r(st);
   struct Ref {
     long id;
-    double scale, disp_free0, drift_pounding0, accel_free2;
+    double scale, disp_free0, peak_drift_ratio_pounding0, accel_free2;
   };
   const Ref refs[] = {
       {0, 0.20826975106003084, 0.0016872192522463323, 0.00056240641741544411, 1.8230749057778091},
@@ -380,7 +381,9 @@ TEST(Sample, GeneratedMotionsWithoutVariabilityAreThoseOfBeforeIssue12) {
     ASSERT_EQ(o.status, SampleStatus::ok) << o.message;
     EXPECT_NEAR(o.scale, ref.scale, 1e-8 * ref.scale) << ref.id;
     EXPECT_NEAR(o.disp_free[0], ref.disp_free0, 1e-8 * ref.disp_free0) << ref.id;
-    EXPECT_NEAR(o.drift_pounding[0], ref.drift_pounding0, 1e-8 * ref.drift_pounding0) << ref.id;
+    EXPECT_NEAR(o.peak_drift_ratio_pounding[0], ref.peak_drift_ratio_pounding0,
+                1e-8 * ref.peak_drift_ratio_pounding0)
+        << ref.id;
     EXPECT_NEAR(o.accel_free[2], ref.accel_free2, 1e-8 * ref.accel_free2) << ref.id;
   }
 }

@@ -41,8 +41,8 @@ CampaignData campaign() {
     cf[s] = q < normal_cdf(std::log(im / (1.25 * kTheta)) / kBeta) ? 1.0 : 0.0;
     c.model.push_back(k % 2 ? "b" : "a");
   }
-  c.floor_arrays["peak_drift_pounding"] = drift;
-  c.floor_arrays["peak_drift_free"] = drift;
+  c.floor_arrays["peak_drift_ratio_pounding"] = drift;
+  c.floor_arrays["peak_drift_ratio_free"] = drift;
   c.building_arrays["collapsed_pounding"] = cp;
   c.building_arrays["collapsed_free"] = cf;
   c.peak_force = FloorArray{c.samples, 0, 0, {}};
@@ -162,8 +162,8 @@ TEST(CollapseFragility, AStandingBuildingIsCensoredWhenThePoundingRunStopsAtItsN
       exceeded_standing += s % 3 != 0;
     }
   }
-  c.floor_arrays["peak_drift_pounding"] = drift;
-  c.floor_arrays["peak_drift_free"] = drift;
+  c.floor_arrays["peak_drift_ratio_pounding"] = drift;
+  c.floor_arrays["peak_drift_ratio_free"] = drift;
   c.building_arrays["collapsed_pounding"] = cp;
   c.building_arrays["collapsed_free"] = cf;
   c.peak_force = FloorArray{n, 0, 0, {}};
@@ -227,8 +227,8 @@ TEST(CollapseFragility, TheShiftComparesThePoundingCurveWithTheFreeOneOnTheSameA
     if (q < normal_cdf(std::log(im / kTheta) / kBeta)) drift.v[2 * s + 1] = 0.02;
     if (q < 0.3) cp[2 * s] = 1.0;
   }
-  c.floor_arrays["peak_drift_pounding"] = drift;
-  c.floor_arrays["peak_drift_free"] = drift;
+  c.floor_arrays["peak_drift_ratio_pounding"] = drift;
+  c.floor_arrays["peak_drift_ratio_free"] = drift;
   c.building_arrays["collapsed_pounding"] = cp;
   c.building_arrays["collapsed_free"] = cf;
   c.peak_force = FloorArray{n, 0, 0, {}};

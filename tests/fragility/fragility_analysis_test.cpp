@@ -54,8 +54,9 @@ CampaignData campaign(bool with_new_arrays = true) {
       rf.v[s * 4 + i] = 0.5 * rp.v[s * 4 + i];
     }
   }
-  for (const char* name : {"peak_drift_pounding", "peak_drift_free", "peak_disp_pounding",
-                           "peak_disp_free", "peak_accel_pounding", "peak_accel_free"})
+  for (const char* name :
+       {"peak_drift_ratio_pounding", "peak_drift_ratio_free", "peak_disp_pounding",
+        "peak_disp_free", "peak_accel_pounding", "peak_accel_free"})
     c.floor_arrays[name] = drift;
   if (with_new_arrays) {
     c.floor_arrays["ductility_pounding"] = dp;
@@ -105,7 +106,7 @@ TEST(FragilityAnalysis, EdpsAreTheMaximumOverTheStoreys) {
   EXPECT_EQ(std::string(to_string(Edp::residual_drift)), "residual_drift");
   EXPECT_EQ(std::string(to_string(Edp::ductility)), "ductility");
   EXPECT_EQ(dataset_of(Edp::ductility, false), "ductility_free");
-  EXPECT_EQ(dataset_of(Edp::drift, true), "peak_drift_pounding");
+  EXPECT_EQ(dataset_of(Edp::drift, true), "peak_drift_ratio_pounding");
 }
 
 TEST(FragilityAnalysis, DuctilityCountsLeaveOutTheAnalysesWithoutAFiniteValue) {

@@ -33,7 +33,7 @@ def test_one_row_per_sample_with_the_files_numbers(campaign):
     assert df["im"].to_numpy() == pytest.approx(np.array(levels)[df["stripe"]], rel=1e-9)
     # Building 1 has two floors: its peak is the larger, its energy the sum; building 2 one.
     for run_name in ("pounding", "free"):
-        for m in ("peak_disp", "peak_drift", "peak_accel", "residual_drift", "ductility"):
+        for m in ("peak_disp", "peak_drift_ratio", "peak_accel", "residual_drift", "ductility"):
             key = f"{m}_{run_name}"
             assert np.array_equal(df[f"building1.{key}"], np.max(r[key][:, 0, :], axis=1),
                                   equal_nan=True), key
@@ -57,10 +57,10 @@ def test_one_row_per_sample_with_the_files_numbers(campaign):
 def test_floors_give_a_column_per_floor_of_each_building(campaign):
     df = pound.read_campaign(campaign, floors=True)
     with h5py.File(campaign, "r") as f:
-        drift = f["response/peak_drift_pounding"][()]
-    assert np.array_equal(df["building1.floor2.peak_drift_pounding"], drift[:, 0, 1])
-    assert "building2.floor1.peak_drift_pounding" in df.columns
-    assert "building2.floor2.peak_drift_pounding" not in df.columns
+        drift = f["response/peak_drift_ratio_pounding"][()]
+    assert np.array_equal(df["building1.floor2.peak_drift_ratio_pounding"], drift[:, 0, 1])
+    assert "building2.floor1.peak_drift_ratio_pounding" in df.columns
+    assert "building2.floor2.peak_drift_ratio_pounding" not in df.columns
     assert "pair1.level1.peak_force" in df.columns
 
 

@@ -76,7 +76,7 @@ def test_the_reader_gives_the_files_samples_buildings_and_results(campaign):
         assert c.building_names == ["T0.50", "T0.75"]
         assert c.study_value("simulation.collapse_drift_ratio") == "0.1"
         assert c.study_value("no.such_key") is None
-        for name in ("peak_drift_pounding", "collapsed_free", "peak_force"):
+        for name in ("peak_drift_ratio_pounding", "collapsed_free", "peak_force"):
             assert np.array_equal(c.response(name), f[f"response/{name}"][()], equal_nan=True)
         assert c.response("no_such_dataset") is None
         a = c.amplification
@@ -97,7 +97,7 @@ def test_an_older_file_counts_the_floors_from_the_per_floor_arrays(campaign, tmp
         assert c.floors == [2, 1]
     new, old = (pound.read_campaign(p, floors=True) for p in (campaign, older))
     assert list(new.columns) == list(old.columns)
-    assert "building2.floor2.peak_drift_pounding" not in old.columns
+    assert "building2.floor2.peak_drift_ratio_pounding" not in old.columns
     for column in new.columns:
         assert new[column].equals(old[column]), column
     # A failed sample has NaN on every floor: a building's floors are those a sample reached.
@@ -108,6 +108,25 @@ def test_an_older_file_counts_the_floors_from_the_per_floor_arrays(campaign, tmp
             f[f"response/{name}"][...] = data
     with pound.open_campaign(older) as c:
         assert c.floors == [2, 1]
+
+
+def test_an_older_file_gives_the_drift_ratios_under_their_current_names(campaign, tmp_path):
+    # Files written before 2026-11-26 hold the peak drift ratios as peak_drift_pounding/_free.
+    older = tmp_path / "older-names.h5"
+    shutil.copy(campaign, older)
+    with h5py.File(older, "r+") as f:
+        for run_name in ("pounding", "free"):
+            f.move(f"response/peak_drift_ratio_{run_name}", f"response/peak_drift_{run_name}")
+    with pound.open_campaign(campaign) as c, pound.open_campaign(older) as o:
+        assert sorted(o.response_names) == sorted(c.response_names)
+        for run_name in ("pounding", "free"):
+            name = f"peak_drift_ratio_{run_name}"
+            assert np.array_equal(o.response(name), c.response(name), equal_nan=True)
+    new, old = (pound.read_campaign(p, floors=True) for p in (campaign, older))
+    assert sorted(new.columns) == sorted(old.columns)
+    assert "building1.floor2.peak_drift_ratio_pounding" in old.columns
+    for column in new.columns:
+        assert new[column].equals(old[column]), column
 
 
 def test_an_older_file_without_a_successful_sample_is_an_error(campaign, tmp_path):

@@ -74,8 +74,8 @@ CampaignData made_up_campaign() {
   }
   c.floor_arrays.emplace("peak_disp_pounding", disp_p);
   c.floor_arrays.emplace("peak_disp_free", disp_f);
-  c.floor_arrays.emplace("peak_drift_pounding", drift_p);
-  c.floor_arrays.emplace("peak_drift_free", drift_f);
+  c.floor_arrays.emplace("peak_drift_ratio_pounding", drift_p);
+  c.floor_arrays.emplace("peak_drift_ratio_free", drift_f);
   return c;
 }
 

@@ -232,8 +232,11 @@ TEST(SearsEvent, AgreesWithTheFixedStepOnTheChapter8Example) {
     const FloorResponse &x = e.base.floors[i], &y = f.base.floors[i];
     EXPECT_NEAR(x.disp_pounding, y.disp_pounding, 5e-3 * y.disp_pounding) << i;
     EXPECT_NEAR(x.disp_free, y.disp_free, 5e-3 * y.disp_free) << i;
-    EXPECT_NEAR(x.drift_ratio_pounding, y.drift_ratio_pounding, 5e-3 * y.drift_ratio_pounding) << i;
-    EXPECT_NEAR(x.drift_ratio_free, y.drift_ratio_free, 5e-3 * y.drift_ratio_free) << i;
+    EXPECT_NEAR(x.peak_drift_ratio_pounding, y.peak_drift_ratio_pounding,
+                5e-3 * y.peak_drift_ratio_pounding)
+        << i;
+    EXPECT_NEAR(x.peak_drift_ratio_free, y.peak_drift_ratio_free, 5e-3 * y.peak_drift_ratio_free)
+        << i;
   }
   for (std::size_t s2 = 0; s2 < f.base.sites.size(); ++s2) {
     EXPECT_NEAR(e.base.sites[s2].peak_force, f.base.sites[s2].peak_force,
@@ -250,8 +253,8 @@ std::vector<double> largest_differences(const SearsRowSimulation& e, const Sears
   auto rel = [](double x, double y) { return std::fabs(x - y) / std::fabs(y); };
   for (std::size_t i = 0; i < r.base.floors.size(); ++i) {
     d[0] = std::max(d[0], rel(e.base.floors[i].disp_pounding, r.base.floors[i].disp_pounding));
-    d[1] = std::max(
-        d[1], rel(e.base.floors[i].drift_ratio_pounding, r.base.floors[i].drift_ratio_pounding));
+    d[1] = std::max(d[1], rel(e.base.floors[i].peak_drift_ratio_pounding,
+                              r.base.floors[i].peak_drift_ratio_pounding));
     d[2] = std::max(d[2], rel(e.base.floors[i].accel_pounding, r.base.floors[i].accel_pounding));
   }
   for (std::size_t k = 0; k < r.base.sites.size(); ++k)
@@ -370,7 +373,9 @@ TEST(SearsEvent, SleepingSlabsGiveTheResultsOfSteppingEverySlab) {
   for (std::size_t i = 0; i < all.base.floors.size(); ++i) {
     const FloorResponse &x = lazy.base.floors[i], &y = all.base.floors[i];
     EXPECT_NEAR(x.disp_pounding, y.disp_pounding, 1e-9 * y.disp_pounding) << i;
-    EXPECT_NEAR(x.drift_ratio_pounding, y.drift_ratio_pounding, 1e-9 * y.drift_ratio_pounding) << i;
+    EXPECT_NEAR(x.peak_drift_ratio_pounding, y.peak_drift_ratio_pounding,
+                1e-9 * y.peak_drift_ratio_pounding)
+        << i;
     EXPECT_NEAR(x.accel_pounding, y.accel_pounding, 1e-9 * y.accel_pounding) << i;
   }
   for (std::size_t k = 0; k < all.base.sites.size(); ++k) {

@@ -58,7 +58,7 @@ TEST(SimulateRow, FreeRunMatchesTheClosedFormStepResponse) {
     const double peak = a0 / (w * w) * (1.0 + std::exp(-M_PI * xi / std::sqrt(1.0 - xi * xi)));
     ASSERT_EQ(s.floors.size(), 2u);
     EXPECT_NEAR(s.floors[0].disp_free, peak, 1e-7 * peak) << "xi " << xi;
-    EXPECT_NEAR(s.floors[0].drift_ratio_free, peak / 3.0, 1e-7 * peak) << "xi " << xi;
+    EXPECT_NEAR(s.floors[0].peak_drift_ratio_free, peak / 3.0, 1e-7 * peak) << "xi " << xi;
     // Undamped: the absolute acceleration is -w^2 u, so its peak is 2 a0. Accelerations are
     // sampled at step ends (docs/integration.md) and steps are at most T / 20, so the sampled
     // peak lies within 1 - cos(pi / 20) = 1.2 % below it, and never above.

@@ -104,7 +104,7 @@ void expect_bit_for_bit(const SimulationRun& x, const SimulationRun& y) {
     const FloorResponse &p = a.floors[i], &q = b.floors[i];
     for (auto m :
          {&FloorResponse::disp_pounding, &FloorResponse::disp_free,
-          &FloorResponse::drift_ratio_pounding, &FloorResponse::drift_ratio_free,
+          &FloorResponse::peak_drift_ratio_pounding, &FloorResponse::peak_drift_ratio_free,
           &FloorResponse::accel_pounding, &FloorResponse::accel_free,
           &FloorResponse::residual_drift_ratio_pounding, &FloorResponse::residual_drift_ratio_free})
       EXPECT_TRUE(same(p.*m, q.*m)) << "floor " << i << ": " << p.*m << " " << q.*m;
