@@ -46,8 +46,9 @@ TranslationBound::TranslationBound(const AssembledRow& a, double ag_max)
     }
     sqrt_mass_.push_back(std::sqrt(m));
   }
-  // A massless base is a first-order DOF: the bounds below need M positive definite.
-  for (int k = 0; k < n; ++k) valid_ = valid_ && a.M(k, k) > 0.0;
+  std::vector<int> massless;
+  for (int k = 0; k < n; ++k)
+    if (!(a.M(k, k) > 0.0)) massless.push_back(k);
   sqrt2E_.assign(nb, 0.0);
   own_.assign(nb, 0);
   omega_g_.assign(nb, 0.0);
@@ -88,6 +89,72 @@ TranslationBound::TranslationBound(const AssembledRow& a, double ag_max)
     } else {
       G_own_(k) = G_(k);
     }
+  }
+  if (!massless.empty()) massless_bounds(a, massless, K0);
+}
+
+// A massless base (issue 29): its DOFs b are first-order, C_bb v_b = -(C_ba v_a + f_b), so a
+// floor k's absolute acceleration is -(1/m_k) [C*_ka v_a + f_k - (C_kb S) f_b] with S = C_bb^-1
+// and C* = C_aa - C_ab S C_ba (positive semi-definite). With T = v_a^T M_a v_a / 2 (the massless
+// DOFs carry no kinetic energy) and U the storeys' and springs' energy, E = T + U still grows
+// only by the ground's work. Then
+//   |C*_ka v_a| / m_k <= beta*_k sqrt(2 T),  beta*_k^2 = sum_j (C*_kj / m_k)^2 / m_j,
+//   linear: |(K_k - C_kb S K_b) q| / m_k <= alpha*_k sqrt(2 U),
+//           alpha*_k^2 = w K^-1 w^T / m_k^2, w = K_k - C_kb S K_b (K positive definite);
+//   yielding: |f_k| / m_k <= alpha0_k sqrt(2 U) as above, and |(C_kb S f_b)| / m_k <= kappa_k
+//           sqrt(2 U) with |f_b,i| <= sum_s |g_s,i| |V_s| and |V_s| <= sqrt(k0_s) sqrt(2 U_s).
+// Tangent damping (C changes with the branches, and S with it) and P-Delta (its energy's growth
+// rests on the velocities of every DOF it couples) are outside this proof: such a row is left
+// without a valid bound (valid() false: fine steps throughout).
+void TranslationBound::massless_bounds(const AssembledRow& a, const std::vector<int>& bs,
+                                       const Eigen::MatrixXd& K0) {
+  const int n = a.dofs(), m = static_cast<int>(bs.size());
+  for (int k = 0; k < n && valid_; ++k)
+    if (static_cast<int>(a.storeys.size()) == n &&
+        (a.storeys[k].damping_a1 > 0.0 || a.storeys[k].kg != 0.0))
+      valid_ = false;
+  if (!valid_) return;
+  std::vector<char> is_b(n, 0);
+  for (int b : bs) is_b[b] = 1;
+  Eigen::MatrixXd Cbb(m, m), Cb(m, n), Kb(m, n);
+  for (int i = 0; i < m; ++i) {
+    Cb.row(i) = a.C.row(bs[i]);
+    Kb.row(i) = a.K.row(bs[i]);
+    for (int j = 0; j < m; ++j) Cbb(i, j) = a.C(bs[i], bs[j]);
+  }
+  const Eigen::MatrixXd S = Cbb.inverse();
+  const Eigen::LDLT<Eigen::MatrixXd> Kf(a.K);
+  // Per massless DOF i: sum_s |g_s,i| sqrt(k0_s) over the storeys and springs acting on it.
+  Eigen::VectorXd F = Eigen::VectorXd::Zero(m);
+  for (int s = 0; s < n && static_cast<int>(a.storeys.size()) == n; ++s) {
+    const RowStorey& st = a.storeys[s];
+    const double r = std::sqrt(st.p.k0);
+    for (int i = 0; i < m; ++i) {
+      if (s == bs[i]) F(i) += r;
+      if (st.below == bs[i]) F(i) += r;
+      if (st.rot == bs[i]) F(i) += st.p.h * r;
+    }
+  }
+  for (int k = 0; k < n; ++k) {
+    if (is_b[k]) {
+      G_(k) = G_own_(k) = 0.0;  // no contact acts on a base DOF
+      continue;
+    }
+    const double ik = a.inv_mass(k);
+    Eigen::RowVectorXd ckb(m);
+    for (int i = 0; i < m; ++i) ckb(i) = a.C(k, bs[i]);
+    const Eigen::RowVectorXd cs = ckb * S;
+    const Eigen::RowVectorXd cstar = a.C.row(k) - cs * Cb;
+    double beta2 = 0.0;
+    for (int j = 0; j < n; ++j)
+      if (!is_b[j]) beta2 += cstar(j) * cstar(j) * a.inv_mass(j);
+    beta2 *= ik * ik;
+    const Eigen::RowVectorXd w = a.K.row(k) - cs * Kb;
+    const double alpha2 = ik * ik * w.dot(Kf.solve(w.transpose()).transpose());
+    G_(k) = std::sqrt(std::max(0.0, alpha2) + beta2);
+    double kappa = 0.0;
+    for (int i = 0; i < m; ++i) kappa += std::fabs(cs(i)) * F(i);
+    G_own_(k) = std::sqrt(ik * ik * K0(k, k) + beta2) + ik * kappa;
   }
 }
 

@@ -57,10 +57,16 @@ class TranslationBound {
   /// be in different buildings.
   double approach(int dof_left, int dof_right, const Eigen::VectorXd& v, double ground_rate,
                   double h) const;
-  /// False for a row with a massless base (a foundation without mass or rotary inertia): its
-  /// first-order DOFs are outside the proof, and no step may rely on the bound.
+  /// False for a row whose bound is not proved: a massless base (a foundation without mass or
+  /// rotary inertia) with tangent-stiffness damping or P-Delta (translation_bound.cpp,
+  /// massless_bounds); no step may rely on it then.
   bool valid() const { return valid_; }
 
+ private:
+  void massless_bounds(const AssembledRow& a, const std::vector<int>& massless,
+                       const Eigen::MatrixXd& K0);
+
+ public:
  private:
   std::vector<int> building_of_;        // per DOF
   std::vector<std::vector<int>> dofs_;  // per building: its floors, then its base's DOFs

@@ -8,6 +8,7 @@
 #include "core/error.hpp"
 #include "core/format.hpp"
 #include "hysteresis/registry.hpp"
+#include "structure/building_on_base.hpp"
 
 namespace pound {
 
@@ -104,6 +105,25 @@ void validate(const Building& b, const std::string& where) {
   }
   const std::string foundation = foundation_problem(b.foundation, b.floors());
   if (!foundation.empty()) throw InputError(where + ": foundation: " + foundation);
+  if (b.p_delta && b.foundation.flexible()) {
+    // Gravity on the rotation (the overturning moment of the floors' weights about the base):
+    // the stiffness K0 - Kg of the building on its foundation must stay positive definite, or
+    // the building topples under its own weight (issue 29).
+    const BaseMatrices m = assemble_on_base(b);
+    const Eigen::LLT<Eigen::MatrixXd> llt(m.K0 - m.Kg);
+    if (llt.info() != Eigen::Success)
+      throw InputError(where +
+                       ": with P-Delta the foundation cannot hold the building's overturning "
+                       "moment: raise rocking_stiffness (or the soil's stiffness) above the "
+                       "floors' weights times their heights, sum W_j H_j = " +
+                       format_number(overturning_stiffness(b)) + " N m/rad, with margin");
+  }
+}
+
+double overturning_stiffness(const Building& b) {
+  double s = 0.0, h = 0.0;
+  for (int j = 0; j < b.floors(); ++j) s += b.gravity_load(j) * (h += b.storey_heights[j]);
+  return s;
 }
 
 std::string imk_parameter_problem(const StoreyParameters& p, bool imk) {

@@ -94,6 +94,10 @@ void validate(const Building& b, const std::string& where);
 /// k0 - P / h being <= 0); tangent damping only with Rayleigh damping and piecewise-linear laws.
 void validate_gravity(const Building& b, const std::string& where);
 
+/// sum W_j H_j of the floors' gravity loads times their heights above the base [N m/rad]: the
+/// rocking stiffness below which gravity overturns the building on its foundation.
+double overturning_stiffness(const Building& b);
+
 /// What is wrong with the IMK parameters of a storey ("" when nothing): each key with what is
 /// valid (Fc / Fy >= 1; theta_p, theta_pc, lambda, c > 0; Fr / Fy in [0, 1); theta_u > 0 and,
 /// when `imk` (the storey's law), not below the cap drift ratio uy / h + theta_p).
