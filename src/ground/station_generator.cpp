@@ -24,8 +24,9 @@ constexpr double kNugget = 0.01;
 // Calibration of the input coherency: gamma_in = gamma + kappa(f) (c^-1(gamma) - gamma), kappa
 // 0 up to kCalibrationF0, kCalibrationMax from kCalibrationF1, linear in ln f between.
 constexpr double kCalibrationMax = 0.5;
-constexpr double kCalibrationF0 = 2.0;  // [Hz]
-constexpr double kCalibrationF1 = 6.0;  // [Hz]
+constexpr double kCalibrationMaxRandom = 0.25;  // with a random target (RMS score)
+constexpr double kCalibrationF0 = 2.0;          // [Hz]
+constexpr double kCalibrationF1 = 6.0;          // [Hz]
 // Matching of stations 2..S: the soft dead band of ln(target / computed) [-] and the score at
 // which the iteration ends [-] (below SimqkeSettings::accept_score = 0.095 by default).
 constexpr double kDeadBand = 0.07;
@@ -33,6 +34,9 @@ constexpr double kStopScore = 0.085;
 // With a random target (record-to-record variability, RMS score): the dead band widened to the
 // earlier stations' mean ln(target / computed) +- kMisfitMargin where they miss it by more.
 constexpr double kMisfitMargin = 0.02;
+// Phase sets (innovation draws) of a station j >= 2 at most: this factor times max_attempts (a
+// station starts close to the target, so a draw costs less than one motion's).
+constexpr int kAttemptFactor = 2;
 
 // The coherency of unit phasors exp(i arg z_j), exp(i arg z_k) of circular complex Gaussians
 // z_j, z_k of correlation g: E exp(i (arg z_j - arg z_k)) = (pi / 4) g 2F1(1/2, 1/2; 2; g^2)
@@ -100,7 +104,10 @@ StationGenerator::StationGenerator(const DesignSpectrum& target, double duration
     throw InputError("station generator: at most 32768 stations");
   accept_score_ = settings.accept_score;
   coherent_ = stations_.coherency.model == CoherencyModel::none || stations_.positions.size() == 1;
-  if (!coherent_) factor_coherency();
+  if (!coherent_) {
+    factor_coherency(false, cond_);
+    factor_coherency(true, cond_random_);
+  }
 }
 
 StationGenerator::~StationGenerator() = default;
@@ -114,11 +121,12 @@ const std::vector<double>& StationGenerator::match_periods() const {
 }
 
 // gamma_in = gamma + kappa(f) (c^-1(gamma) - gamma) (see kCalibrationMax).
-double StationGenerator::input_coherency(double d, double f) const {
+double StationGenerator::input_coherency(double d, double f, bool random_target) const {
   const double g = stations_.coherency(d, f);
   if (f <= kCalibrationF0) return g;
-  const double kappa = f >= kCalibrationF1 ? kCalibrationMax
-                                           : kCalibrationMax * std::log(f / kCalibrationF0) /
+  const double top = random_target ? kCalibrationMaxRandom : kCalibrationMax;
+  const double kappa = f >= kCalibrationF1 ? top
+                                           : top * std::log(f / kCalibrationF0) /
                                                  std::log(kCalibrationF1 / kCalibrationF0);
   return g + kappa * (gaussian_coherency(g) - g);
 }
@@ -128,16 +136,16 @@ double StationGenerator::input_coherency(double d, double f) const {
 // j the regression coefficients b_j = (G_<j + delta I)^-1 g_j = L_<j^-T (L_j,<j)^T by back
 // substitution (a component of a vanishing pivot set to 0) and L_jj = sqrt(1 - b_j^T G_<j b_j),
 // packed as (j, m < j) -> b_jm, (j, j) -> L_jj.
-void StationGenerator::factor_coherency() {
+void StationGenerator::factor_coherency(bool random_target, std::vector<double>& cond) const {
   const std::size_t s = stations_.positions.size(), tri = s * (s + 1) / 2;
   const std::vector<double>& x = stations_.positions;
-  cond_.assign(gen_.fft_bins() * tri, 0.0);
+  cond.assign(gen_.fft_bins() * tri, 0.0);
   std::vector<double> l(tri), g(tri);
   for (std::size_t k = 0; k < gen_.fft_bins(); ++k) {
     const double f = gen_.bin_frequency(k);
     for (std::size_t j = 0; j < s; ++j) {
       for (std::size_t m = 0; m <= j; ++m) {
-        g[packed(j, m)] = m == j ? 1.0 : input_coherency(std::fabs(x[j] - x[m]), f);
+        g[packed(j, m)] = m == j ? 1.0 : input_coherency(std::fabs(x[j] - x[m]), f, random_target);
         double sum = g[packed(j, m)] + (m == j ? kNugget : 0.0);
         for (std::size_t p = 0; p < m; ++p) sum -= l[packed(j, p)] * l[packed(m, p)];
         if (m == j) {
@@ -148,7 +156,7 @@ void StationGenerator::factor_coherency() {
         }
       }
     }
-    double* c = cond_.data() + k * tri;
+    double* c = cond.data() + k * tri;
     for (std::size_t j = 0; j < s; ++j) {
       for (std::size_t m = j; m-- > 0;) {
         double sum = l[packed(j, m)];
@@ -183,6 +191,14 @@ SimqkeAttempt StationGenerator::match_station(const SimqkeStart& start, GroundMo
   SimqkeStart st = start;
   if (!st.rms_score) st.stop_score = kStopScore;
   const bool widen = start.rms_score;
+  // Below the lowest matching frequency f_lo the correction fades out over one octave: weight
+  // ln(f / (f_lo / 2)) / ln 2 of its logarithm (SIMQKE holds the end ratio there).
+  const double f_lo = 1.0 / gen_.match_periods().back();
+  std::vector<double> fade(nb, 1.0);
+  for (std::size_t k = 1; k < nb; ++k) {
+    const double fk = gen_.bin_frequency(k);
+    if (fk < f_lo) fade[k] = std::max(0.0, std::log(2.0 * fk / f_lo) / std::log(2.0));
+  }
   std::vector<Complex> xs;
   std::vector<double> p, r, t;
   const SimqkeGenerator::Corrector correct = [&](GroundMotion& m,
@@ -201,7 +217,7 @@ SimqkeAttempt StationGenerator::match_station(const SimqkeStart& start, GroundMo
     for (std::size_t i = 0; i < np; ++i) r[i] = std::exp(t[i]);
     gen_.bin_power(r, relax, p);
     gen_.transform(m.accel, xs);
-    for (std::size_t k = 1; k < nb; ++k) xs[k] *= p[k];
+    for (std::size_t k = 1; k < nb; ++k) xs[k] *= fade[k] == 1.0 ? p[k] : std::pow(p[k], fade[k]);
     gen_.inverse(xs, m);
   };
   return gen_.match(st, std::move(m0), correct);
@@ -214,11 +230,12 @@ GeneratedMotion StationGenerator::station(const SimqkeStart& start, std::uint64_
                                           std::vector<std::vector<Complex>>& x,
                                           const std::vector<double>& misfit_sum) {
   const std::size_t nb = gen_.fft_bins(), s = stations_.positions.size(), tri = s * (s + 1) / 2;
+  const std::vector<double>& cond = start.rms_score ? cond_random_ : cond_;
   // The coherent part sum_{m < j} b_jm X_m and the stations' mean power spectrum.
   std::vector<Complex> c(nb), z(nb), w;
   std::vector<double> power(nb, 0.0), re, im, pw(nb);
   for (std::size_t k = 0; k < nb; ++k) {
-    const double* b = cond_.data() + k * tri + packed(j, 0);
+    const double* b = cond.data() + k * tri + packed(j, 0);
     for (std::size_t m = 0; m < j; ++m) {
       c[k] += b[m] * x[m][k];
       power[k] += std::norm(x[m][k]) / double(j);
@@ -229,7 +246,7 @@ GeneratedMotion StationGenerator::station(const SimqkeStart& start, std::uint64_
   for (double& v : misfit) v /= double(j);
   SimqkeAttempt best;
   int best_attempt = 0, spectra = 0;
-  for (int attempt = 0; attempt < start.max_attempts; ++attempt) {
+  for (int attempt = 0; attempt < kAttemptFactor * start.max_attempts; ++attempt) {
     // The innovation: SIMQKE's first guess with station j's phases, its smoothed power
     // equalised to the earlier stations', times L_jj; the start X_j = C_j + U_j.
     simqke_phasors(seed, index, station_phase_stream(int(j), attempt), start.amplitude, re, im);
@@ -238,7 +255,7 @@ GeneratedMotion StationGenerator::station(const SimqkeStart& start, std::uint64_
     const std::vector<double> wl = smoothed(pw);
     for (std::size_t k = 1; k < nb; ++k) {
       const double e = wl[k] > 0.0 ? std::sqrt(level[k] / wl[k]) : 0.0;
-      z[k] = c[k] + cond_[k * tri + packed(j, j)] * e * w[k];
+      z[k] = c[k] + cond[k * tri + packed(j, j)] * e * w[k];
     }
     GroundMotion m0;
     gen_.inverse(z, m0);

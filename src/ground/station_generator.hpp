@@ -26,27 +26,30 @@
 // 3. gamma_in = gamma + kappa(f) (c^-1(gamma) - gamma): the model's coherency, raised towards
 //    c^-1(gamma), c(g) = [E(g) - (1 - g^2) K(g)] / g the coherency of the unit phasors of two
 //    circular Gaussians of correlation g (K, E complete elliptic integrals of modulus g), with
-//    kappa 0 up to 2 Hz, 0.5 from 6 Hz, linear in ln f between. Why: per-station matching
-//    equalises the stations' spectral amplitudes, which takes a set of Gaussian correlation g
-//    towards the phase coherency c(g) < g; at 1-2 Hz the matching of step 4 loses nothing, at
-//    4-10 Hz about half of g - c(g) (measured, docs/ground.md; an empirical calibration for
-//    the default 10 s at 0.01 s, which also holds at 20 s).
-// 4. Each station j >= 2 is matched by SIMQKE's iteration (SimqkeGenerator::match with its
-//    loop, best-iteration, stall and phase-set rules; the same envelope, baseline correction
-//    and relaxation) with its own correction: at the matching periods T_i,
-//      l_i = ln(target_i / computed_i) soft-thresholded by the dead band 0.07
-//        (l_i - 0.07 above, l_i + 0.07 below, 0 between), smoothed (1/4, 1/2, 1/4) over the
-//        neighbouring matching periods, then exp(relaxation * l) interpolated in ln T at the
-//        bins as SIMQKE's ratio;
-//    the iteration ends once the score max |q - 1| is <= 0.085 (below accept_score = 0.095).
-//    A station is changed only where it is out of the band, so the stations keep the start's
-//    cross spectra: SIMQKE's iteration keeps correcting periods already within tolerance, a
-//    random walk of each station's Fourier amplitudes that cost the set 0.03-0.16 of
-//    coherency at 1-6 Hz and decorrelated the stations below 1 Hz. With a random target (RMS
-//    score) the dead band is widened to the earlier stations' mean ln(target / computed)
-//    +- 0.02 where they miss it by more (so that a station does not chase an ordinate no motion
-//    reaches), and there is no early end. Phase sets: station j alone, W_j drawn again from
-//    the next stream (at most max_attempts, the one of the smallest score kept).
+//    kappa 0 up to 2 Hz, 0.5 (0.25 with a random target) from 6 Hz, linear in ln f between.
+//    Why: per-station matching equalises the stations' spectral amplitudes, which takes a set
+//    of Gaussian correlation g towards the phase coherency c(g) < g; the matching of step 4
+//    loses nothing measurable up to 2 Hz and about half of g - c(g) at 4-10 Hz (a quarter with
+//    a random target). An empirical calibration (docs/ground.md), measured for the default
+//    settings (10 s at 0.01 s), checked at 20 s, for NZS 1170.5 and the three models.
+// 4. Each station j >= 2 is matched by SIMQKE's iteration (SimqkeGenerator::match: its loop,
+//    best-iteration and stall rules, envelope, baseline correction and relaxation) with its
+//    own correction step: at the matching periods T_i,
+//      l_i = ln(target_i / computed_i), soft-thresholded by the dead band 0.07 (l_i - 0.07
+//      above it, l_i + 0.07 below -0.07, 0 between), smoothed (1/4, 1/2, 1/4) over the
+//      neighbouring periods, exp(relaxation l) interpolated in ln T at the bins as SIMQKE's
+//      ratio and, below the lowest matching frequency f_lo, faded out over one octave (its
+//      logarithm times ln(2 f / f_lo) / ln 2; SIMQKE holds the end ratio there);
+//    the iteration ends once max |q - 1| <= 0.085 (below accept_score = 0.095). A station is
+//    changed only where it is out of the band, so the set keeps the start's cross spectra:
+//    SIMQKE's own iteration keeps correcting periods already within tolerance, a random walk
+//    of each station's Fourier amplitudes that cost the former generator 0.03-0.16 of
+//    coherency at 1-6 Hz and decorrelated close stations below 1 Hz. With a random target (RMS
+//    score) the band is widened to the earlier stations' mean ln(target / computed) +- 0.02
+//    where they miss it by more (a station does not chase an ordinate no motion reaches), and
+//    the iteration has no early end. Phase sets: station j alone, W_j drawn again from the next
+//    stream, at most 2 max_attempts (2 max_attempts_random_target) draws, the one of the
+//    smallest score kept.
 //
 // With coherency none (or S = 1) every station is bit for bit SimqkeGenerator::generate's
 // motion, which is computed once and copied.
@@ -87,13 +90,13 @@ class StationGenerator {
   const std::vector<double>& match_periods() const;
   const StationSettings& settings() const { return stations_; }
   /// The coherency the stations are generated with at separation d [m] and frequency f [Hz],
-  /// gamma_in (step 3 above) [-].
-  double input_coherency(double d, double f) const;
+  /// gamma_in (step 3 above) [-], for the design spectrum or a random target.
+  double input_coherency(double d, double f, bool random_target = false) const;
 
  private:
   using Complex = std::complex<double>;
   std::vector<GeneratedMotion> run(const SimqkeStart& s, std::uint64_t seed, std::uint64_t index);
-  void factor_coherency();
+  void factor_coherency(bool random_target, std::vector<double>& cond) const;
   GeneratedMotion station(const SimqkeStart& start, std::uint64_t seed, std::uint64_t index,
                           std::size_t j, std::vector<std::vector<Complex>>& x,
                           const std::vector<double>& misfit_sum);
@@ -103,8 +106,9 @@ class StationGenerator {
   SimqkeGenerator gen_;
   StationSettings stations_;
   double accept_score_ = 0.0;
-  bool coherent_ = true;      // every station is station 1
-  std::vector<double> cond_;  // per bin k: packed (j, m < j) -> b_jm, (j, j) -> L_jj
+  bool coherent_ = true;  // every station is station 1
+  // per bin k: packed (j, m < j) -> b_jm, (j, j) -> L_jj (design spectrum, random target)
+  std::vector<double> cond_, cond_random_;
 };
 
 /// Philox stream of station `station`'s phases (0-based) in phase set `attempt`: attempt +
