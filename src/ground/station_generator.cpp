@@ -158,8 +158,20 @@ void StationGenerator::factor_coherency(bool random_target, std::vector<double>&
     }
     double* c = cond.data() + k * tri;
     for (std::size_t j = 0; j < s; ++j) {
-      for (std::size_t m = j; m-- > 0;) {
-        double sum = l[packed(j, m)];
+      // Right-hand side g_j + delta g_jn e_n, n the most coherent earlier station: the nugget
+      // pulls b_j towards the regression on station n alone rather than towards 0 (with one
+      // earlier station b_j = g_jn exactly).
+      std::size_t n = 0;
+      for (std::size_t m = 1; m < j; ++m)
+        if (g[packed(j, m)] > g[packed(j, n)]) n = m;
+      for (std::size_t m = 0; m < j; ++m) {  // forward substitution, y in c[packed(j, m)]
+        double sum = g[packed(j, m)] + (m == n ? kNugget * g[packed(j, n)] : 0.0);
+        for (std::size_t p = 0; p < m; ++p) sum -= l[packed(m, p)] * c[packed(j, p)];
+        const double d = l[packed(m, m)];
+        c[packed(j, m)] = d > kPivotFloor ? sum / d : 0.0;
+      }
+      for (std::size_t m = j; m-- > 0;) {  // back substitution
+        double sum = c[packed(j, m)];
         for (std::size_t p = m + 1; p < j; ++p) sum -= l[packed(p, m)] * c[packed(j, p)];
         const double d = l[packed(m, m)];
         c[packed(j, m)] = d > kPivotFloor ? sum / d : 0.0;

@@ -11,18 +11,21 @@
 //    generator's FFT length, of the MATCHED station m < j):
 //
 //      X_j = sum_{m<j} b_jm X_m + L_jj E_j W_j,
-//      b_j = (G_<j + delta I)^-1 g_j,   L_jj^2 = 1 - b_j^T G_<j b_j,
+//      (G_<j + delta I) b_j = g_j + delta g_jn e_n,   L_jj^2 = 1 - b_j^T G_<j b_j,
 //
 //    the regression (kriging) of station j on the stations before it under the coherency
-//    matrix G_jm = gamma_in(|x_j - x_m|, f_k) (Deodatis 1996, Prob. Eng. Mech. 11:149-167: the
-//    lagged coherency, the wave passage being a pure delay applied by the caller), with a
-//    nugget delta = 0.01 because the earlier stations are matched motions, not samples of the
-//    model (without it the regressions on close stations extrapolate and the coherency of far
-//    pairs is lost, e.g. Luco-Wong at 100 m). W_j is SIMQKE's first guess with station j's
-//    phases (Philox stream a + 65536 (j - 1) in phase set a: simqke_phasors, synthesis,
-//    envelope, baseline correction) and E_j = sqrt(<sum_m |X_m|^2 / j> / <|W_j|^2>) equalises
-//    its power (<> a moving sum over +-max(1, k/10) bins) to the earlier stations'. Before the
-//    matching the set has the coherency gamma_in exactly: E[X_j X_m^*] = (G b_j)_m S(f).
+//    matrix G_jm = gamma_in(|x_j - x_m|, f_k) (the lagged coherency; the wave passage is a pure
+//    delay of each station, applied by the caller with delayed(), Deodatis 1996, Prob. Eng.
+//    Mech. 11:149-167), n the most coherent (nearest) earlier station. The nugget delta = 0.01
+//    is there because the earlier stations are matched motions, not samples of the model:
+//    without it the regression on close stations extrapolates (Luco-Wong at 100 m lost 0.2 of
+//    coherency); it pulls b_j towards the regression on station n alone, not towards 0 (so
+//    that a pair of stations keeps its coherency, 0.991 at 12 m below 1 Hz, not 0.991 / 1.01).
+//    W_j is SIMQKE's first guess with station j's phases (Philox stream a + 65536 (j - 1) in
+//    phase set a: simqke_phasors, synthesis, envelope, baseline correction) and E_j =
+//    sqrt(<sum_m |X_m|^2 / j> / <|W_j|^2>) equalises its power (<> a moving sum over
+//    +-max(1, k/10) bins) to the earlier stations'. Before the matching, with one earlier
+//    station, E[X_j X_1^*] = gamma_in S(f) exactly.
 // 3. gamma_in = gamma + kappa(f) (c^-1(gamma) - gamma): the model's coherency, raised towards
 //    c^-1(gamma), c(g) = [E(g) - (1 - g^2) K(g)] / g the coherency of the unit phasors of two
 //    circular Gaussians of correlation g (K, E complete elliptic integrals of modulus g), with

@@ -193,7 +193,7 @@ TEST(GroundStations, SetHasTheLagOfWavePassage) {
 
 // The synthesis (before the matching) has the coherency it is generated with, gamma_in.
 TEST(GroundStations, SynthesisHasTheInputCoherency) {
-  const Set s = make_set({0.0, 40.0, 100.0}, 400.0, 100, 2026, 0);
+  const Set s = make_set({0.0, 40.0, 100.0}, 400.0, 200, 2026, 0);
   const StationGenerator gen(target(), 10.0, SimqkeSettings{}, s.st);
   const AchievedCoherency a = coherency_of(s, {1, 2, 4, 6}, 0.25);
   for (const PairCoherency& p : a.pairs)
@@ -305,7 +305,7 @@ TEST(GroundStations, CloseStationsMoveApartAsTheModelSays) {
 // each matches it as station 1 does (median RMS of ln(computed / target) within 0.01 of station
 // 1's), and the coherency at 0.2-6 Hz stays within 0.05 of the model.
 TEST(GroundStations, RandomTargetStationsMatchAndCohere) {
-  const Set s = make_set({0.0, 12.0, 40.0}, 400.0, 150, 2026, 35, true);
+  const Set s = make_set({0.0, 12.0, 40.0}, 400.0, 250, 2026, 35, true);
   for (std::size_t j = 0; j < s.score.size(); ++j)
     EXPECT_LT(median(s.score[j]), median(s.score[0]) + 0.01) << "station " << j + 1;
   for (const auto& [f, band] :
