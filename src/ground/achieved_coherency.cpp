@@ -131,4 +131,39 @@ AchievedCoherency achieved_coherency(const std::vector<std::vector<GroundMotion>
   return out;
 }
 
+RelativeEnergy relative_displacement_energy(const std::vector<std::vector<GroundMotion>>& motions,
+                                            int j, int k, double separation, const Coherency& model,
+                                            double f_min, double f_max) {
+  RelativeEnergy out;
+  if (motions.empty()) return out;
+  const double dt = motions.front().front().dt;
+  std::size_t n = 0;
+  for (const auto& row : motions)
+    n = std::max({n, row[std::size_t(j)].accel.size(), row[std::size_t(k)].accel.size()});
+  RealFft fft(good_fft_size(2 * n));
+  const std::size_t nb = fft.bins();
+  const double df = 1.0 / (double(2 * (nb - 1)) * dt);
+  std::vector<double> cjj(nb, 0.0), ckk(nb, 0.0);
+  std::vector<Complex> xj, xk;
+  for (const auto& row : motions) {
+    fft.forward(row[std::size_t(j)].accel, xj);
+    fft.forward(row[std::size_t(k)].accel, xk);
+    for (std::size_t b = 1; b < nb; ++b) {
+      const double f = df * double(b);
+      if (f < f_min || f > f_max) continue;
+      const double w2 = std::pow(2.0 * M_PI * f, 2);
+      const Complex dj = xj[b] / w2, dk = xk[b] / w2;
+      cjj[b] += std::norm(dj);
+      ckk[b] += std::norm(dk);
+      out.achieved += std::norm(dk - dj);
+    }
+  }
+  for (std::size_t b = 1; b < nb; ++b) {
+    const double f = df * double(b);
+    if (f < f_min || f > f_max) continue;
+    out.model += cjj[b] + ckk[b] - 2.0 * model(separation, f) * std::sqrt(cjj[b] * ckk[b]);
+  }
+  return out;
+}
+
 }  // namespace pound

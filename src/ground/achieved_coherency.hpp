@@ -38,4 +38,17 @@ AchievedCoherency achieved_coherency(const std::vector<std::vector<GroundMotion>
                                      const std::vector<double>& delays, const Coherency& model,
                                      const std::vector<double>& frequencies, double half_band);
 
+/// The ensemble relative-displacement energy of stations j and k of a set without wave passage
+/// between them (zero lag), over the bins f_min <= f_b <= f_max [Hz] (f_min > 0): achieved,
+/// sum_i sum_b |D_ik(f_b) - D_ij(f_b)|^2, and the model's expectation for the set's own
+/// spectra, sum_b [C_jj + C_kk - 2 |gamma(separation, f_b)| sqrt(C_jj C_kk)], D = X / (2 pi
+/// f)^2 the Fourier transform of the displacement (X of the acceleration, zero-padded as in
+/// achieved_coherency) and C_jj = sum_i |D_ij|^2 [m^2 s^2 x samples^2; compare the two].
+struct RelativeEnergy {
+  double achieved = 0.0, model = 0.0;
+};
+RelativeEnergy relative_displacement_energy(const std::vector<std::vector<GroundMotion>>& motions,
+                                            int j, int k, double separation, const Coherency& model,
+                                            double f_min, double f_max);
+
 }  // namespace pound

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <string>
 #include <utility>
 
@@ -16,18 +17,37 @@ std::size_t packed(std::size_t j, std::size_t m) {
   return j * (j + 1) / 2 + m;
 }
 
+// Conditioning (docs/ground.md, "Generation"): the nugget added to the diagonal of the
+// coherency matrix of the earlier stations, which are matched motions, not samples of the
+// model's process.
+constexpr double kNugget = 0.01;
+// Calibration of the input coherency: gamma_in = gamma + kappa(f) (c^-1(gamma) - gamma), kappa
+// 0 up to kCalibrationF0, kCalibrationMax from kCalibrationF1, linear in ln f between.
+constexpr double kCalibrationMax = 0.5;
+constexpr double kCalibrationMaxRandom = 0.25;  // with a random target (RMS score)
+constexpr double kCalibrationF0 = 2.0;          // [Hz]
+constexpr double kCalibrationF1 = 6.0;          // [Hz]
+// Matching of stations 2..S: the soft dead band of ln(target / computed) [-] and the score at
+// which the iteration ends [-] (below SimqkeSettings::accept_score = 0.095 by default).
+constexpr double kDeadBand = 0.07;
+constexpr double kStopScore = 0.085;
+// With a random target (record-to-record variability, RMS score): the dead band widened to the
+// earlier stations' mean ln(target / computed) +- kMisfitMargin where they miss it by more.
+constexpr double kMisfitMargin = 0.02;
+// Phase sets (innovation draws) of a station j >= 2 at most: this factor times max_attempts (a
+// station starts close to the target, so a draw costs less than one motion's).
+constexpr int kAttemptFactor = 2;
+
 // The coherency of unit phasors exp(i arg z_j), exp(i arg z_k) of circular complex Gaussians
 // z_j, z_k of correlation g: E exp(i (arg z_j - arg z_k)) = (pi / 4) g 2F1(1/2, 1/2; 2; g^2)
-// = [E(g) - (1 - g^2) K(g)] / g, K and E the complete elliptic integrals of modulus g
-// (docs/ground.md). Increasing from 0 to 1 on [0, 1], pi g / 4 near 0.
+// = [E(g) - (1 - g^2) K(g)] / g, K and E the complete elliptic integrals of modulus g.
 double phase_coherency(double g) {
   if (g <= 0.0) return 0.0;
   if (g >= 1.0) return 1.0;
   return (std::comp_ellint_2(g) - (1.0 - g * g) * std::comp_ellint_1(g)) / g;
 }
 
-// The correlation g of the Gaussians whose unit phasors have the coherency `gamma` in [0, 1]:
-// the inverse of phase_coherency, by linear interpolation in a table of 4001 points dense
+// The inverse of phase_coherency, by linear interpolation in a table of 4001 points dense
 // near g = 1 (g = 1 - (1 - u)^2, u uniform).
 double gaussian_coherency(double gamma) {
   static const std::vector<std::pair<double, double>> table = [] {
@@ -59,25 +79,21 @@ void check_positions(const std::vector<double>& x) {
   }
 }
 
+// The moving sum of p over +- max(1, k / 10) bins at every bin k.
+std::vector<double> smoothed(const std::vector<double>& p) {
+  std::vector<double> out(p.size(), 0.0);
+  for (std::size_t k = 0; k < p.size(); ++k) {
+    const std::size_t h = std::max<std::size_t>(1, k / 10);
+    const std::size_t lo = k > h ? k - h : 0, hi = std::min(p.size() - 1, k + h);
+    for (std::size_t b = lo; b <= hi; ++b) out[k] += p[b];
+  }
+  return out;
+}
+
 }  // namespace
 
 std::uint32_t station_phase_stream(int station, int attempt) {
   return std::uint32_t(attempt) + 65536u * std::uint32_t(station);
-}
-
-std::uint32_t station_modulus_stream(int station, int attempt) {
-  return 0x80000000u + station_phase_stream(station, attempt);
-}
-
-// Rayleigh moduli rho_k = sqrt(-2 ln(1 - u_k)) (E rho^2 = 2) of the bins with amplitude.
-void rayleigh_moduli(std::uint64_t seed, std::uint64_t index, int attempt, int station,
-                     const std::vector<double>& amplitude, std::vector<double>& rho) {
-  rho.assign(amplitude.size(), 0.0);
-  for (std::size_t k = 0; k < amplitude.size(); ++k)
-    if (amplitude[k] != 0.0)
-      rho[k] =
-          std::sqrt(-2.0 * std::log1p(-philox_uniform(seed, index, std::uint32_t(k),
-                                                      station_modulus_stream(station, attempt))));
 }
 
 StationGenerator::StationGenerator(const DesignSpectrum& target, double duration,
@@ -87,9 +103,11 @@ StationGenerator::StationGenerator(const DesignSpectrum& target, double duration
   if (stations_.positions.size() > 32768)
     throw InputError("station generator: at most 32768 stations");
   accept_score_ = settings.accept_score;
-
   coherent_ = stations_.coherency.model == CoherencyModel::none || stations_.positions.size() == 1;
-  if (!coherent_) factor_coherency();
+  if (!coherent_) {
+    factor_coherency(false, cond_);
+    factor_coherency(true, cond_random_);
+  }
 }
 
 StationGenerator::~StationGenerator() = default;
@@ -102,19 +120,33 @@ const std::vector<double>& StationGenerator::match_periods() const {
   return gen_.match_periods();
 }
 
-// G_jm = |gamma(|x_j - x_m|, f_k)| at every bin, factored G = L L^T (Cholesky-Banachiewicz)
-// with vanishing pivots set to 0: the columns below them are then 0 as well.
-void StationGenerator::factor_coherency() {
+// gamma_in = gamma + kappa(f) (c^-1(gamma) - gamma) (see kCalibrationMax).
+double StationGenerator::input_coherency(double d, double f, bool random_target) const {
+  const double g = stations_.coherency(d, f);
+  if (f <= kCalibrationF0) return g;
+  const double top = random_target ? kCalibrationMaxRandom : kCalibrationMax;
+  const double kappa = f >= kCalibrationF1 ? top
+                                           : top * std::log(f / kCalibrationF0) /
+                                                 std::log(kCalibrationF1 / kCalibrationF0);
+  return g + kappa * (gaussian_coherency(g) - g);
+}
+
+// Per bin k: G = gamma_in at the stations' separations, the Cholesky factor L of G + delta I
+// (Cholesky-Banachiewicz, a pivot below kPivotFloor set to 0 with its column), for each station
+// j the regression coefficients b_j = (G_<j + delta I)^-1 g_j = L_<j^-T (L_j,<j)^T by back
+// substitution (a component of a vanishing pivot set to 0) and L_jj = sqrt(1 - b_j^T G_<j b_j),
+// packed as (j, m < j) -> b_jm, (j, j) -> L_jj.
+void StationGenerator::factor_coherency(bool random_target, std::vector<double>& cond) const {
   const std::size_t s = stations_.positions.size(), tri = s * (s + 1) / 2;
   const std::vector<double>& x = stations_.positions;
-  lower_.assign(gen_.fft_bins() * tri, 0.0);
+  cond.assign(gen_.fft_bins() * tri, 0.0);
+  std::vector<double> l(tri), g(tri);
   for (std::size_t k = 0; k < gen_.fft_bins(); ++k) {
     const double f = gen_.bin_frequency(k);
-    double* l = lower_.data() + k * tri;
     for (std::size_t j = 0; j < s; ++j) {
       for (std::size_t m = 0; m <= j; ++m) {
-        double sum =
-            m == j ? 1.0 : gaussian_coherency(stations_.coherency(std::fabs(x[j] - x[m]), f));
+        g[packed(j, m)] = m == j ? 1.0 : input_coherency(std::fabs(x[j] - x[m]), f, random_target);
+        double sum = g[packed(j, m)] + (m == j ? kNugget : 0.0);
         for (std::size_t p = 0; p < m; ++p) sum -= l[packed(j, p)] * l[packed(m, p)];
         if (m == j) {
           l[packed(j, j)] = sum > 0.0 ? std::sqrt(sum) : 0.0;
@@ -123,6 +155,32 @@ void StationGenerator::factor_coherency() {
           l[packed(j, m)] = d > kPivotFloor ? sum / d : 0.0;
         }
       }
+    }
+    double* c = cond.data() + k * tri;
+    for (std::size_t j = 0; j < s; ++j) {
+      // Right-hand side g_j + delta g_jn e_n, n the most coherent earlier station: the nugget
+      // pulls b_j towards the regression on station n alone rather than towards 0 (with one
+      // earlier station b_j = g_jn exactly).
+      std::size_t n = 0;
+      for (std::size_t m = 1; m < j; ++m)
+        if (g[packed(j, m)] > g[packed(j, n)]) n = m;
+      for (std::size_t m = 0; m < j; ++m) {  // forward substitution, y in c[packed(j, m)]
+        double sum = g[packed(j, m)] + (m == n ? kNugget * g[packed(j, n)] : 0.0);
+        for (std::size_t p = 0; p < m; ++p) sum -= l[packed(m, p)] * c[packed(j, p)];
+        const double d = l[packed(m, m)];
+        c[packed(j, m)] = d > kPivotFloor ? sum / d : 0.0;
+      }
+      for (std::size_t m = j; m-- > 0;) {  // back substitution
+        double sum = c[packed(j, m)];
+        for (std::size_t p = m + 1; p < j; ++p) sum -= l[packed(p, m)] * c[packed(j, p)];
+        const double d = l[packed(m, m)];
+        c[packed(j, m)] = d > kPivotFloor ? sum / d : 0.0;
+      }
+      double q = 0.0;
+      for (std::size_t m = 0; m < j; ++m)
+        for (std::size_t p = 0; p < j; ++p)
+          q += c[packed(j, m)] * c[packed(j, p)] * g[m >= p ? packed(m, p) : packed(p, m)];
+      c[packed(j, j)] = std::sqrt(std::max(0.0, 1.0 - q));
     }
   }
 }
@@ -136,80 +194,118 @@ std::vector<GeneratedMotion> StationGenerator::generate(std::uint64_t seed, std:
   return run(gen_.start(ln_factor), seed, index);
 }
 
-// Station j's stationary coefficients / A_k, sum_{m <= j} L_jm exp(i phi_m), into (zr, zi).
-void StationGenerator::coefficients(std::size_t j, const std::vector<std::vector<double>>& re,
-                                    const std::vector<std::vector<double>>& im,
-                                    const std::vector<std::vector<double>>& rho,
-                                    std::vector<double>& zr, std::vector<double>& zi) const {
-  const std::size_t nb = gen_.fft_bins(), s = stations_.positions.size(), tri = s * (s + 1) / 2;
-  zr.resize(nb);
-  zi.resize(nb);
-  for (std::size_t k = 0; k < nb; ++k) {
-    const double* l = lower_.data() + k * tri + packed(j, 0);
-    double a = 0.0, b = 0.0;
-    for (std::size_t m = 0; m <= j; ++m) {
-      a += l[m] * rho[m][k] * re[m][k];
-      b += l[m] * rho[m][k] * im[m][k];
-    }
-    // Unit modulus: the phase of the Gaussian combination, the amplitude A_k of one motion
-    // (a circular Gaussian is rho exp(i phi) with rho Rayleigh and phi uniform, independent).
-    const double r = std::hypot(a, b);
-    zr[k] = r > 0.0 ? a / r : 1.0;
-    zi[k] = r > 0.0 ? b / r : 0.0;
+// SIMQKE's iteration with the station's correction: ln ratio soft-thresholded by kDeadBand,
+// smoothed over the neighbouring matching periods (1/4, 1/2, 1/4), to the power `relaxation`.
+SimqkeAttempt StationGenerator::match_station(const SimqkeStart& start, GroundMotion m0,
+                                              const std::vector<double>& misfit) {
+  const std::size_t nb = gen_.fft_bins();
+  const double relax = gen_.settings().relaxation;
+  SimqkeStart st = start;
+  if (!st.rms_score) st.stop_score = kStopScore;
+  const bool widen = start.rms_score;
+  // Below the lowest matching frequency f_lo the correction fades out over one octave: weight
+  // ln(f / (f_lo / 2)) / ln 2 of its logarithm (SIMQKE holds the end ratio there).
+  const double f_lo = 1.0 / gen_.match_periods().back();
+  std::vector<double> fade(nb, 1.0);
+  for (std::size_t k = 1; k < nb; ++k) {
+    const double fk = gen_.bin_frequency(k);
+    if (fk < f_lo) fade[k] = std::max(0.0, std::log(2.0 * fk / f_lo) / std::log(2.0));
   }
+  std::vector<Complex> xs;
+  std::vector<double> p, r, t;
+  const SimqkeGenerator::Corrector correct = [&](GroundMotion& m,
+                                                 const std::vector<double>& ratio) {
+    const std::size_t np = ratio.size();
+    r.resize(np);
+    for (std::size_t i = 0; i < np; ++i) {
+      const double l = std::log(ratio[i]);
+      const double hi = widen ? std::max(kDeadBand, misfit[i] + kMisfitMargin) : kDeadBand;
+      const double lo = widen ? std::min(-kDeadBand, misfit[i] - kMisfitMargin) : -kDeadBand;
+      r[i] = l > hi ? l - hi : (l < lo ? l - lo : 0.0);
+    }
+    t.resize(np);
+    for (std::size_t i = 0; i < np; ++i)
+      t[i] = 0.5 * r[i] + 0.25 * (r[i > 0 ? i - 1 : i] + r[i + 1 < np ? i + 1 : i]);
+    for (std::size_t i = 0; i < np; ++i) r[i] = std::exp(t[i]);
+    gen_.bin_power(r, relax, p);
+    gen_.transform(m.accel, xs);
+    for (std::size_t k = 1; k < nb; ++k) xs[k] *= fade[k] == 1.0 ? p[k] : std::pow(p[k], fade[k]);
+    gen_.inverse(xs, m);
+  };
+  return gen_.match(st, std::move(m0), correct);
+}
+
+// Station j (0-based, j >= 1) of (seed, index): the conditional start from the matched stations
+// before it (their Fourier transforms x[m], m < j), matched; its transform stored in x[j].
+GeneratedMotion StationGenerator::station(const SimqkeStart& start, std::uint64_t seed,
+                                          std::uint64_t index, std::size_t j,
+                                          std::vector<std::vector<Complex>>& x,
+                                          const std::vector<double>& misfit_sum) {
+  const std::size_t nb = gen_.fft_bins(), s = stations_.positions.size(), tri = s * (s + 1) / 2;
+  const std::vector<double>& cond = start.rms_score ? cond_random_ : cond_;
+  // The coherent part sum_{m < j} b_jm X_m and the stations' mean power spectrum.
+  std::vector<Complex> c(nb), z(nb), w;
+  std::vector<double> power(nb, 0.0), re, im, pw(nb);
+  for (std::size_t k = 0; k < nb; ++k) {
+    const double* b = cond.data() + k * tri + packed(j, 0);
+    for (std::size_t m = 0; m < j; ++m) {
+      c[k] += b[m] * x[m][k];
+      power[k] += std::norm(x[m][k]) / double(j);
+    }
+  }
+  const std::vector<double> level = smoothed(power);
+  std::vector<double> misfit(misfit_sum);
+  for (double& v : misfit) v /= double(j);
+  SimqkeAttempt best;
+  int best_attempt = 0, spectra = 0;
+  for (int attempt = 0; attempt < kAttemptFactor * start.max_attempts; ++attempt) {
+    // The innovation: SIMQKE's first guess with station j's phases, its smoothed power
+    // equalised to the earlier stations', times L_jj; the start X_j = C_j + U_j.
+    simqke_phasors(seed, index, station_phase_stream(int(j), attempt), start.amplitude, re, im);
+    gen_.transform(gen_.synthesise(start, re, im).accel, w);
+    for (std::size_t k = 0; k < nb; ++k) pw[k] = std::norm(w[k]);
+    const std::vector<double> wl = smoothed(pw);
+    for (std::size_t k = 1; k < nb; ++k) {
+      const double e = wl[k] > 0.0 ? std::sqrt(level[k] / wl[k]) : 0.0;
+      z[k] = c[k] + cond[k * tri + packed(j, j)] * e * w[k];
+    }
+    GroundMotion m0;
+    gen_.inverse(z, m0);
+    SimqkeAttempt a = match_station(start, std::move(m0), misfit);
+    spectra += a.spectra;
+    if (a.score < best.score) {
+      best = std::move(a);
+      best_attempt = attempt;
+    }
+    if (best.score <= accept_score_) break;
+  }
+  gen_.transform(best.motion.accel, x[j]);
+  return gen_.finish(std::move(best), start, seed, index, best_attempt, spectra);
 }
 
 std::vector<GeneratedMotion> StationGenerator::run(const SimqkeStart& start, std::uint64_t seed,
                                                    std::uint64_t index) {
-  const std::size_t s = coherent_ ? 1 : stations_.positions.size();
-  std::vector<std::vector<double>> re(s), im(s);  // phasors exp(i phi_m) per station m
-  std::vector<std::vector<double>> rho(s);        // Rayleigh moduli per station m
-  std::vector<double> zr, zi;
-  std::vector<SimqkeAttempt> best(s), current(s);
-  std::vector<GroundMotion> m(s);
-  std::vector<int> spectra(s, 0);
-  double best_score = 1e300;
-  int best_attempt = 0;
-  for (int attempt = 0; attempt < start.max_attempts; ++attempt) {
-    for (std::size_t j = 0; j < s; ++j) {
-      simqke_phasors(seed, index, station_phase_stream(int(j), attempt), start.amplitude, re[j],
-                     im[j]);
-      if (!coherent_) rayleigh_moduli(seed, index, attempt, int(j), start.amplitude, rho[j]);
-      if (j == 0) {  // L_11 = 1 at every bin: station 1's coefficients are its own phasors
-        m[j] = gen_.synthesise(start, re[0], im[0]);
-      } else {
-        coefficients(j, re, im, rho, zr, zi);
-        m[j] = gen_.synthesise(start, zr, zi);
-      }
-    }
-    double score = 0.0;
-    bool complete = true;
-    for (std::size_t j = 0; j < s; ++j) {
-      current[j] = gen_.match(start, std::move(m[j]));
-      spectra[j] += current[j].spectra;
-      score = std::max(score, current[j].score);
-      if (!(score < best_score)) {  // this phase set can no longer beat the best one
-        complete = false;
-        break;
-      }
-    }
-    if (complete && score < best_score) {
-      best_score = score;
-      best_attempt = attempt;
-      std::swap(best, current);
-    }
-    if (best_score <= accept_score_) break;
-  }
   std::vector<GeneratedMotion> out;
-  for (std::size_t j = 0; j < stations_.positions.size(); ++j) {
-    const std::size_t src = coherent_ ? 0 : j;
-    if (coherent_ && j > 0) {
-      out.push_back(out.front());
-      continue;
+  out.push_back(gen_.generate(start, seed, index));
+  const std::size_t s = stations_.positions.size();
+  if (coherent_) {
+    for (std::size_t j = 1; j < s; ++j) out.push_back(out.front());
+  } else {
+    // x[m]: the matched stations' transforms; with a random target, misfit: the sum of their
+    // ln(target / computed) at the matching periods.
+    std::vector<std::vector<Complex>> x(s);
+    std::vector<double> misfit(start.target.size(), 0.0), psa;
+    gen_.transform(out.front().motion.accel, x[0]);
+    for (std::size_t j = 1; j < s; ++j) {
+      if (start.rms_score) {
+        gen_.spectrum(out.back().motion, psa);
+        for (std::size_t i = 0; i < psa.size(); ++i)
+          misfit[i] += std::log(start.target[i] / psa[i]);
+      }
+      out.push_back(station(start, seed, index, j, x, misfit));
     }
-    out.push_back(gen_.finish(best[src], start, seed, index, best_attempt, spectra[src]));
   }
-  if (stations_.positions.size() > 1)
+  if (s > 1)
     for (std::size_t j = 0; j < out.size(); ++j)
       out[j].motion.name += " station " + std::to_string(j + 1);
   return out;

@@ -1,43 +1,62 @@
 #pragma once
 // Spatially varying spectrum-compatible motions at S stations of a row (issue 28,
-// docs/ground.md): the spectral representation of a vector process (Deodatis 1996, "Simulation
-// of ergodic multivariate stochastic processes", Prob. Eng. Mech. 11:149-167), with SIMQKE's
-// unit-modulus Fourier coefficients. At every FFT frequency f_k of the generator, station j's
-// coefficient is A(f_k) exp(i theta_j(f_k)),
+// docs/ground.md, "Generation"): conditional simulation in the frequency domain (Vanmarcke &
+// Fenton 1991; Konakli & Der Kiureghian 2012, EESD 41:495-513, who condition on recorded
+// motions) on the stations already generated, each station then matched to the target by a
+// SIMQKE iteration that changes it only where it misses the target.
 //
-//   exp(i theta_j) = z_j / |z_j|,  z_j = sum_{m <= j} L_jm(f_k) rho_m exp(i phi_m),
+// 1. Station 1 is SimqkeGenerator::generate(seed, index[, ln_factor]) itself (phase sets,
+//    matching, acceptance: one motion).
+// 2. Station j = 2..S, at every FFT bin f_k (X_m the Fourier transform, zero-padded to the
+//    generator's FFT length, of the MATCHED station m < j):
 //
-// with rho_m exp(i phi_m) independent standard circular complex Gaussians per station m (phi_m
-// uniform, rho_m Rayleigh) and L the Cholesky factor of the S x S matrix
-// G_jm = g(|gamma(|x_j - x_m|, f_k)|), g the inverse of the phase coherency
-// c(g) = E exp(i (arg z_j - arg z_m)) = [E(g) - (1 - g^2) K(g)] / g of two circular Gaussians
-// of correlation g (K, E complete elliptic integrals of modulus g): so the unit phasors of
-// stations j and m have the coherency |gamma| of the model, and every station has SIMQKE's
-// amplitude A(f_k) of one motion. Station 1's phases are exactly SimqkeGenerator's
-// (z_1 / |z_1| = exp(i phi_1); Philox key seed, counter (k, a, index low, index high) in phase
-// set a); station m's phases (m = 2, 3, ...) come from the stream a + 65536 (m - 1) and every
-// station's Rayleigh moduli from the stream 2^31 + a + 65536 (m - 1) of the same key and
-// counter layout.
+//      X_j = sum_{m<j} b_jm X_m + L_jj E_j W_j,
+//      (G_<j + delta I) b_j = g_j + delta g_jn e_n,   L_jj^2 = 1 - b_j^T G_<j b_j,
 //
-// Each station is then matched to the target (the design spectrum, or the ONE random target of
-// ln_factor shared by all stations of the set) by SIMQKE's iteration run on that station
-// (SimqkeGenerator::match): the correction scales station j's amplitudes by a real positive
-// ratio (Bi & Hao 2012, Prob. Eng. Mech. 29:92-104), with the same envelope and baseline
-// correction as one motion. The set's lagged coherency after the matching is lower than the
-// model's (docs/ground.md, "What the matching does to the coherency": by 0.03-0.16 at 1-6 Hz
-// for 40-100 m under Harichandran-Vanmarcke), because the corrections of different stations
-// differ. Phase-set retries (accept_score, max_attempts): all stations together, the attempt
-// scored by its worst station (so that identical stations decide as one motion does); the
-// attempt with the smallest such score is kept (the first of equal ones), and an attempt whose
-// stations already score worse than the best attempt so far is abandoned (it cannot win).
+//    the regression (kriging) of station j on the stations before it under the coherency
+//    matrix G_jm = gamma_in(|x_j - x_m|, f_k) (the lagged coherency; the wave passage is a pure
+//    delay of each station, applied by the caller with delayed(), Deodatis 1996, Prob. Eng.
+//    Mech. 11:149-167), n the most coherent (nearest) earlier station. The nugget delta = 0.01
+//    is there because the earlier stations are matched motions, not samples of the model:
+//    without it the regression on close stations extrapolates (Luco-Wong at 100 m lost 0.2 of
+//    coherency); it pulls b_j towards the regression on station n alone, not towards 0 (so
+//    that a pair of stations keeps its coherency, 0.991 at 12 m below 1 Hz, not 0.991 / 1.01).
+//    W_j is SIMQKE's first guess with station j's phases (Philox stream a + 65536 (j - 1) in
+//    phase set a: simqke_phasors, synthesis, envelope, baseline correction) and E_j =
+//    sqrt(<sum_m |X_m|^2 / j> / <|W_j|^2>) equalises its power (<> a moving sum over
+//    +-max(1, k/10) bins) to the earlier stations'. Before the matching, with one earlier
+//    station, E[X_j X_1^*] = gamma_in S(f) exactly.
+// 3. gamma_in = gamma + kappa(f) (c^-1(gamma) - gamma): the model's coherency, raised towards
+//    c^-1(gamma), c(g) = [E(g) - (1 - g^2) K(g)] / g the coherency of the unit phasors of two
+//    circular Gaussians of correlation g (K, E complete elliptic integrals of modulus g), with
+//    kappa 0 up to 2 Hz, 0.5 (0.25 with a random target) from 6 Hz, linear in ln f between.
+//    Why: per-station matching equalises the stations' spectral amplitudes, which takes a set
+//    of Gaussian correlation g towards the phase coherency c(g) < g; the matching of step 4
+//    loses nothing measurable up to 2 Hz and about half of g - c(g) at 4-10 Hz (a quarter with
+//    a random target). An empirical calibration (docs/ground.md), measured for the default
+//    settings (10 s at 0.01 s), checked at 20 s, for NZS 1170.5 and the three models.
+// 4. Each station j >= 2 is matched by SIMQKE's iteration (SimqkeGenerator::match: its loop,
+//    best-iteration and stall rules, envelope, baseline correction and relaxation) with its
+//    own correction step: at the matching periods T_i,
+//      l_i = ln(target_i / computed_i), soft-thresholded by the dead band 0.07 (l_i - 0.07
+//      above it, l_i + 0.07 below -0.07, 0 between), smoothed (1/4, 1/2, 1/4) over the
+//      neighbouring periods, exp(relaxation l) interpolated in ln T at the bins as SIMQKE's
+//      ratio and, below the lowest matching frequency f_lo, faded out over one octave (its
+//      logarithm times ln(2 f / f_lo) / ln 2; SIMQKE holds the end ratio there);
+//    the iteration ends once max |q - 1| <= 0.085 (below accept_score = 0.095). A station is
+//    changed only where it is out of the band, so the set keeps the start's cross spectra:
+//    SIMQKE's own iteration keeps correcting periods already within tolerance, a random walk
+//    of each station's Fourier amplitudes that cost the former generator 0.03-0.16 of
+//    coherency at 1-6 Hz and decorrelated close stations below 1 Hz. With a random target (RMS
+//    score) the band is widened to the earlier stations' mean ln(target / computed) +- 0.02
+//    where they miss it by more (a station does not chase an ordinate no motion reaches), and
+//    the iteration has no early end. Phase sets: station j alone, W_j drawn again from the next
+//    stream, at most 2 max_attempts (2 max_attempts_random_target) draws, the one of the
+//    smallest score kept.
 //
-// A semi-definite G (stations so close that they are fully coherent at f_k) is factored with
-// the pivots that vanish set to 0. With coherency none (or S = 1) every station is bit for bit
-// SimqkeGenerator::generate's motion, which is computed once and copied.
-//
-// The wave-passage phase exp(-i omega (x_k - x_j) / v) of the full coherency matrix is NOT
-// applied here: it factors as D L with D = diag(exp(-i omega delay_j)), a pure delay of each
-// station, which the caller applies with delayed() (ground/wave_passage.hpp) after matching.
+// With coherency none (or S = 1) every station is bit for bit SimqkeGenerator::generate's
+// motion, which is computed once and copied.
+#include <complex>
 #include <cstdint>
 #include <vector>
 
@@ -64,37 +83,39 @@ class StationGenerator {
   StationGenerator& operator=(const StationGenerator&) = delete;
 
   int stations() const;
-  /// The S matched stations for (seed, index), not delayed. With coherency none (or S = 1)
-  /// EVERY station is bit for bit SimqkeGenerator(target, duration, settings).generate(seed,
-  /// index) (resp. with ln_factor). GeneratedMotion::attempt is the set's kept phase set and
-  /// spectra each station's own evaluations.
+  /// The S matched stations for (seed, index), not delayed. Station 1 is always, and with
+  /// coherency none (or S = 1) EVERY station is, bit for bit SimqkeGenerator(target, duration,
+  /// settings).generate(seed, index) (resp. with ln_factor). GeneratedMotion::attempt is the
+  /// station's kept phase set and spectra its own evaluations.
   std::vector<GeneratedMotion> generate(std::uint64_t seed, std::uint64_t index);
   std::vector<GeneratedMotion> generate(std::uint64_t seed, std::uint64_t index,
                                         const std::vector<double>& ln_factor);
   const std::vector<double>& match_periods() const;
   const StationSettings& settings() const { return stations_; }
+  /// The coherency the stations are generated with at separation d [m] and frequency f [Hz],
+  /// gamma_in (step 3 above) [-], for the design spectrum or a random target.
+  double input_coherency(double d, double f, bool random_target = false) const;
 
  private:
+  using Complex = std::complex<double>;
   std::vector<GeneratedMotion> run(const SimqkeStart& s, std::uint64_t seed, std::uint64_t index);
-  void factor_coherency();
-  void coefficients(std::size_t j, const std::vector<std::vector<double>>& re,
-                    const std::vector<std::vector<double>>& im,
-                    const std::vector<std::vector<double>>& rho, std::vector<double>& zr,
-                    std::vector<double>& zi) const;
+  void factor_coherency(bool random_target, std::vector<double>& cond) const;
+  GeneratedMotion station(const SimqkeStart& start, std::uint64_t seed, std::uint64_t index,
+                          std::size_t j, std::vector<std::vector<Complex>>& x,
+                          const std::vector<double>& misfit_sum);
+  SimqkeAttempt match_station(const SimqkeStart& start, GroundMotion m0,
+                              const std::vector<double>& misfit);
 
   SimqkeGenerator gen_;
   StationSettings stations_;
   double accept_score_ = 0.0;
-  bool coherent_ = true;       // every station is station 1
-  std::vector<double> lower_;  // per bin k: the packed lower factor, rows j, m <= j
+  bool coherent_ = true;  // every station is station 1
+  // per bin k: packed (j, m < j) -> b_jm, (j, j) -> L_jj (design spectrum, random target)
+  std::vector<double> cond_, cond_random_;
 };
 
-/// Philox streams of station `station` (0-based) in phase set `attempt`: its phases
-/// (attempt + 65536 station; station 0 is SimqkeGenerator's) and its Rayleigh moduli (2^31 +
-/// the phase stream).
+/// Philox stream of station `station`'s phases (0-based) in phase set `attempt`: attempt +
+/// 65536 station (station 0's is SimqkeGenerator's).
 std::uint32_t station_phase_stream(int station, int attempt);
-std::uint32_t station_modulus_stream(int station, int attempt);
-void rayleigh_moduli(std::uint64_t seed, std::uint64_t index, int attempt, int station,
-                     const std::vector<double>& amplitude, std::vector<double>& rho);
 
 }  // namespace pound

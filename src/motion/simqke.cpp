@@ -264,6 +264,11 @@ GeneratedMotion SimqkeGenerator::generate(std::uint64_t seed, std::uint64_t inde
   return run(start(), seed, index);
 }
 
+GeneratedMotion SimqkeGenerator::generate(const SimqkeStart& s, std::uint64_t seed,
+                                          std::uint64_t index) {
+  return run(s, seed, index);
+}
+
 GeneratedMotion SimqkeGenerator::generate(std::uint64_t seed, std::uint64_t index,
                                           const std::vector<double>& ln_factor) {
   return run(start(ln_factor), seed, index);
@@ -311,12 +316,25 @@ SimqkeAttempt SimqkeGenerator::match(const SimqkeStart& s, const std::vector<dou
 
 SimqkeAttempt SimqkeGenerator::match(const SimqkeStart& s, GroundMotion m) {
   Impl& d = *impl_;
+  return iterate(s, std::move(m),
+                 [&d](GroundMotion& x, const std::vector<double>& ratio) { d.correct(x, ratio); });
+}
+
+SimqkeAttempt SimqkeGenerator::match(const SimqkeStart& s, GroundMotion m,
+                                     const Corrector& corrector) {
+  return iterate(s, std::move(m), corrector);
+}
+
+template <class Correct>
+SimqkeAttempt SimqkeGenerator::iterate(const SimqkeStart& s, GroundMotion m,
+                                       const Correct& correct) {
+  Impl& d = *impl_;
   const std::vector<double>& target = s.target;
   std::vector<double> psa, ratio(target.size());
   SimqkeAttempt best;
   int best_it = 0;
   for (int it = 0;; ++it) {
-    if (it > 0) d.correct(m, ratio);
+    if (it > 0) correct(m, ratio);
     d.spectra->compute_psa(m.accel, psa);
     ++best.spectra;
     // Score: the largest |q - 1| over the matching periods, q = computed / target; for a
@@ -340,12 +358,48 @@ SimqkeAttempt SimqkeGenerator::match(const SimqkeStart& s, GroundMotion m) {
       best_it = it;
     }
     if (max_dev <= d.settings.tolerance || it >= d.settings.max_iterations) break;
+    if (s.stop_score > 0.0 && best.score <= s.stop_score) break;
     // Acceptable and no longer improving (an earlier phase set was not acceptable, or this
     // one would not have been drawn, so "acceptable" is this set's best).
     if (best.score <= d.settings.accept_score && it - best_it >= d.settings.stall) break;
     if (it - best_it >= 2 * d.settings.stall) break;  // stuck: next phase set
   }
   return best;
+}
+
+void SimqkeGenerator::transform(const std::vector<double>& accel,
+                                std::vector<std::complex<double>>& x) {
+  Impl& d = *impl_;
+  std::copy(accel.begin(), accel.begin() + long(std::min(accel.size(), d.n)), d.real);
+  std::fill(d.real + std::min(accel.size(), d.n), d.real + d.nfft, 0.0);
+  fftw_execute(d.r2c);
+  x.resize(d.nbins);
+  for (std::size_t k = 0; k < d.nbins; ++k) x[k] = {d.spec[k][0], d.spec[k][1]};
+}
+
+void SimqkeGenerator::inverse(const std::vector<std::complex<double>>& x, GroundMotion& m) {
+  Impl& d = *impl_;
+  const double f = 1.0 / double(d.nfft);
+  d.spec[0][0] = d.spec[0][1] = 0.0;
+  for (std::size_t k = 1; k < d.nbins; ++k) {
+    d.spec[k][0] = f * x[k].real();
+    d.spec[k][1] = f * x[k].imag();
+  }
+  fftw_execute(d.c2r);
+  m.dt = d.settings.dt;
+  m.accel.assign(d.real, d.real + d.n);
+  d.baseline->apply(m.accel);
+}
+
+void SimqkeGenerator::bin_power(const std::vector<double>& ratio, double power,
+                                std::vector<double>& out) const {
+  const Impl& d = *impl_;
+  out.assign(d.nbins, 1.0);
+  for (std::size_t k = 1; k < d.nbins; ++k) out[k] = std::pow(d.bin_ratio(ratio, k), power);
+}
+
+const SimqkeSettings& SimqkeGenerator::settings() const {
+  return impl_->settings;
 }
 
 GeneratedMotion SimqkeGenerator::finish(SimqkeAttempt best, const SimqkeStart& s,

@@ -36,7 +36,9 @@
 // Deterministic: the same (target, duration, settings, seed, index) give the same motion on
 // any machine to round-off (own uniform -> phase transform, FFTW_ESTIMATE plans whose choice
 // does not depend on timing; no std:: distributions).
+#include <complex>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -108,6 +110,7 @@ struct SimqkeStart {
   std::vector<double> target;     ///< the spectrum matched to, at the matching periods [m/s^2]
   int max_attempts = 1;           ///< phase sets at most [-]
   bool rms_score = false;         ///< score RMS of ln q (random target) instead of max |q - 1|
+  double stop_score = 0.0;        ///< > 0: the iteration also ends once a score is <= this [-]
 };
 
 /// The best iteration of one phase set (SimqkeGenerator::match).
@@ -168,6 +171,14 @@ class SimqkeGenerator {
                       const std::vector<double>& im);
   /// The same iteration from a given motion (iteration 0 is `m` itself).
   SimqkeAttempt match(const SimqkeStart& s, GroundMotion m);
+  /// How an iteration's correction is applied: `m` is the current motion, `ratio` target /
+  /// computed at the matching periods; the corrector replaces `m` by the corrected motion.
+  using Corrector = std::function<void(GroundMotion& m, const std::vector<double>& ratio)>;
+  /// The same iteration with another correction step than correct() (the loop, score,
+  /// tolerance and stall rules unchanged; ground/station_generator.hpp).
+  SimqkeAttempt match(const SimqkeStart& s, GroundMotion m, const Corrector& corrector);
+  /// The phase sets of generate(): start `s`, phases simqke_phasors(seed, index, a).
+  GeneratedMotion generate(const SimqkeStart& s, std::uint64_t seed, std::uint64_t index);
   /// The stationary part of coefficients A_k (re_k + i im_k), enveloped and baseline-corrected.
   GroundMotion synthesise(const SimqkeStart& s, const std::vector<double>& re,
                           const std::vector<double>& im);
@@ -176,12 +187,24 @@ class SimqkeGenerator {
   void correct(GroundMotion& m, const std::vector<double>& ratio);
   /// The pseudo-acceleration of `m` at the matching periods [m/s^2].
   void spectrum(const GroundMotion& m, std::vector<double>& psa) const;
+  /// The Fourier transform of a record of the generator's length zero-padded to the FFT length
+  /// (unnormalised, fft_bins() values) [m/s^2 x samples].
+  void transform(const std::vector<double>& accel, std::vector<std::complex<double>>& x);
+  /// The inverse of transform(): the first samples of the real sequence of x / nfft, the DC bin
+  /// dropped, baseline-corrected, as correct() ends.
+  void inverse(const std::vector<std::complex<double>>& x, GroundMotion& m);
+  /// ratio^power at every bin k >= 1, ratio interpolated in ln T as correct() does (end values
+  /// held); out[0] = 1.
+  void bin_power(const std::vector<double>& ratio, double power, std::vector<double>& out) const;
+  const SimqkeSettings& settings() const;
   /// The returned motion of the kept attempt: its name, target, phase set, kinematics.
   GeneratedMotion finish(SimqkeAttempt best, const SimqkeStart& s, std::uint64_t seed,
                          std::uint64_t index, int attempt, int spectra) const;
 
  private:
   GeneratedMotion run(const SimqkeStart& s, std::uint64_t seed, std::uint64_t index);
+  template <class Correct>
+  SimqkeAttempt iterate(const SimqkeStart& s, GroundMotion m, const Correct& correct);
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
