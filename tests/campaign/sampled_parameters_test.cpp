@@ -136,6 +136,24 @@ TEST(SampledParameters, HardeningSetsEveryStoreyOfEveryBuilding) {
   }
 }
 
+// `none` switches a sampled key off (a command line over a study that samples it): the
+// parameter is not drawn and the row keeps its fixed value.
+TEST(SampledParameters, NoneSwitchesASampledKeyOff) {
+  const CampaignStudy on = study({"--sample.hardening", "uniform(0, 0.1)"});
+  const CampaignStudy off = study({"--sample.hardening", " none "});
+  ASSERT_EQ(on.parameters.size(), off.parameters.size() + 1);
+  for (const auto& p : off.parameters) EXPECT_NE(p.key, "hardening");
+  const CampaignStudy none = study({});
+  EXPECT_EQ(off.parameters.size(), none.parameters.size());
+  SampleRunner r(off), r0(none);
+  const SampleModel m = r.model(r.draw(0)), m0 = r0.model(r0.draw(0));
+  for (std::size_t b = 0; b < m.row.buildings.size(); ++b)
+    for (int j = 0; j < m.row.buildings[b].floors(); ++j)
+      EXPECT_EQ(m.row.buildings[b].storey(j).b, m0.row.buildings[b].storey(j).b);
+  EXPECT_NE(error_of({"--sample.hardening", "nothing"}).find("sample.hardening"),
+            std::string::npos);
+}
+
 TEST(SampledParameters, KFactorActsAfterTheStiffnessScalesAndChiDOnTheSearsModel) {
   const CampaignStudy st =
       study({"--sample.building2.stiffness_scale", "4", "--sample.k_factor", "10", "--sample.k",
