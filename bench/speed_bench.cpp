@@ -12,15 +12,17 @@
 //   5. the cost of a default-study sample per contact model, its motion apart (issue 13).
 //   6. imk storeys against bilinear ones on the default study, and the time the stop at
 //      collapse saves (issue 23; bench/collapse_bench.cpp).
+//   7. a sample on soil-structure interaction against the same sample on fixed bases
+//      (issue 29; studies/ssi-soft-soil.ini).
 // Usage: bench_speed [source dir [quick | lumped [check] | sample ID | inelastic [N] |
 // samples [N [REPEAT [MODEL [spectral|none]]]] | collapse [N [REPEAT [imk|bilinear|both
-// [--key value ...]]]] | ch8 | fine-step | contact-steps]] (default:
-// the source tree it was built from; "quick": only the event-driven chapter 8 run, for profiling;
-// "fine-step": the event path's fine step against the fixed path; "contact-steps": the longer
-// steps through smooth contact forces at several sears.contact_step_tolerance values;
-// "ch8": case 1 alone; "lumped": only the adaptive run of case 2, for profiling, with "check" also
-// its fixed-step reference and the case 2 line; "sample ID": peak forces of sample ID (0..19) of
-// case 3's campaign on the default path, the fixed path at its automatic step and at 10 us)
+// [--key value ...]]]] | ssi [N [REPEAT [MODEL [ssi|fixed]]]] | ch8 | fine-step | contact-steps]]
+// (default: the source tree it was built from; "quick": only the event-driven chapter 8 run, for
+// profiling; "fine-step": the event path's fine step against the fixed path; "contact-steps": the
+// longer steps through smooth contact forces at several sears.contact_step_tolerance values; "ch8":
+// case 1 alone; "lumped": only the adaptive run of case 2, for profiling, with "check" also its
+// fixed-step reference and the case 2 line; "sample ID": peak forces of sample ID (0..19) of case
+// 3's campaign on the default path, the fixed path at its automatic step and at 10 us)
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -424,6 +426,65 @@ void samples_case(const std::string& src, long samples, int repeat, const std::s
   }
 }
 
+// Case 7 (issue 29): the cost of a sample on soil-structure interaction against the same
+// sample on fixed bases: studies/ssi-soft-soil.ini as it is (cone foundations, sampled soil)
+// and with both foundations fixed and the soil not sampled (every other draw the same), per
+// contact model; the motion's generation is left out (the same in both).
+void ssi_case(const std::string& src, long samples, int repeat, const std::string& only,
+              const std::string& which) {
+  std::printf(
+      "\n7. SSI: studies/ssi-soft-soil.ini, samples 0-%ld, process CPU time without the "
+      "motion's generation, the smallest of %d runs each\n",
+      samples - 1, repeat);
+  std::printf("%-10s %4s %12s %12s %8s %12s\n", "model", "n", "fixed[ms]", "ssi[ms]", "ratio",
+              "worst ratio");
+  const std::vector<std::string> fixed = {
+      "--building1.foundation",       "fixed", "--building2.foundation", "fixed",
+      "--sample.soil_shear_velocity", "none",  "--sample.soil_density",  "none",
+      "--sample.soil_poisson",        "none"};
+  auto load = [&](const std::vector<std::string>& extra) {
+    Options oc("campaign", "speed benchmark", campaign_option_specs());
+    std::vector<std::string> args = {"--config", src + "/studies/ssi-soft-soil.ini"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    oc.parse(args);
+    return campaign_from_options(oc, samples, -1);
+  };
+  const CampaignStudy on_soil = load({}), on_rock = load(fixed);
+  SampleRunner soil(on_soil), rock(on_rock);
+  SimqkeGenerator gen(*on_soil.spectrum, on_soil.motion_duration, on_soil.generator);
+  const TargetVariability var(on_soil.variability, gen.match_periods());
+  struct Sum {
+    int n = 0;
+    double fixed = 0, ssi = 0, worst = 0;
+  } sums[2];  // 0 sears, 1 lumped
+  for (long id = 0; id < samples; ++id) {
+    const SampleDraw ds = soil.draw(id), dr = rock.draw(id);
+    if (!only.empty() && ds.model != only) continue;
+    const Timing tm = time_it(
+        [&] {
+          ds.spectral_epsilon.empty()
+              ? gen.generate(ds.motion_seed, 0)
+              : gen.generate(ds.motion_seed, 0, var.ln_factor(ds.spectral_epsilon));
+        },
+        repeat);
+    const double ts =
+        which == "fixed" ? 0.0 : time_it([&] { soil.run(ds); }, repeat).cpu_s - tm.cpu_s;
+    const double tr =
+        which == "ssi" ? 0.0 : time_it([&] { rock.run(dr); }, repeat).cpu_s - tm.cpu_s;
+    Sum& m = sums[is_sears_model(ds.model) ? 0 : 1];
+    ++m.n;
+    m.ssi += ts;
+    m.fixed += tr;
+    m.worst = std::max(m.worst, ts / std::max(tr, 1e-6));
+  }
+  for (int k = 0; k < 2; ++k) {
+    const Sum& m = sums[k];
+    if (!m.n) continue;
+    std::printf("%-10s %4d %12.3f %12.3f %8.2f %12.2f\n", k == 0 ? "sears" : "hc-linear", m.n,
+                1e3 * m.fixed / m.n, 1e3 * m.ssi / m.n, m.ssi / m.fixed, m.worst);
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -466,6 +527,11 @@ int main(int argc, char** argv) {
     samples_case(src, argc > 3 ? std::stol(argv[3]) : 48, argc > 4 ? std::stoi(argv[4]) : 3,
                  argc > 5 ? argv[5] : "", argc > 6 ? argv[6] : "spectral,none",
                  std::vector<std::string>(argv + std::min(argc, 7), argv + argc));
+    return 0;
+  }
+  if (argc > 2 && std::string(argv[2]) == "ssi") {  // case 7 alone
+    ssi_case(src, argc > 3 ? std::stol(argv[3]) : 30, argc > 4 ? std::stoi(argv[4]) : 2,
+             argc > 5 ? argv[5] : "", argc > 6 ? argv[6] : "both");
     return 0;
   }
   if (argc > 2 && std::string(argv[2]) == "collapse")  // case 6 alone

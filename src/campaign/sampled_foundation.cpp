@@ -15,6 +15,13 @@ void set_foundation(SampleModel& m, int b, double v) {
   m.row.buildings[static_cast<std::size_t>(b)].foundation.*member = v;
 }
 
+// Sets one soil parameter (Vs, rho or nu) under every building on a cone: one site.
+template <double Foundation::*member>
+void set_site_soil(SampleModel& m, int, double v) {
+  for (Building& b : m.row.buildings)
+    if (b.foundation.kind == FoundationKind::cone) b.foundation.*member = v;
+}
+
 // A factor on building b's sway and rocking springs and dashpots (foundation = springs).
 void scale_springs(SampleModel& m, int b, double factor) {
   Foundation& f = m.row.buildings[static_cast<std::size_t>(b)].foundation;
@@ -43,6 +50,24 @@ void check_springs(const SampledParameter& p, const BuildingRow& row, const Opti
              "the factor on the foundation's springs and dashpots is");
 }
 
+// The site's soil key (soil_shear_velocity, ...): some building stands on a cone, and no
+// building's own key for the same soil is sampled beside it.
+void check_site_soil(const SampledParameter& p, const BuildingRow& row, const Options& smp) {
+  bool cone = false;
+  for (std::size_t b = 0; b < row.buildings.size(); ++b) {
+    cone = cone || row.buildings[b].foundation.kind == FoundationKind::cone;
+    const std::string own = "building" + std::to_string(b + 1) + "." + p.key;
+    if (is_sampled(smp, own))
+      throw InputError(smp.where(p.key) + ": " + p.key +
+                       " sets the soil under every building on a cone; sample it there or as " +
+                       own + ", not both");
+  }
+  if (!cone)
+    throw InputError(smp.where(p.key) +
+                     ": no building has foundation = cone; the site's soil is sampled only "
+                     "under cone foundations");
+}
+
 constexpr ValidRange kPositive{};
 constexpr ValidRange kPoisson{true, -std::numeric_limits<double>::infinity(), 0.5, false,
                               "soil_poisson must stay in [0, 0.5); truncate below 0.5"};
@@ -56,6 +81,18 @@ std::vector<SampledParameterSpec> with_foundation_parameters(
   table.insert(
       table.end(),
       {
+          {"soil_density", "kg/m^3",
+           "cone: density rho of the soil under every building on a cone, one site "
+           "(distribution)",
+           direct, kPositive, set_site_soil<&F::soil_density>, check_site_soil},
+          {"soil_poisson", "-",
+           "cone: Poisson's ratio nu of the soil under every building on a cone, in [0, 0.5) "
+           "(distribution)",
+           direct, kPoisson, set_site_soil<&F::soil_poisson>, check_site_soil},
+          {"soil_shear_velocity", "m/s",
+           "cone: shear wave velocity Vs of the soil under every building on a cone, one site "
+           "(distribution)",
+           direct, kPositive, set_site_soil<&F::soil_shear_velocity>, check_site_soil},
           {"building#.soil_shear_velocity", "m/s",
            "cone: shear wave velocity Vs of the soil under the building (distribution)", direct,
            kPositive, set_foundation<&F::soil_shear_velocity>, check_cone},

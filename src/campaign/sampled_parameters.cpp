@@ -178,17 +178,13 @@ std::vector<OptionSpec> sampled_option_specs() {
   return specs;
 }
 
-namespace {
-// A [sample] key given, and not as `none` (a command line switches off what a study samples:
-// --sample.gap none).
-bool sampled(const Options& smp, const std::string& key) {
+bool is_sampled(const Options& smp, const std::string& key) {
   if (!smp.given(key)) return false;
   std::string v = smp.get_string(key);
   v.erase(0, v.find_first_not_of(" \t"));
   v.erase(v.find_last_not_of(" \t") + 1);
   return v != "none";
 }
-}  // namespace
 
 std::vector<SampledParameter> read_sampled_parameters(const Options& opt, const BuildingRow& row) {
   const Options smp = opt.section("sample", sampled_option_specs());
@@ -207,12 +203,12 @@ std::vector<SampledParameter> read_sampled_parameters(const Options& opt, const 
     const std::string pattern = e.key;
     const auto hash = pattern.find('#');
     if (hash == std::string::npos) {
-      if (sampled(smp, pattern)) given[pattern] = {pattern, {}, &e, -1};
+      if (is_sampled(smp, pattern)) given[pattern] = {pattern, {}, &e, -1};
       continue;
     }
     for (int b = 1; b <= buildings; ++b) {
       const std::string k = pattern.substr(0, hash) + std::to_string(b) + pattern.substr(hash + 1);
-      if (sampled(smp, k)) given[k] = {k, {}, &e, b - 1};
+      if (is_sampled(smp, k)) given[k] = {k, {}, &e, b - 1};
     }
   }
 

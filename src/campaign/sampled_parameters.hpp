@@ -82,6 +82,10 @@ const std::vector<SampledParameterSpec>& sampled_parameter_table();
 /// The [sample] keys of the table, declared without the "sample." prefix.
 std::vector<OptionSpec> sampled_option_specs();
 
+/// Whether [sample] `key` (without the prefix) is given, and not as `none`: a command line
+/// switches off what a study samples with `--sample.gap none`.
+bool is_sampled(const Options& sample, const std::string& key);
+
 /// The study's sampled parameters in sorted key order (which fixes each sample's draws), with
 /// every distribution checked against its entry's range and checks. Throws InputError naming
 /// the file, line and key.

@@ -133,6 +133,51 @@ TEST(SampledFoundation, EachNeedsItsFoundationAndRange) {
   EXPECT_EQ(error_of({"--sample.building1.soil_poisson", "uniform(0, 0.49)"}), "(no error)");
 }
 
+// One site (soil_shear_velocity, soil_density, soil_poisson without a building): the soil under
+// every building on a cone, no other building's foundation touched; refused without a cone, or
+// beside a building's own key for the same soil.
+TEST(SampledFoundation, TheSitesSoilActsUnderEveryCone) {
+  const Options opt =
+      campaign_options({"--building3.foundation", "cone", "--building3.foundation_radius", "4",
+                        "--building3.soil_shear_velocity", "300", "--building3.soil_density",
+                        "2000", "--building3.soil_poisson", "0.25", "--sample.soil_shear_velocity",
+                        "uniform(100, 200)", "--sample.soil_poisson", "uniform(0.35, 0.45)"});
+  const BuildingRow row = row_from_options(opt);
+  const std::vector<SampledParameter> params = read_sampled_parameters(opt, row);
+  ASSERT_EQ(params.size(), 2u);
+  EXPECT_EQ(params[0].key, "soil_poisson");
+  EXPECT_EQ(params[1].key, "soil_shear_velocity");
+  SampleModel m;
+  m.row = row;
+  apply_sampled(params, {0.4, 125.0}, m);
+  for (const int b : {0, 2}) {
+    EXPECT_EQ(m.row.buildings[b].foundation.soil_shear_velocity, 125.0) << b;
+    EXPECT_EQ(m.row.buildings[b].foundation.soil_poisson, 0.4) << b;
+  }
+  EXPECT_EQ(m.row.buildings[0].foundation.soil_density, 1900.0);  // not sampled: its own
+  EXPECT_EQ(m.row.buildings[2].foundation.soil_density, 2000.0);
+  EXPECT_EQ(m.row.buildings[1].foundation.sway_stiffness, 1e8);  // springs: untouched
+
+  EXPECT_EQ(error_of({"--sample.soil_density", "uniform(1800, 2000)",
+                      "--sample.building1.soil_density", "uniform(1800, 2000)"}),
+            "command line: --sample.soil_density: soil_density sets the soil under every building "
+            "on a cone; sample it there or as building1.soil_density, not both");
+  Options fixed("campaign", "", campaign_option_specs());
+  fixed.parse({"--building1.masses", "1000", "--building1.stiffnesses", "2e6",
+               "--sample.soil_density", "1900"});
+  try {
+    read_sampled_parameters(fixed, row_from_options(fixed));
+    ADD_FAILURE() << "a site's soil without a cone was accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "command line: --sample.soil_density: no building has foundation = cone; the "
+              "site's soil is sampled only under cone foundations");
+  }
+  EXPECT_NE(error_of({"--sample.soil_poisson", "uniform(0.3, 0.5)"})
+                .find("soil_poisson must stay in [0, 0.5)"),
+            std::string::npos);
+}
+
 // A campaign on soil samples it (issue 29): each sample's cone has its own shear wave velocity,
 // the /samples column, and the samples are simulated.
 TEST(SampledFoundation, ACampaignSamplesTheSoilAndSimulatesIt) {
