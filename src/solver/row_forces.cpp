@@ -71,6 +71,167 @@ RowForces::RowForces(const AssembledRow& row, const std::vector<RowStorey>& stor
                            b >= 0 ? at(b, i) : -1};
     }
   }
+  if (topology_) set_base_path();
+}
+
+// The O(n) path of a row with flexible foundations (issue 29; row_forces.hpp). With the
+// floors' displacements relative to the base x_j = U_j - u0 - H_j theta (x = T U,
+// structure/building_on_base.hpp), storey j's deformation is x_j - x_j-1 (x_0 = 0), so the
+// fixed-base damping C_fixed acts on x' as on a fixed base: tridiagonal for Rayleigh damping
+// of a shear building (Chopra 11.4.1), its tangent-stiffness part per storey along x_j - x_j-1;
+// T^T returns its forces f_x: f_x on the floors, -sum f_x on the sway, -sum H_j f_x on the
+// rotation. Taken when every floor's storey stands on the floor below in its building or on its
+// base's sway (with its base's rotation), every base DOF holds only its foundation spring, and
+// the row knows its dashpots (AssembledRow::base_damping); otherwise the compressed rows serve.
+void RowForces::set_base_path() {
+  const int nf = row_.floors;
+  if (static_cast<int>(row_.base_damping.size()) != n_ || nf <= 0 || nf > n_) return;
+  f_height_.assign(nf, 0.0);
+  for (int i = 0; i < n_; ++i) {
+    const RowStorey& st = storeys_[i];
+    if (i >= nf) {  // a base DOF: its foundation spring
+      if (!st.foundation || st.below >= 0 || st.rot >= 0) return;
+      continue;
+    }
+    const int b = st.building, sway = row_.sway[b];
+    const bool first = i == row_.offset[b];
+    if (st.foundation || st.rot != row_.rot[b] || st.below != (first ? sway : i - 1)) return;
+    f_height_[i] = (first ? 0.0 : f_height_[i - 1]) + st.p.h;  // H_j, as assemble_on_base
+  }
+  x_tridiagonal_ = true;
+  for (int i = 0; i < nf; ++i)
+    for (int j = 0; j < nf; ++j)
+      if (std::abs(i - j) > 1 && row_.C(i, j) != 0.0) x_tridiagonal_ = false;
+  if (!x_tridiagonal_ && tangent_damping_) return;  // (tangent damping needs Rayleigh's bands)
+  // The floors' block of C is C_fixed (T's floor columns are the identity).
+  if (x_tridiagonal_) {
+    xl_.assign(nf, 0.0), xd_.assign(nf, 0.0), xu_.assign(nf, 0.0);
+    for (int i = 0; i < nf; ++i) {
+      xd_[i] = row_.C(i, i);
+      if (i > 0) xl_[i] = row_.C(i, i - 1);
+      if (i + 1 < nf) xu_[i] = row_.C(i, i + 1);
+    }
+    xl0_ = xl_, xd0_ = xd_, xu0_ = xu_;
+  } else {
+    xrow_.assign(1, 0);
+    for (int i = 0; i < nf; ++i) {
+      for (int j = 0; j < nf; ++j)
+        if (row_.C(i, j) != 0.0) xcol_.push_back(j), xval_.push_back(row_.C(i, j));
+      xrow_.push_back(static_cast<int>(xcol_.size()));
+    }
+  }
+  s_h_.resize(n_), s_kg_.resize(n_), s_slope_.resize(n_), s_off_.assign(n_, 0.0);
+  for (int i = 0; i < n_; ++i) {
+    const RowStorey& st = storeys_[i];
+    s_h_[i] = st.p.h, s_kg_[i] = st.kg;
+    s_slope_[i] = st.p.k0;  // linear storeys (K u); set_lines() replaces it by the branch's
+  }
+  segments_.clear();
+  for (std::size_t b = 0; b < row_.offset.size(); ++b) {
+    const int first = row_.offset[b];
+    const int last = b + 1 < row_.offset.size() ? row_.offset[b + 1] : nf;
+    segments_.push_back({first, last - first, row_.sway[b], row_.rot[b]});
+  }
+  dashpot_ = row_.base_damping;
+  xv_.assign(nf, 0.0);
+  floors_ = nf;
+  base_path_ = true;
+}
+
+void RowForces::set_base_tangent_damping(int i, double dc) {
+  // Between x_i and the floor below's x (none on the base: x_0 = 0).
+  const int b = storeys_[i].below;
+  xd_[i] += dc;
+  if (b < 0 || b >= floors_) return;
+  xd_[b] += dc;
+  xu_[b] -= dc;
+  xl_[i] -= dc;
+}
+
+// Building g's part of C v: C_fixed x' on its floors into f (x'_j = v_j - v0 - H_j w), and
+// returns sum_j (C_fixed x')_j and sum_j H_j (C_fixed x')_j for its base.
+void RowForces::segment_damping(const BaseSegment& g, const double* __restrict v,
+                                double* __restrict f, double& sum, double& moment) const {
+  const int o = g.first, m = g.floors;
+  const double v0 = g.sway >= 0 ? v[g.sway] : 0.0, w = g.sway >= 0 ? v[g.rot] : 0.0;
+  const double* __restrict H = f_height_.data() + o;
+  double* __restrict xv = xv_.data();
+  for (int j = 0; j < m; ++j) xv[o + j] = v[o + j] - v0 - H[j] * w;
+  double cs = 0.0, chs = 0.0;
+  if (x_tridiagonal_) {
+    const double *l = xl_.data() + o, *d = xd_.data() + o, *up = xu_.data() + o;
+    const double* x = xv + o;
+    for (int j = 0; j < m; ++j) {
+      double cx = d[j] * x[j];
+      if (j > 0) cx += l[j] * x[j - 1];
+      if (j + 1 < m) cx += up[j] * x[j + 1];
+      f[o + j] = cx;
+      cs += cx;
+      chs += H[j] * cx;
+    }
+  } else {
+    for (int j = 0; j < m; ++j) {
+      double cx = 0.0;
+      for (int e = xrow_[o + j]; e < xrow_[o + j + 1]; ++e) cx += xval_[e] * xv[xcol_[e]];
+      f[o + j] = cx;
+      cs += cx;
+      chs += H[j] * cx;
+    }
+  }
+  sum = cs;
+  moment = chs;
+}
+
+void RowForces::base_damping(const double* __restrict v, double* __restrict cv) const {
+  for (const BaseSegment& g : segments_) {
+    double cs, chs;
+    segment_damping(g, v, cv, cs, chs);
+    if (g.sway < 0) continue;
+    cv[g.sway] = dashpot_[g.sway] * v[g.sway] - cs;
+    cv[g.rot] = dashpot_[g.rot] * v[g.rot] - chs;
+  }
+}
+
+void RowForces::base_forces(const double* __restrict u, const double* __restrict v,
+                            double* __restrict f) const {
+  for (const BaseSegment& g : segments_) {
+    double cs, chs;
+    segment_damping(g, v, f, cs, chs);
+    // Storey j: V = slope d + offset on its deformation d = c - h theta, c = U_j - U_j-1 its
+    // chord (U_0 = u0), P-Delta -kg c (physics.md section 5a): F = V - kg c on floor j, -F on
+    // the floor below (on the sway for the first storey), -h V on the rotation.
+    const int o = g.first, m = g.floors;
+    const bool flexible = g.sway >= 0;
+    const double u0 = flexible ? u[g.sway] : 0.0, th = flexible ? u[g.rot] : 0.0;
+    const double *h = s_h_.data() + o, *kg = s_kg_.data() + o;
+    const double *k = s_slope_.data() + o, *off = s_off_.data() + o;
+    double below = u0, first = 0.0, moment = 0.0;
+    for (int j = 0; j < m; ++j) {
+      const double c = u[o + j] - below, d = c - h[j] * th;
+      const double V = k[j] * d + off[j], F = V - kg[j] * c;
+      f[o + j] += F;
+      if (j > 0)
+        f[o + j - 1] -= F;
+      else
+        first = F;
+      moment += h[j] * V;
+      below = u[o + j];
+    }
+    if (!flexible) continue;
+    // The base: its dashpots, springs (K u + offset: the foundation "storeys"), and the
+    // storeys' reactions.
+    const int s = g.sway, r = g.rot;
+    f[s] = dashpot_[s] * v[s] - cs + (s_slope_[s] * u0 + s_off_[s]) - first;
+    f[r] = dashpot_[r] * v[r] - chs + (s_slope_[r] * th + s_off_[r]) - moment;
+  }
+}
+
+void RowForces::base_accelerations(const double* __restrict u, const double* __restrict v,
+                                   const double* __restrict ag, double* __restrict dv) const {
+  double* f = cv_.data();
+  base_forces(u, v, f);
+  const double* im = row_.inv_mass.data();
+  for (int i = 0; i < n_; ++i) dv[i] = -im[i] * f[i] - ag[i];
 }
 
 void RowForces::set_topology() {
@@ -128,6 +289,7 @@ void RowForces::set_lines_general(const std::vector<StoreyState>& states) {
     double slope = 0.0, offset = 0.0;
     st.law->branch_line(st.p, states[i], slope, offset);
     for (const StoreyEntry& e : entries_[i]) kt_val_[e.entry] += slope * e.g - st.kg * e.c;
+    if (base_path_) s_slope_[i] = slope, s_off_[i] = offset;
     off_[i] += offset;
     if (st.below >= 0) off_[st.below] -= offset;
     if (st.rot >= 0) off_[st.rot] -= st.p.h * offset;
@@ -163,6 +325,7 @@ void RowForces::set_lines(const std::vector<StoreyState>& states) {
 
 void RowForces::set_tangent_damping(const std::vector<StoreyState>& states) {
   cl_ = cl0_, cd_ = cd0_, cu_ = cu0_, c_val_ = c_val0_;
+  if (base_path_) xl_ = xl0_, xd_ = xd0_, xu_ = xu0_;
   for (int i = 0; i < n_; ++i) {
     const RowStorey& st = storeys_[i];
     if (!(st.damping_a1 > 0.0)) continue;
@@ -173,6 +336,7 @@ void RowForces::set_tangent_damping(const std::vector<StoreyState>& states) {
     const double dc = st.damping_a1 * (std::max(slope, 0.0) - st.p.k0);
     if (topology_) {  // along the storey's deformation
       for (const StoreyEntry& e : entries_[i]) c_val_[e.entry] += dc * e.g;
+      if (base_path_) set_base_tangent_damping(i, dc);
       continue;
     }
     const int b = st.below;
@@ -250,6 +414,10 @@ void RowForces::general(const Eigen::VectorXd& y, const std::vector<StoreyState>
 }
 
 void RowForces::damping(const double* v, double* cv) const {
+  if (base_path_) {
+    base_damping(v, cv);
+    return;
+  }
   if (tridiagonal_ && n_ > 1) {
     for (int i = 0; i < n_; ++i)
       cv[i] = cd_[i] * v[i] + (i > 0 ? cl_[i] * v[i - 1] : 0.0) +

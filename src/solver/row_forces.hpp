@@ -7,6 +7,9 @@
 //   - piecewise-linear storeys (elastic, bilinear): f = K_t u + off, the bands of the current
 //     tangent stiffness and the forces of the branches' offsets, rebuilt at every switch;
 //   - other laws (Bouc-Wen): f_j = V_j - V_j+1 from the laws' shears, storey by storey;
+//   - a row with buildings on flexible foundations (issue 29, structure/building_on_base.hpp):
+//     storey by storey along the deformations d_j = U_j - U_j-1 - h_j theta, P-Delta along the
+//     chords, and the fixed-base damping on the floors' motion relative to the base (below);
 // with P-Delta (RowStorey::kg) every storey's shear gains -kg d (in K for linear storeys), and with
 // tangent-stiffness damping (RowStorey::damping_a1) the damping bands follow the storeys' branches
 // (set_tangent_damping).
@@ -77,6 +80,21 @@ class RowForces {
   };
   void set_topology();
   void set_lines_general(const std::vector<StoreyState>& states);
+  void set_base_path();
+  void set_base_tangent_damping(int i, double dc);
+  /// f = C v + K_t u + off (the lines of set_lines(), or K u with the initial slopes) on a row
+  /// with flexible foundations, in O(n) (base_path_).
+  void base_forces(const double* u, const double* v, double* f) const;
+  /// C v [N] on such a row: C = T^T C_fixed T + diag(dashpots), so C v = T^T (C_fixed (T v)) +
+  /// the dashpots' forces, T v = the floors' velocities relative to the base.
+  void base_damping(const double* v, double* cv) const;
+  void base_accelerations(const double* u, const double* v, const double* ag, double* dv) const;
+  struct BaseSegment {
+    int first, floors;  // the building's floor DOFs
+    int sway, rot;      // its base DOFs (-1: a fixed base)
+  };
+  void segment_damping(const BaseSegment& g, const double* v, double* f, double& sum,
+                       double& moment) const;
 
   const AssembledRow& row_;
   const std::vector<RowStorey>& storeys_;
@@ -100,6 +118,23 @@ class RowForces {
   std::vector<double> cl0_, cd0_, cu0_, c_val0_;     // the initial C's bands and entries
   std::vector<std::array<int, 4>> damping_entry_;    // per storey: its entries of C
   mutable Eigen::VectorXd cv_;                       // scratch: C v [N]
+  // The O(n) path of a row with flexible foundations (issue 29; set_base_path), per building
+  // (segments_). Per DOF i: its storey's height h [m], geometric stiffness [N/m] and current
+  // line (slope [N/m], offset [N]; on a base DOF its foundation spring), the foundation's
+  // dashpot on a base DOF [N s/m, N m s/rad] and the floor's height H above its base [m]. The
+  // floors (the first floors_ DOFs) carry the fixed-base damping C_fixed, block diagonal over
+  // the buildings: its bands (xl_, xd_, xu_, tangent damping included) or, when full (modal
+  // damping), compressed rows over the floors (xrow_, xcol_, xval_).
+  bool base_path_ = false;
+  int floors_ = 0;
+  std::vector<BaseSegment> segments_;
+  std::vector<double> s_h_, s_kg_, s_slope_, s_off_, f_height_, dashpot_;
+  bool x_tridiagonal_ = false;
+  std::vector<double> xl_, xd_, xu_, xl0_, xd0_, xu0_;
+  std::vector<int> xrow_, xcol_;
+  std::vector<double> xval_;
+  mutable std::vector<double>
+      xv_;  // scratch: T v, the floors' velocities relative to the base [m/s]
 };
 
 // The two hot paths are defined here so that the solver's right-hand side inlines them.
@@ -116,6 +151,10 @@ inline void RowForces::linear(const double* __restrict u, const double* __restri
                         (kl[i] * u[i - 1] + kd[i] * u[i] + ku[i] * u[i + 1])) -
               ag[i];
     dv[m] = -im[m] * (cl[m] * v[m - 1] + cd[m] * v[m] + (kl[m] * u[m - 1] + kd[m] * u[m])) - ag[m];
+    return;
+  }
+  if (base_path_) {
+    base_accelerations(u, v, ag, dv);
     return;
   }
   for (int i = 0; i < n_; ++i) {
@@ -143,6 +182,10 @@ inline void RowForces::affine(const double* __restrict u, const double* __restri
     dv[m] =
         -im[m] * (cl[m] * v[m - 1] + cd[m] * v[m] + (tl[m] * u[m - 1] + td[m] * u[m]) + off[m]) -
         ag[m];
+    return;
+  }
+  if (base_path_) {
+    base_accelerations(u, v, ag, dv);
     return;
   }
   double* cv = cv_.data();

@@ -55,6 +55,7 @@ AssembledRow assemble(const BuildingRow& row) {
   out.K = Eigen::MatrixXd::Zero(n, n);
   out.Kg = Eigen::MatrixXd::Zero(n, n);
   out.influence = Eigen::VectorXd::Ones(n);
+  out.base_damping.assign(n, 0.0);
   out.building_of.assign(n, 0);
   out.storeys.resize(n);
   for (int b = 0; b < nb; ++b) {
@@ -101,6 +102,8 @@ AssembledRow assemble(const BuildingRow& row) {
       s.above = k == 0 ? o : -1;
       s.foundation = true;
     }
+    out.base_damping[out.sway[b]] = f.sway_damping;
+    out.base_damping[out.rot[b]] = f.rocking_damping;
   }
   out.inv_mass = Eigen::VectorXd::Zero(n);
   out.massless.assign(n, 0);

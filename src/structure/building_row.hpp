@@ -74,6 +74,10 @@ struct AssembledRow {
   std::vector<int> building_of;  ///< per DOF its building (0-based)
   /// Per DOF 1 where the earthquake loads -m ag (floors, base sway), 0 on a rotation.
   Eigen::VectorXd influence;
+  /// Per DOF the foundation's dashpot on a base DOF, C_x on a sway [N s/m] and C_theta on a
+  /// rotation [N m s/rad], 0 elsewhere: C = T^T C_fixed T + diag(base_damping)
+  /// (structure/building_on_base.hpp). Empty for a row built by hand.
+  std::vector<double> base_damping;
   /// Per DOF: no mass (a foundation whose mass or rotary inertia is 0): a first-order DOF held by
   /// its dashpot; inv_mass is 0 there.
   std::vector<char> massless;

@@ -1,0 +1,173 @@
+// The O(n) forces of a row with buildings on flexible foundations (issue 29; RowForces'
+// storey-by-storey path, docs/integration.md "Right-hand side") against the matrices:
+// K_t u + off + C v with K_t, off and C as the compressed rows assemble them (the assembled K
+// and C of structure/building_on_base.hpp at the initial stiffness), for random states of
+// elastic, bilinear and deteriorating (imk) storeys, with and without P-Delta, with initial or
+// tangent-stiffness Rayleigh damping and with modal damping, on a cone, on springs, beside a
+// fixed base and on a massless base.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "../support/buildings.hpp"
+#include "solver/row_forces.hpp"
+
+namespace pound {
+namespace {
+
+struct Case {
+  std::string law = "elastic";
+  bool p_delta = false;
+  bool tangent = false;  // damping_stiffness = tangent
+  bool modal = false;    // damping = modal
+  bool fixed_right = false;
+  bool massless = false;
+};
+
+std::string name_of(const Case& c) {
+  return c.law + (c.p_delta ? " p-delta" : "") + (c.tangent ? " tangent" : "") +
+         (c.modal ? " modal" : "") + (c.fixed_right ? " beside a fixed base" : "") +
+         (c.massless ? " massless base" : "");
+}
+
+// The chapter 8 pair, the 5-storey building on a cone (the soft-soil study's footing and
+// soil) and the 3-storey one on springs (or a fixed base).
+AssembledRow row_of(const Case& c) {
+  BuildingRow row = test::chapter8_pair(0.01);
+  const double fy[2] = {1.0e6, 4.0e5};
+  for (int b = 0; b < 2; ++b) {
+    Building& bd = row.buildings[b];
+    bd.hysteresis = c.law;
+    if (c.law != "elastic") bd.yield_shears.assign(bd.floors(), fy[b]);
+    bd.p_delta = c.p_delta;
+    if (c.tangent) bd.damping_stiffness = DampingStiffness::tangent;
+    if (c.modal) bd.damping = DampingKind::modal;
+  }
+  Foundation& cone = row.buildings[0].foundation;
+  cone.kind = FoundationKind::cone;
+  cone.radius = 11.3;
+  cone.soil_shear_velocity = 150.0;
+  cone.soil_density = 1800.0;
+  cone.soil_poisson = 0.4;
+  cone.foundation_mass = c.massless ? 0.0 : 48e3;
+  cone.foundation_inertia = c.massless ? 0.0 : 1.6e6;
+  if (!c.massless) cone.floor_inertias = {1.6e6};
+  if (!c.fixed_right) {
+    Foundation& springs = row.buildings[1].foundation;
+    springs.kind = FoundationKind::springs;
+    springs.sway_stiffness = 1.0e9;
+    springs.rocking_stiffness = 3.0e10;
+    springs.sway_damping = 3.0e7;
+    springs.rocking_damping = 6.0e8;
+    springs.foundation_mass = 29e3;
+    springs.foundation_inertia = 3.48e5;
+  }
+  return assemble(row);
+}
+
+// Each storey driven from rest through a few random drifts (up to 4 yield drifts), so that the
+// piecewise laws stand on random branches (loading, unloading, capped, ...).
+std::vector<StoreyState> random_states(const AssembledRow& a, std::mt19937& rng) {
+  std::vector<StoreyState> states(a.dofs());
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  for (int i = 0; i < a.dofs(); ++i) {
+    const RowStorey& st = a.storeys[i];
+    if (st.foundation) continue;
+    const double uy = std::isfinite(st.p.Fy) ? st.p.Fy / st.p.k0 : 0.01;
+    double d = 0.0;
+    for (int k = 0; k < 4; ++k) {
+      const double d1 = 4.0 * uy * unit(rng);
+      StoreyState next;
+      st.law->advance(st.p, states[i], d, d1, next);
+      states[i] = next;
+      d = d1;
+    }
+  }
+  return states;
+}
+
+// dv of the O(n) path against -M^-1 (K u + off + C v) of the matrices, to rounding: each
+// entry within 1e-13 of the sum of the magnitudes of its terms.
+void expect_same(const Eigen::MatrixXd& K, const std::vector<double>& off, const Eigen::MatrixXd& C,
+                 const AssembledRow& a, const Eigen::VectorXd& u, const Eigen::VectorXd& v,
+                 const Eigen::VectorXd& dv, const std::string& what) {
+  const int n = a.dofs();
+  for (int i = 0; i < n; ++i) {
+    double f = off[i], mag = std::fabs(off[i]);
+    for (int j = 0; j < n; ++j) {
+      f += K(i, j) * u(j) + C(i, j) * v(j);
+      mag += std::fabs(K(i, j) * u(j)) + std::fabs(C(i, j) * v(j));
+    }
+    const double im = a.inv_mass(i);
+    EXPECT_NEAR(dv(i), -im * f, 1e-13 * im * mag + 1e-300) << what << ", DOF " << i;
+  }
+}
+
+TEST(RowForcesOnBase, StoreyByStoreyForcesAreTheMatrices) {
+  std::vector<Case> cases;
+  for (const std::string law : {"elastic", "bilinear", "imk"})
+    for (int p_delta = 0; p_delta < 2; ++p_delta)
+      for (int damping = 0; damping < 3; ++damping) {
+        if (law == "elastic" && damping == 1) continue;  // (tangent: no branch to change)
+        Case c;
+        c.law = law;
+        c.p_delta = p_delta;
+        c.tangent = damping == 1;
+        c.modal = damping == 2;
+        cases.push_back(c);
+      }
+  Case mixed;
+  mixed.law = "imk", mixed.p_delta = true, mixed.tangent = true, mixed.fixed_right = true;
+  cases.push_back(mixed);
+  Case massless;
+  massless.law = "bilinear", massless.p_delta = true, massless.massless = true;
+  cases.push_back(massless);
+
+  std::mt19937 rng(29);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  for (const Case& c : cases) {
+    const AssembledRow a = row_of(c);
+    const int n = a.dofs();
+    ASSERT_GE(a.rot[0], 0) << name_of(c);
+    RowForces forces(a, a.storeys);
+    const Eigen::VectorXd ag = Eigen::VectorXd::Zero(n);
+    Eigen::VectorXd dv(n), cv(n);
+    for (int trial = 0; trial < 20; ++trial) {
+      Eigen::VectorXd u(n), v(n);
+      for (int i = 0; i < n; ++i) {
+        const bool rot = i == a.rot[0] || i == a.rot[1];
+        u(i) = (rot ? 1e-4 : 0.05) * unit(rng);
+        v(i) = (rot ? 1e-3 : 0.5) * unit(rng);
+      }
+      const std::string what = name_of(c) + ", trial " + std::to_string(trial);
+      // The initial stiffness and damping: the assembled K and C themselves.
+      const std::vector<double> zero(n, 0.0);
+      if (a.linear) {
+        forces.linear(u.data(), v.data(), ag.data(), dv.data());
+        expect_same(a.K, zero, a.C, a, u, v, dv, what + " (linear)");
+      }
+      if (!c.tangent) {
+        forces.damping(v.data(), cv.data());
+        const Eigen::VectorXd ref = a.C * v;
+        for (int i = 0; i < n; ++i)
+          EXPECT_NEAR(cv(i), ref(i), 1e-13 * (a.C.row(i).cwiseAbs() * v.cwiseAbs())(0))
+              << what << " (damping), DOF " << i;
+      }
+      // Random branches: the tangent lines and, with tangent damping, their dampers.
+      const std::vector<StoreyState> states = random_states(a, rng);
+      forces.set_lines(states);
+      if (forces.tangent_damping()) forces.set_tangent_damping(states);
+      Eigen::MatrixXd K, C;
+      forces.stiffness(true, K);
+      forces.damping_matrix(C);
+      forces.affine(u.data(), v.data(), ag.data(), dv.data());
+      expect_same(K, forces.offsets(), C, a, u, v, dv, what + " (affine)");
+    }
+  }
+}
+
+}  // namespace
+}  // namespace pound
