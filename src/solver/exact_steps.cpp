@@ -1,5 +1,6 @@
 #include "solver/exact_steps.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -12,11 +13,14 @@ ExactSteps::ExactSteps(const ExactSteps& o)
       declined_(o.declined_),
       own_cache_(o.own_cache_),
       cache_(o.cache_ == &o.own_cache_ ? &own_cache_ : o.cache_),
-      config_(o.config_),
-      offsets_ready_(o.offsets_ready_),
-      offsets_response_(o.offsets_response_),
+      blocks_(o.blocks_),
+      whole_(o.whole_),
+      gate_(o.gate_),
       k_scratch_(o.k_scratch_),
+      kb_scratch_(o.kb_scratch_),
       c_scratch_(o.c_scratch_),
+      z0_(o.z0_),
+      z1_(o.z1_),
       visits_(o.visits_),
       declined_before_iteration_(o.declined_before_iteration_),
       visited_(o.visited_) {}
@@ -34,6 +38,29 @@ void ExactSteps::enable(const AssembledRow& row, double h_max, double rec_dt,
     cache_->row = &row;
     cache_->h = h_;
   }
+  // The blocks: the whole row, or each building with its base on a row with a flexible
+  // foundation.
+  const int n = row.dofs(), nb = static_cast<int>(row.offset.size());
+  whole_ = std::none_of(row.rot.begin(), row.rot.end(), [](int r) { return r >= 0; });
+  blocks_.assign(whole_ ? 1 : nb, Block{});
+  int largest = 0;
+  for (int b = 0; b < static_cast<int>(blocks_.size()); ++b) {
+    std::vector<int> dofs;
+    if (whole_) {
+      for (int i = 0; i < n; ++i) dofs.push_back(i);
+    } else {
+      const int end = b + 1 < nb ? row.offset[b + 1] : row.floors;
+      for (int i = row.offset[b]; i < end; ++i) dofs.push_back(i);
+      if (row.sway[b] >= 0) dofs.push_back(row.sway[b]);
+      if (row.rot[b] >= 0) dofs.push_back(row.rot[b]);
+    }
+    std::vector<int>& st = blocks_[b].state;
+    for (int i : dofs) st.push_back(i);
+    for (int i : dofs) st.push_back(n + i);
+    largest = std::max(largest, static_cast<int>(st.size()));
+  }
+  z0_.setZero(largest);
+  z1_.setZero(largest);
   invalidate();
 }
 
@@ -98,64 +125,136 @@ void ExactSteps::eliminate_massless(const RowDynamics& dyn, const Eigen::MatrixX
 }
 
 void ExactSteps::undo_iteration() {
-  if (visited_ >= 0) --visits_[visited_];
+  for (int e : visited_) --visits_[e];
+  visited_.clear();
   declined_ = declined_before_iteration_;
 }
 
-const LinearStep* ExactSteps::propagator(const RowDynamics& dyn, const AssembledRow& row) {
+// The entry of block `block` at stiffness K, added when new.
+int ExactSteps::find_entry(int block, const Eigen::MatrixXd& K) {
   auto& entries = cache_->entries;
-  if (config_ < 0) {
+  const std::uint64_t key = bits_hash(K) + static_cast<std::uint64_t>(block);
+  const auto [first, last] = cache_->by_key.equal_range(key);
+  for (auto it = first; it != last; ++it)
+    if (entries[it->second].block == block && entries[it->second].K == K) return it->second;
+  entries.push_back({block, K, key, false, {}});
+  const int e = static_cast<int>(entries.size()) - 1;
+  cache_->by_key.emplace(key, e);
+  return e;
+}
+
+void ExactSteps::row_system(const RowDynamics& dyn, const AssembledRow& row,
+                            const Eigen::MatrixXd& K, Eigen::MatrixXd& A, Eigen::MatrixXd& B) {
+  // z = [u; v], z' = A z + B w, w = [off; ag_0 .. ag_m-1]: u' = v,
+  // v' = -M^-1 (K u + C v + off) - ag (physics.md section 1, without contact forces;
+  // docs/hysteresis.md for K_t and off), ag_c the acceleration of ground channel c under the
+  // floors on it (one column for a row without ground, its floors on no channel).
+  const int n = row.dofs();
+  const Eigen::VectorXd& im = row.inv_mass;
+  A = Eigen::MatrixXd::Zero(2 * n, 2 * n);
+  A.topRightCorner(n, n).setIdentity();
+  A.bottomLeftCorner(n, n) = -(im.asDiagonal() * K);
+  dyn.damping_matrix(c_scratch_);  // the tangent stiffness' damping, or the initial C
+  A.bottomRightCorner(n, n) = -(im.asDiagonal() * c_scratch_);
+  const int m = ground_inputs(dyn);
+  B = Eigen::MatrixXd::Zero(2 * n, n + m);
+  B.block(n, 0, n, n) = -Eigen::MatrixXd(im.asDiagonal());
+  for (int i = 0; i < n; ++i)
+    if (dyn.channel(i) < m && im(i) != 0.0) B(n + i, n + dyn.channel(i)) = -1.0;
+  if (!dyn.massless().empty()) eliminate_massless(dyn, K, c_scratch_, A, B);
+}
+
+LinearStep ExactSteps::block_step(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B, double h) {
+  // Balance displacements against velocities by the block's largest frequency scale.
+  const Eigen::Index n = A.rows() / 2;
+  const double w = std::sqrt(A.bottomLeftCorner(n, n).cwiseAbs().rowwise().sum().maxCoeff());
+  Eigen::VectorXd scale = Eigen::VectorXd::Ones(2 * n);
+  if (w > 0.0 && std::isfinite(w)) scale.head(n).setConstant(1.0 / w);
+  return linear_step(A, B, h, scale);
+}
+
+bool ExactSteps::ready(const RowDynamics& dyn, const AssembledRow& row) {
+  auto& entries = cache_->entries;
+  const int nblocks = static_cast<int>(blocks_.size());
+  if (gate_ < 0) {
+    // The row's stiffness (its entry counts the warm-up), and each block's part of it.
     dyn.stiffness(k_scratch_);
-    const std::uint64_t key = bits_hash(k_scratch_);
-    const auto [first, last] = cache_->by_key.equal_range(key);
-    for (auto it = first; it != last && config_ < 0; ++it)
-      if (entries[it->second].K == k_scratch_) config_ = it->second;
-    if (config_ < 0) {
-      entries.push_back({k_scratch_, key, false, {}});
-      config_ = static_cast<int>(entries.size()) - 1;
-      cache_->by_key.emplace(key, config_);
+    gate_ = find_entry(whole_ ? 0 : nblocks, k_scratch_);
+    for (int bi = 0; bi < nblocks && !whole_; ++bi) {
+      Block& b = blocks_[bi];
+      const int nd = static_cast<int>(b.state.size()) / 2;
+      kb_scratch_.resize(nd, nd);
+      for (int i = 0; i < nd; ++i)
+        for (int j = 0; j < nd; ++j) kb_scratch_(i, j) = k_scratch_(b.state[i], b.state[j]);
+      b.config = find_entry(bi, kb_scratch_);
     }
+    if (whole_) blocks_[0].config = gate_;
     if (visits_.size() < entries.size()) visits_.resize(entries.size(), 0);
   }
-  if (visits_[config_] < ExactStepCache::kExactWarmup) {
-    visited_ = config_;
-    if (++visits_[config_] < ExactStepCache::kExactWarmup) return nullptr;
+  // The warm-up counts the grid points met with the row's stiffness, whether its blocks'
+  // propagators are at hand or not: the same steps as one propagator for the row.
+  bool ready = true;
+  if (visits_[gate_] < ExactStepCache::kExactWarmup) {
+    visited_.push_back(gate_);
+    if (++visits_[gate_] < ExactStepCache::kExactWarmup) ready = false;
   }
-  ExactStepCache::Entry& e = entries[config_];
-  const int n = row.dofs();
-  if (!e.ready) {
-    // z = [u; v], z' = A z + B w, w = [off; ag_0 .. ag_m-1]: u' = v,
-    // v' = -M^-1 (K u + C v + off) - ag (physics.md section 1, without contact forces;
-    // docs/hysteresis.md for K_t and off), ag_c the acceleration of ground channel c under the
-    // floors on it (one column for a row without ground, its floors on no channel).
-    const Eigen::VectorXd& im = row.inv_mass;
-    Eigen::MatrixXd A = Eigen::MatrixXd::Zero(2 * n, 2 * n);
-    A.topRightCorner(n, n).setIdentity();
-    A.bottomLeftCorner(n, n) = -(im.asDiagonal() * e.K);
-    dyn.damping_matrix(c_scratch_);  // the tangent stiffness' damping, or the initial C
-    A.bottomRightCorner(n, n) = -(im.asDiagonal() * c_scratch_);
-    const int m = ground_inputs(dyn);
-    Eigen::MatrixXd B = Eigen::MatrixXd::Zero(2 * n, n + m);
-    B.block(n, 0, n, n) = -Eigen::MatrixXd(im.asDiagonal());
-    for (int i = 0; i < n; ++i)
-      if (dyn.channel(i) < m && im(i) != 0.0) B(n + i, n + dyn.channel(i)) = -1.0;
-    if (!dyn.massless().empty()) eliminate_massless(dyn, e.K, c_scratch_, A, B);
-    // Balance displacements against velocities by the row's largest frequency scale.
-    const double w = std::sqrt(A.bottomLeftCorner(n, n).cwiseAbs().rowwise().sum().maxCoeff());
-    Eigen::VectorXd scale = Eigen::VectorXd::Ones(2 * n);
-    if (w > 0.0 && std::isfinite(w)) scale.head(n).setConstant(1.0 / w);
-    e.step = linear_step(A, B, h_, scale);
-    e.ready = true;
+  if (!ready) return false;
+  const int n = row.dofs(), m = ground_inputs(dyn);
+  Eigen::MatrixXd A, B;  // the row's system, formed once when a block needs it
+  for (Block& b : blocks_) {
+    ExactStepCache::Entry& e = entries[b.config];
+    if (!e.ready) {
+      if (whole_) {
+        row_system(dyn, row, e.K, A, B);
+      } else if (A.size() == 0) {
+        dyn.stiffness(k_scratch_);
+        row_system(dyn, row, k_scratch_, A, B);
+      }
+      if (whole_) {
+        e.step = block_step(A, B, h_);
+      } else {
+        // The block's rows and columns (A is block diagonal over the buildings), and of B its
+        // offsets' columns and the ground channels'.
+        const int ns = static_cast<int>(b.state.size()), nd = ns / 2;
+        Eigen::MatrixXd Ab(ns, ns), Bb(ns, nd + m);
+        for (int i = 0; i < ns; ++i) {
+          for (int j = 0; j < ns; ++j) Ab(i, j) = A(b.state[i], b.state[j]);
+          for (int j = 0; j < nd; ++j) Bb(i, j) = B(b.state[i], b.state[j]);
+          for (int c = 0; c < m; ++c) Bb(i, nd + c) = B(b.state[i], n + c);
+        }
+        e.step = block_step(Ab, Bb, h_);
+      }
+      e.ready = true;
+    }
+    if (!b.offsets_ready) {
+      const std::vector<double>& off = dyn.offsets();
+      const int nd = static_cast<int>(b.state.size()) / 2;
+      b.offsets_response.setZero(2 * nd);
+      if (dyn.affine())
+        for (int j = 0; j < nd; ++j)
+          if (off[b.state[j]] != 0.0) b.offsets_response += e.step.p1.col(j) * off[b.state[j]];
+      b.offsets_ready = true;
+    }
   }
-  if (!offsets_ready_) {
-    const std::vector<double>& off = dyn.offsets();
-    offsets_response_.setZero(2 * n);
-    if (dyn.affine())
-      for (int j = 0; j < n; ++j)
-        if (off[j] != 0.0) offsets_response_ += e.step.p1.col(j) * off[j];
-    offsets_ready_ = true;
+  return true;
+}
+
+void ExactSteps::step(int r, const double* a0, const double* a1, const Eigen::VectorXd& y0,
+                      Eigen::VectorXd& y1) {
+  const auto& entries = cache_->entries;
+  if (whole_) {
+    const Block& b = blocks_[0];
+    linear_step_apply(entries[b.config].step, r, a0, a1, b.offsets_response.data(), y0.data(),
+                      y1.data());
+    return;
   }
-  return &e.step;
+  for (const Block& b : blocks_) {
+    const int ns = static_cast<int>(b.state.size());
+    for (int k = 0; k < ns; ++k) z0_(k) = y0(b.state[k]);
+    linear_step_apply(entries[b.config].step, r, a0, a1, b.offsets_response.data(), z0_.data(),
+                      z1_.data());
+    for (int k = 0; k < ns; ++k) y1(b.state[k]) = z1_(k);
+  }
 }
 
 }  // namespace pound

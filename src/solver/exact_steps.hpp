@@ -22,10 +22,12 @@ namespace pound {
 /// stiffness' propagator from the kExactWarmup-th grid point at which it met that stiffness on
 /// (briefer branches, a storey yielding for a few steps, cost less by Dormand-Prince than a
 /// propagator); counted per run, so that a run takes the same steps with or without the cache.
+/// A row with a flexible foundation keeps them per building (ExactSteps' blocks).
 struct ExactStepCache {
   static constexpr int kExactWarmup = 32;
   struct Entry {
-    Eigen::MatrixXd K;      ///< tangent stiffness [N/m]
+    int block = 0;          ///< the block of DOFs it propagates (ExactSteps)
+    Eigen::MatrixXd K;      ///< the block's tangent stiffness [N/m]
     std::uint64_t key = 0;  ///< hash of K's bits: most look-ups compare this alone (a
                             ///< deteriorating law meets a new stiffness at every excursion)
     bool ready = false;
@@ -69,29 +71,48 @@ class ExactSteps {
   /// must undo (undo_iteration).
   void begin_iteration() {
     declined_before_iteration_ = declined_;
-    visited_ = -1;
+    visited_.clear();
   }
   void undo_iteration();
 
   /// After a switch: the stiffness is looked up again at the next exact step.
   void invalidate() {
-    config_ = -1;
-    offsets_ready_ = false;
+    gate_ = -1;
+    for (Block& b : blocks_) b.config = -1, b.offsets_ready = false;
   }
-  /// The propagator of the current tangent stiffness of `dyn` (added when new, formed at its
-  /// kExactWarmup-th grid point); null while not ready. offsets_response() then holds the
-  /// response P1 [0; -M^-1] off of the branches' offsets [m, m/s].
-  const LinearStep* propagator(const RowDynamics& dyn, const AssembledRow& row);
-  const double* offsets_response() const { return offsets_response_.data(); }
+  /// Whether the propagators of the current tangent stiffness of `dyn` are ready (each added
+  /// when new, formed at its kExactWarmup-th grid point), and with them the responses
+  /// P1 [0; -M^-1] off to the branches' offsets.
+  bool ready(const RowDynamics& dyn, const AssembledRow& row);
+  /// The exact step of z = [u; v] from y0 into y1 (its other entries untouched) with the
+  /// last r inputs (the ground channels' ag) ramping from a0 to a1 [m/s^2] (linear_step_apply).
+  void step(int r, const double* a0, const double* a1, const Eigen::VectorXd& y0,
+            Eigen::VectorXd& y1);
   /// The ramped inputs of a step: one per ground channel (one, at zero, without ground).
   static int ground_inputs(const RowDynamics& dyn) {
     return dyn.ground() ? dyn.ground()->channels() : 1;
   }
 
  private:
+  // The DOFs a propagator steps: the whole row (a row on fixed bases: one propagator, its
+  // numbers those of earlier versions), or one building of a row with a flexible foundation,
+  // its floors then its base's sway and rotation. Between contacts the buildings do not
+  // interact (K, C and M are block diagonal over them), so e^{A h} is block diagonal too and
+  // each building's block is formed alone: when that building's tangent stiffness is new.
+  struct Block {
+    std::vector<int> state;  // its entries of z = [u; v]: its DOFs, then n + its DOFs
+    int config = -1;         // its current stiffness' entry (-1: look it up again)
+    bool offsets_ready = false;
+    Eigen::VectorXd offsets_response;  // P1 of its offsets' columns times the offsets [m, m/s]
+  };
   static void eliminate_massless(const RowDynamics& dyn, const Eigen::MatrixXd& K,
                                  const Eigen::MatrixXd& C, Eigen::MatrixXd& A, Eigen::MatrixXd& B);
   static const Eigen::VectorXd& dyn_inv_mass(const RowDynamics& dyn) { return dyn.inv_mass(); }
+  // z' = A z + B w of the whole row at stiffness K (ready()).
+  void row_system(const RowDynamics& dyn, const AssembledRow& row, const Eigen::MatrixXd& K,
+                  Eigen::MatrixXd& A, Eigen::MatrixXd& B);
+  static LinearStep block_step(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B, double h);
+  int find_entry(int block, const Eigen::MatrixXd& K);
 
   bool enabled_ = false;
   double h_ = 0.0;      // grid step [s]
@@ -99,16 +120,19 @@ class ExactSteps {
   long declined_ = -1;  // the grid point whose exact step was declined
   ExactStepCache own_cache_;
   ExactStepCache* cache_ = &own_cache_;
-  int config_ = -1;  // the current stiffness' entry (-1: look it up again, after a switch)
-  bool offsets_ready_ = false;
-  Eigen::VectorXd offsets_response_;
-  Eigen::MatrixXd k_scratch_;  // the current stiffness, to look up its entry [N/m]
-  Eigen::MatrixXd c_scratch_;  // the current damping matrix [N s/m]
-  std::vector<int> visits_;    // per entry: grid points of this run met with its stiffness
+  std::vector<Block> blocks_;  // one (the whole row) or one per building
+  bool whole_ = true;          // one block, the row in its own order
+  int gate_ = -1;  // the entry of the row's stiffness, whose visits count the warm-up (-1: look
+                   // it up again); whole_: the block's own
+  Eigen::MatrixXd k_scratch_;   // the current stiffness, to look up its entry [N/m]
+  Eigen::MatrixXd kb_scratch_;  // a block's part of it [N/m]
+  Eigen::MatrixXd c_scratch_;   // the current damping matrix [N s/m]
+  Eigen::VectorXd z0_, z1_;     // a block's state before and after its step
+  std::vector<int> visits_;     // per entry: grid points of this run met with its stiffness
   // The declined grid point as it was when the current loop iteration began, restored by
   // undo_iteration when a fork takes the iteration back.
   long declined_before_iteration_ = -1;
-  int visited_ = -1;  // the cache entry whose visits this iteration counted (-1: none)
+  std::vector<int> visited_;  // the cache entries whose visits this iteration counted
 };
 
 }  // namespace pound

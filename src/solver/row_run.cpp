@@ -184,8 +184,7 @@ bool RowRun::contacts_open() const {
 // (nothing changed) when the propagator is not ready or a switch fires inside the step: the
 // Dormand-Prince path then takes the step and locates the event.
 bool RowRun::exact_step() {
-  const LinearStep* L = exact_.propagator(dyn_, row_);
-  if (!L) return false;
+  if (!exact_.ready(dyn_, row_)) return false;
   const double t1 = exact_.next_point();
   const double h = t1 - t_;
   // Each channel's ag over the step: linear between its ends (the grid holds every record
@@ -201,8 +200,7 @@ bool RowRun::exact_step() {
     }
   }
   y1_ = y_;
-  linear_step_apply(*L, m, step_a0_.data(), step_a1_.data(), exact_.offsets_response(), y_.data(),
-                    y1_.data());
+  exact_.step(m, step_a0_.data(), step_a1_.data(), y_, y1_);
   dyn_.set_ground_states(t1, y1_);
   rhs(t1, y1_, k7_);
   check_finite(t1, y1_);
