@@ -195,31 +195,56 @@ void RowForces::base_damping(const double* __restrict v, double* __restrict cv) 
 void RowForces::base_forces(const double* __restrict u, const double* __restrict v,
                             double* __restrict f) const {
   for (const BaseSegment& g : segments_) {
-    double cs, chs;
-    segment_damping(g, v, f, cs, chs);
     // Storey j: V = slope d + offset on its deformation d = c - h theta, c = U_j - U_j-1 its
     // chord (U_0 = u0), P-Delta -kg c (physics.md section 5a): F = V - kg c on floor j, -F on
-    // the floor below (on the sway for the first storey), -h V on the rotation.
+    // the floor below (on the sway for the first storey), -h V on the rotation. With Rayleigh
+    // damping in one pass with the bands of C_fixed on x' (segment_damping otherwise).
     const int o = g.first, m = g.floors;
     const bool flexible = g.sway >= 0;
     const double u0 = flexible ? u[g.sway] : 0.0, th = flexible ? u[g.rot] : 0.0;
+    const double v0 = flexible ? v[g.sway] : 0.0, w = flexible ? v[g.rot] : 0.0;
     const double *h = s_h_.data() + o, *kg = s_kg_.data() + o;
     const double *k = s_slope_.data() + o, *off = s_off_.data() + o;
-    double below = u0, first = 0.0, moment = 0.0;
-    for (int j = 0; j < m; ++j) {
-      const double c = u[o + j] - below, d = c - h[j] * th;
-      const double V = k[j] * d + off[j], F = V - kg[j] * c;
-      f[o + j] += F;
-      if (j > 0)
-        f[o + j - 1] -= F;
-      else
-        first = F;
-      moment += h[j] * V;
-      below = u[o + j];
+    const double *uo = u + o, *vo = v + o, *H = f_height_.data() + o;
+    double* fo = f + o;
+    double cs = 0.0, chs = 0.0, below = u0, first = 0.0, moment = 0.0;
+    if (x_tridiagonal_) {
+      const double *l = xl_.data() + o, *dg = xd_.data() + o, *up = xu_.data() + o;
+      double x_prev = 0.0, x = vo[0] - v0 - H[0] * w;
+      for (int j = 0; j < m; ++j) {
+        const double x_next = j + 1 < m ? vo[j + 1] - v0 - H[j + 1] * w : 0.0;
+        const double cx = l[j] * x_prev + dg[j] * x + up[j] * x_next;  // (C_fixed x')_j
+        cs += cx;
+        chs += H[j] * cx;
+        const double c = uo[j] - below, d = c - h[j] * th;
+        const double V = k[j] * d + off[j], F = V - kg[j] * c;
+        fo[j] = cx + F;
+        if (j > 0)
+          fo[j - 1] -= F;
+        else
+          first = F;
+        moment += h[j] * V;
+        below = uo[j];
+        x_prev = x;
+        x = x_next;
+      }
+    } else {
+      segment_damping(g, v, f, cs, chs);
+      for (int j = 0; j < m; ++j) {
+        const double c = uo[j] - below, d = c - h[j] * th;
+        const double V = k[j] * d + off[j], F = V - kg[j] * c;
+        fo[j] += F;
+        if (j > 0)
+          fo[j - 1] -= F;
+        else
+          first = F;
+        moment += h[j] * V;
+        below = uo[j];
+      }
     }
     if (!flexible) continue;
     // The base: its dashpots, springs (K u + offset: the foundation "storeys"), and the
-    // storeys' reactions.
+    // floors' damping forces and storeys' reactions through T^T.
     const int s = g.sway, r = g.rot;
     f[s] = dashpot_[s] * v[s] - cs + (s_slope_[s] * u0 + s_off_[s]) - first;
     f[r] = dashpot_[r] * v[r] - chs + (s_slope_[r] * th + s_off_[r]) - moment;
