@@ -127,24 +127,39 @@ void RunRecorder::peaks_over_step_general(const Eigen::VectorXd& y0, const Eigen
                                           double t0, double h) {
   const int n = n_;
   const double h2 = h * h;
-  // The quintic of q = sum_j w_j u_j from the values, rates and accelerations at both ends.
-  auto quintic = [&](int i, int b, int r, double hr) {
-    QuinticHermite q{y0(i), y1(i), h * y0(n + i), h * y1(n + i), h2 * dy0(n + i), h2 * dy1(n + i)};
-    for (auto [j, w] : {std::pair{b, -1.0}, std::pair{r, -hr}}) {
-      if (j < 0) continue;
-      q.g0 += w * y0(j);
-      q.g1 += w * y1(j);
-      q.m0 += w * h * y0(n + j);
-      q.m1 += w * h * y1(n + j);
-      q.c0 += w * h2 * dy0(n + j);
-      q.c1 += w * h2 * dy1(n + j);
-    }
-    return q;
-  };
+  const double *u0 = y0.data(), *u1 = y1.data(), *v0 = u0 + n, *v1 = u1 + n;
+  const double *a0 = dy0.data() + n, *a1 = dy1.data() + n;
   for (int i = 0; i < n; ++i) {
     if (any_held_ && held_[i]) continue;
-    r_.peak_disp(i) = quintic(i, -1, -1, 0.0).raise_peak(r_.peak_disp(i));
-    const QuinticHermite d = quintic(i, below_[i], rot_[i], rot_h_[i]);
+    // The quintic of the displacement, then of the drift q = u_i - u_below - h_i u_rot (each
+    // coefficient from the values, rates and accelerations at both ends), raised only where its
+    // bound could raise the peak (QuinticHermite::raise_peak).
+    const QuinticHermite c{u0[i], u1[i], h * v0[i], h * v1[i], h2 * a0[i], h2 * a1[i]};
+    r_.peak_disp(i) = c.raise_peak(r_.peak_disp(i));
+    const int b = below_[i], r = rot_[i];
+    if (b < 0 && r < 0) {  // a storey on the ground or a foundation spring: its drift is u_i
+      r_.peak_drift(i) = r_.peak_disp(i);
+      if (check_collapse_ && r_.peak_drift(i) > collapse_drift_[i]) step_collapse(i, c, t0, h);
+      continue;
+    }
+    QuinticHermite d = c;
+    if (b >= 0) {
+      d.g0 += -1.0 * u0[b];
+      d.g1 += -1.0 * u1[b];
+      d.m0 += -1.0 * h * v0[b];
+      d.m1 += -1.0 * h * v1[b];
+      d.c0 += -1.0 * h2 * a0[b];
+      d.c1 += -1.0 * h2 * a1[b];
+    }
+    if (r >= 0) {
+      const double w = -rot_h_[i];
+      d.g0 += w * u0[r];
+      d.g1 += w * u1[r];
+      d.m0 += w * h * v0[r];
+      d.m1 += w * h * v1[r];
+      d.c0 += w * h2 * a0[r];
+      d.c1 += w * h2 * a1[r];
+    }
     r_.peak_drift(i) = d.raise_peak(r_.peak_drift(i));
     if (check_collapse_ && r_.peak_drift(i) > collapse_drift_[i]) step_collapse(i, d, t0, h);
   }
