@@ -103,7 +103,8 @@ SampleOutcome SampleRunner::run(const SampleDraw& d) {
 
     // The ground (issue 28): the motion (matched to the design spectrum, or to the sample's
     // random target; one per building under a coherency model), delayed under each building
-    // by its arrival (wave passage), scaled to the stripe level or by the sampled factor.
+    // by its arrival (wave passage), each made to end at rest when they differ (at_rest.hpp),
+    // scaled to the stripe level or by the sampled factor.
     std::vector<GroundMotion> stations;
     GroundMotion reference;
     if (st_.source == MotionSource::records) {
@@ -117,7 +118,8 @@ SampleOutcome SampleRunner::run(const SampleDraw& d) {
         for (auto& m : g) stations.push_back(m.motion);
       reference = std::move(g.front().motion);
     }
-    const RowGround unscaled = row_ground(sm.ground, reference, stations);
+    const RowGround unscaled =
+        row_ground(sm.ground, reference, stations, st_.source == MotionSource::generated);
     // The intensity of the motion at the base of intensity.building.
     const GroundMotion& base = unscaled.under(st_.im_building).motion();
     double im0;
