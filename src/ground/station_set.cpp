@@ -1,13 +1,12 @@
 #include "ground/station_set.hpp"
 
-#include "ground/at_rest.hpp"
-#include "ground/ground_trace.hpp"
-
 #include <cmath>
 #include <limits>
 #include <utility>
 
 #include "core/error.hpp"
+#include "ground/at_rest.hpp"
+#include "ground/ground_trace.hpp"
 #include "ground/wave_passage.hpp"
 #include "motion/motion_processing.hpp"
 #include "motion/response_spectrum.hpp"
