@@ -9,6 +9,7 @@
 #include "core/error.hpp"
 #include "motion/response_spectrum.hpp"
 #include "sampling/counter_rng.hpp"
+#include "structure/building_on_base.hpp"
 #include "study/ground_options.hpp"
 #include "study/simulation_run.hpp"
 
@@ -127,7 +128,7 @@ SampleOutcome SampleRunner::run(const SampleDraw& d) {
       im0 = base.pga();
     } else {
       // Sa(T1) of the (sampled) building, 5 % damping.
-      const double t1 = assemble(row.buildings[st_.im_building]).periods(0);
+      const double t1 = assemble_on_base(row.buildings[st_.im_building]).periods(0);
       im0 = response_spectrum(base, {t1}, 0.05).psa[0];
     }
     if (!(im0 > 0)) throw NumericalError("the motion has zero intensity");
