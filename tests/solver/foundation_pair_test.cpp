@@ -15,11 +15,12 @@
 //       modes 1 and 2 of the fixed base, mass-proportional for one storey) on the deformations,
 //   M q'' + C q' + K q = -M e_u0 ag + sum_sites (-/+) F g,  g = e_uj + e_u0 + H_j e_theta,
 // the contact force F acting on delta = U_L,j - U_R,j - gap (hc-linear, physics.md section 2).
-// A massless base (m_0 = I_0 = J = 0) makes M singular, with null vectors n_x = e_u0 - sum e_uj and
-// n_t = e_theta - sum H_j e_uj (n^T g = 0, n^T M = 0): its rows become the first-order equations
-// n^T (C q' + K q) = 0, which give the base's velocities from the state (the base shear and
-// overturning moment against its springs and dashpots) and, differentiated, n^T (C q'' + K q') = 0,
-// the rows that replace them in the accelerations' system.
+// A massless base makes M singular: without m_0 it has the null vector n_x = e_u0 - sum e_uj,
+// without rotary inertia (I_0 = J = 0) n_t = e_theta - sum H_j e_uj (n^T g = 0, n^T M = 0), and
+// the row of that DOF becomes the first-order equation n^T (C q' + K q) = 0, which gives its
+// velocity from the state (the base shear, or overturning moment, against its spring and
+// dashpot) and, differentiated, n^T (C q'' + K q') = 0, the row that replaces it in the
+// accelerations' system.
 // Classical RK4 at 1/400 of the record spacing, the ground acceleration linear between samples,
 // every contact start and end located by bisection of the RK4 step (as in
 // ground_contact_test.cpp).
@@ -67,10 +68,14 @@ struct Spec {
   std::vector<double> J;                                  // floors' rotary inertias [kg m^2]
   int n() const { return static_cast<int>(m.size()); }
   int dofs() const { return n() + (flexible ? 2 : 0); }
-  bool massless() const {
+  // The base's DOFs without mass: 0 (sway) when m_0 = 0, 1 (rotation) when I_0 + sum J = 0.
+  std::vector<int> massless() const {
     double j = 0.0;
     for (double x : J) j += x;
-    return flexible && m0 == 0.0 && i0 + j == 0.0;
+    std::vector<int> out;
+    if (flexible && m0 == 0.0) out.push_back(0);
+    if (flexible && i0 + j == 0.0) out.push_back(1);
+    return out;
   }
 };
 
@@ -121,18 +126,24 @@ class RelativeReference {
     r_ = Eigen::VectorXd::Zero(N_);
     for (std::size_t i = 0; i < b_.size(); ++i) assemble(i);
     for (int j = 0; j < std::min(b_[0].n(), b_[1].n()); ++j) sites_.push_back(j);
-    // The accelerations' system: M, with a massless base's rows replaced by n^T C.
+    // The accelerations' system: M, with a massless DOF's row replaced by n^T C.
+    std::vector<Eigen::RowVectorXd> rows;
+    for (std::size_t i = 0; i < b_.size(); ++i)
+      for (int d : b_[i].massless()) {
+        massless_.push_back(off_[i] + b_[i].n() + d);
+        rows.push_back(null_row(i, d));
+      }
+    const int nm = static_cast<int>(massless_.size());
+    null_ = Eigen::MatrixXd::Zero(nm, N_);
+    for (int k = 0; k < nm; ++k) null_.row(k) = rows[k];
     A_ = M_;
-    for (std::size_t i = 0; i < b_.size(); ++i) {
-      if (!b_[i].massless()) continue;
-      const Eigen::MatrixXd Nt = null_rows(i);  // 2 x N
-      const int x = off_[i] + b_[i].n();
-      A_.middleRows(x, 2) = Nt * C_;
-      // The base's velocities from n^T C q' = -n^T K q: (n^T C)_base v_base = rest.
-      Eigen::MatrixXd Cbb = (Nt * C_).middleCols(x, 2);
-      base_solve_.push_back(Cbb.inverse());
-      null_.push_back(Nt);
+    Eigen::MatrixXd Cbb(nm, nm);
+    for (int k = 0; k < nm; ++k) {
+      A_.row(massless_[k]) = null_.row(k) * C_;
+      for (int l = 0; l < nm; ++l) Cbb(k, l) = A_(massless_[k], massless_[l]);
     }
+    // Their velocities from n^T C q' = -n^T K q: (n^T C)_bb v_b = -n^T (C_ba v_a + K q).
+    if (nm > 0) base_solve_ = Cbb.inverse();
     lu_ = A_.partialPivLu();
   }
 
@@ -248,20 +259,19 @@ class RelativeReference {
     }
   }
 
-  // The null vectors n_x, n_t of building i's (massless) mass matrix, as rows.
-  Eigen::MatrixXd null_rows(std::size_t i) const {
+  // The null vector n_x (d = 0) or n_t (d = 1) of building i's mass matrix without m_0 or
+  // without rotary inertia.
+  Eigen::RowVectorXd null_row(std::size_t i, int d) const {
     const Spec& s = b_[i];
     const int o = off_[i], n = s.n();
-    Eigen::MatrixXd Nt = Eigen::MatrixXd::Zero(2, N_);
+    Eigen::RowVectorXd r = Eigen::RowVectorXd::Zero(N_);
     double H = 0.0;
     for (int j = 0; j < n; ++j) {
       H += s.h[j];
-      Nt(0, o + j) = -1.0;
-      Nt(1, o + j) = -H;
+      r(o + j) = d == 0 ? -1.0 : -H;
     }
-    Nt(0, o + n) = 1.0;
-    Nt(1, o + n + 1) = 1.0;
-    return Nt;
+    r(o + n + d) = 1.0;
+    return r;
   }
 
   double height(std::size_t b, int j) const {
@@ -293,14 +303,10 @@ class RelativeReference {
   Eigen::VectorXd velocities(const Eigen::VectorXd& y) const {
     Eigen::VectorXd v = y.tail(N_);
     const Eigen::VectorXd q = y.head(N_);
-    for (std::size_t i = 0, k = 0; i < b_.size(); ++i) {
-      if (!b_[i].massless()) continue;
-      const int x = off_[i] + b_[i].n();
-      v.segment(x, 2).setZero();
-      const Eigen::Vector2d rest = -(null_[k] * (C_ * v + K_ * q));
-      v.segment(x, 2) = base_solve_[k] * rest;
-      ++k;
-    }
+    if (massless_.empty()) return v;
+    for (int d : massless_) v(d) = 0.0;
+    const Eigen::VectorXd vb = base_solve_ * (-(null_ * (C_ * v + K_ * q)));
+    for (std::size_t k = 0; k < massless_.size(); ++k) v(massless_[k]) = vb(k);
     return v;
   }
 
@@ -327,12 +333,10 @@ class RelativeReference {
         }
       }
     }
-    // A massless base's rows: n^T (C q'' + K q') = 0.
-    for (std::size_t i = 0, kk = 0; i < b_.size(); ++i) {
-      if (!b_[i].massless()) continue;
-      const int x = off_[i] + b_[i].n();
-      R.segment(x, 2) = -(null_[kk] * (K_ * v));
-      ++kk;
+    // A massless DOF's row: n^T (C q'' + K q') = 0.
+    if (!massless_.empty()) {
+      const Eigen::VectorXd r = -(null_ * (K_ * v));
+      for (std::size_t i = 0; i < massless_.size(); ++i) R(massless_[i]) = r(i);
     }
     Eigen::VectorXd dy(2 * N_);
     dy.head(N_) = v;
@@ -372,8 +376,9 @@ class RelativeReference {
   Eigen::MatrixXd M_, C_, K_, A_;
   Eigen::VectorXd r_;
   Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
-  std::vector<Eigen::MatrixXd> null_;
-  std::vector<Eigen::Matrix2d> base_solve_;
+  std::vector<int> massless_;   // DOFs without mass (a massless sway or rotation)
+  Eigen::MatrixXd null_;        // their null vectors n^T, one row each
+  Eigen::MatrixXd base_solve_;  // ((n^T C)_bb)^-1
   bool pounding_ = false;
   std::vector<char> on_;
   std::vector<double> v0_;
@@ -403,8 +408,9 @@ Spec left(bool mass, bool p_delta = false) {
 }
 
 // The right building: 3 storeys of 30 t and 4e7 N/m, 3.5, 3 and 3 m (fixed-base T1 = 0.387 s),
-// fixed (`base` 0), or on K_x = 2e8 N/m, K_theta = 1.5e10 N m/rad, massless (1) or with
-// m_0 = 20 t, I_0 = 1e5 kg m^2, J = 5e4 kg m^2 per floor (2; T1 = 0.421 s).
+// fixed (`base` 0), or on K_x = 2e8 N/m, K_theta = 1.5e10 N m/rad, massless (1), with
+// m_0 = 20 t, I_0 = 1e5 kg m^2, J = 5e4 kg m^2 per floor (2; T1 = 0.421 s), with the rotary
+// inertias only (3: a massless sway) or m_0 only (4: a massless rotation).
 Spec right(int base) {
   Spec s;
   s.m = {3e4, 3e4, 3e4};
@@ -416,8 +422,8 @@ Spec right(int base) {
   s.kr = 1.5e10;
   s.cx = 4e6;
   s.cr = 2e8;
-  if (base == 2) {
-    s.m0 = 2e4;
+  if (base == 2 || base == 4) s.m0 = 2e4;
+  if (base == 2 || base == 3) {
     s.i0 = 1e5;
     s.J = {5e4, 5e4, 5e4};
   }
@@ -447,6 +453,8 @@ TEST(FoundationPair, PoundingOnFlexibleBasesMatchesAnIndependentIntegration) {
       {"massless base left, fixed right", left(false), right(0)},
       {"massless base left, massive right", left(false), right(2)},
       {"massless bases, P-Delta left", left(false, true), right(1)},
+      {"massive base left, massless sway right", left(true), right(3)},
+      {"massless base left, massless rotation right", left(false), right(4)},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.name);
