@@ -2,8 +2,9 @@
 // the linear system between events (the campaign's path, no energy tracked; docs/integration.md,
 // "Exact steps"), whose propagator eliminates a massless base's first-order DOFs
 // (ExactSteps::eliminate_massless), against Dormand-Prince throughout (the energy balance
-// tracked, as pound simulate runs it), both at rtol 1e-10, on massless and massive foundations,
-// with elastic and piecewise-linear (bilinear, imk) storeys, pounding through hc-linear contacts.
+// tracked, as pound simulate runs it), both at rtol 1e-10, on massless, massive and mixed
+// foundations, with elastic and piecewise-linear (bilinear, imk) storeys, pounding through
+// hc-linear contacts.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -21,9 +22,11 @@ namespace {
 
 // The chapter 8 pair (Th. Table 8.2) on soft soil: the springs and dashpots of Wolf's cone on
 // Vs = 100 m/s, nu = 0.3, rho = 1800 kg/m^3 under their footprints (docs/ssi.md's table: 20 m
-// and 12 m squares). `mass`: base slabs of 100 t and 60 t with I_0 = m_0 L^2 / 12 and floors with
-// J = m L^2 / 12 (L = 20 m, 12 m); else massless bases.
-BuildingRow soft_pair(const std::string& law, bool mass, double gap) {
+// and 12 m squares). Bases of kind `mass`: 0 massless; 1 base slabs of 100 t and 60 t with
+// I_0 = m_0 L^2 / 12 and floors with J = m L^2 / 12 (L = 20 m, 12 m); 2 mixed: building 1 with
+// the rotary inertias only (a massless sway), building 2 with the slab's mass only (a massless
+// rotation).
+BuildingRow soft_pair(const std::string& law, int mass, double gap) {
   BuildingRow row = test::chapter8_pair(gap);
   const double L[2] = {20.0, 12.0};
   const double K[2][4] = {{9.56e8, 1.02e11, 7.2e7, 4.49e9}, {5.73e8, 2.2e10, 2.59e7, 5.82e8}};
@@ -38,8 +41,8 @@ BuildingRow soft_pair(const std::string& law, bool mass, double gap) {
     f.rocking_stiffness = K[b][1];
     f.sway_damping = K[b][2];
     f.rocking_damping = K[b][3];
-    if (mass) {
-      f.foundation_mass = m0[b];
+    if (mass == 1 || (mass == 2 && b == 1)) f.foundation_mass = m0[b];
+    if (mass == 1 || (mass == 2 && b == 0)) {
       f.foundation_inertia = m0[b] * L[b] * L[b] / 12;
       f.floor_inertias.assign(bd.floors(), bd.masses[0] * L[b] * L[b] / 12);
     }
@@ -77,12 +80,13 @@ TEST(FoundationExactSteps, ExactStepsAgreeWithDormandPrinceOnMasslessAndMassiveB
   IntegratorSettings integ;
   integ.rtol = 1e-10;
   for (const char* law : {"elastic", "bilinear", "imk"}) {
-    for (bool mass : {false, true}) {
-      const std::string name = std::string(law) + (mass ? ", massive bases" : ", massless bases");
+    for (int mass : {0, 1, 2}) {
+      const char* kind[] = {", massless bases", ", massive bases", ", mixed bases"};
+      const std::string name = std::string(law) + kind[mass];
       SCOPED_TRACE(name);
       const BuildingRow row = soft_pair(law, mass, 0.01);
       const AssembledRow a = assemble(row);
-      ASSERT_EQ(a.any_massless(), !mass);
+      ASSERT_EQ(a.any_massless(), mass != 1);
       const RowSimulation e = run(row, integ, false), d = run(row, integ, true);
       EXPECT_EQ(d.pounding.exact_steps + d.free.exact_steps, 0);
       const double share = law == std::string("elastic")    ? 0.9
