@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "../support/studies.hpp"
@@ -19,44 +20,33 @@ namespace {
 // (docs/ssi.md's springs for Vs = 100 m/s under 20 m and 12 m footprints); `mass`: rafts of the
 // floors' mass with I_0 = m_0 L^2 / 12 and the floors' J = m L^2 / 12.
 test::StudyRun soft_pair(bool mass) {
-  std::vector<std::string> keys = {"--pair1.gap",
-                                   "0.002",
-                                   "--motion.duration",
-                                   "4",
-                                   "--building1.foundation",
-                                   "springs",
-                                   "--building1.sway_stiffness",
-                                   "9.56e8",
-                                   "--building1.rocking_stiffness",
-                                   "1.02e11",
-                                   "--building1.sway_damping",
-                                   "7.2e7",
-                                   "--building1.rocking_damping",
-                                   "4.49e9",
-                                   "--building2.foundation",
-                                   "springs",
-                                   "--building2.sway_stiffness",
-                                   "5.73e8",
-                                   "--building2.rocking_stiffness",
-                                   "2.2e10",
-                                   "--building2.sway_damping",
-                                   "2.59e7",
-                                   "--building2.rocking_damping",
-                                   "5.82e8"};
-  if (mass) {
-    const std::vector<std::string> m = {
-        "--building1.foundation_mass",    "2.4e5",  "--building1.foundation_inertia", "8e6",
-        "--building1.floor_inertias",     "1.6e6",  "--building2.foundation_mass",    "8.7e4",
-        "--building2.foundation_inertia", "1.04e6", "--building2.floor_inertias",     "3.48e5"};
-    keys.insert(keys.end(), m.begin(), m.end());
-  }
-  return test::read_study("ch8-five-three.ini", keys);
+  using Keys = std::vector<std::pair<std::string, std::string>>;
+  Keys keys = {{"pair1.gap", "0.002"},
+               {"motion.duration", "4"},
+               {"building1.foundation", "springs"},
+               {"building1.sway_stiffness", "9.56e8"},
+               {"building1.rocking_stiffness", "1.02e11"},
+               {"building1.sway_damping", "7.2e7"},
+               {"building1.rocking_damping", "4.49e9"},
+               {"building2.foundation", "springs"},
+               {"building2.sway_stiffness", "5.73e8"},
+               {"building2.rocking_stiffness", "2.2e10"},
+               {"building2.sway_damping", "2.59e7"},
+               {"building2.rocking_damping", "5.82e8"}};
+  const Keys rafts = {
+      {"building1.foundation_mass", "2.4e5"},     {"building1.foundation_inertia", "8e6"},
+      {"building1.floor_inertias", "1.6e6"},      {"building2.foundation_mass", "8.7e4"},
+      {"building2.foundation_inertia", "1.04e6"}, {"building2.floor_inertias", "3.48e5"}};
+  if (mass) keys.insert(keys.end(), rafts.begin(), rafts.end());
+  std::vector<std::string> args;
+  for (const auto& [k, v] : keys) args.insert(args.end(), {"--" + k, v});
+  return test::read_study("ch8-five-three.ini", args);
 }
 
 // With mass: coarse steps, none of which ends in an overlap, and the peaks of the fixed
 // stepping (fine steps throughout) within 5e-3 (as on fixed bases, sears_event_test.cpp; 5e-6
-// measured: 1657 coarse steps of 7721 with mass), the
-// same number of impacts. Massless: no coarse step.
+// measured, with 1657 coarse steps of 7721 on the massive bases), the same number of impacts.
+// Massless: no coarse step.
 TEST(SearsFoundation, EventSteppingIsSafeOnFoundations) {
   for (bool mass : {true, false}) {
     SCOPED_TRACE(mass ? "massive bases" : "massless bases");
