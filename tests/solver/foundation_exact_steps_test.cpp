@@ -3,8 +3,8 @@
 // "Exact steps"), whose propagator eliminates a massless base's first-order DOFs
 // (ExactSteps::eliminate_massless), against Dormand-Prince throughout (the energy balance
 // tracked, as pound simulate runs it), both at rtol 1e-10, on massless, massive and mixed
-// foundations, with elastic and piecewise-linear (bilinear, imk) storeys, pounding through
-// hc-linear contacts.
+// foundations, with elastic and piecewise-linear (bilinear, imk) storeys, and bilinear ones with
+// P-Delta and tangent-stiffness damping, pounding through hc-linear contacts.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -26,7 +26,8 @@ namespace {
 // I_0 = m_0 L^2 / 12 and floors with J = m L^2 / 12 (L = 20 m, 12 m); 2 mixed: building 1 with
 // the rotary inertias only (a massless sway), building 2 with the slab's mass only (a massless
 // rotation).
-BuildingRow soft_pair(const std::string& law, int mass, double gap) {
+// `heavy`: with P-Delta (the floors' weights on the storeys' chords) and tangent-stiffness damping.
+BuildingRow soft_pair(const std::string& law, int mass, double gap, bool heavy) {
   BuildingRow row = test::chapter8_pair(gap);
   const double L[2] = {20.0, 12.0};
   const double K[2][4] = {{9.56e8, 1.02e11, 7.2e7, 4.49e9}, {5.73e8, 2.2e10, 2.59e7, 5.82e8}};
@@ -34,6 +35,8 @@ BuildingRow soft_pair(const std::string& law, int mass, double gap) {
   for (int b = 0; b < 2; ++b) {
     Building& bd = row.buildings[b];
     bd.hysteresis = law;
+    bd.p_delta = heavy;
+    if (heavy) bd.damping_stiffness = DampingStiffness::tangent;
     if (law != "elastic") bd.yield_shears.assign(bd.floors(), b == 0 ? 4.5e5 : 1.7e5);
     Foundation& f = bd.foundation;
     f.kind = FoundationKind::springs;
@@ -79,25 +82,25 @@ RowSimulation run(const BuildingRow& row, const IntegratorSettings& integ, bool 
 TEST(FoundationExactSteps, ExactStepsAgreeWithDormandPrinceOnMasslessAndMassiveBases) {
   IntegratorSettings integ;
   integ.rtol = 1e-10;
-  for (const char* law : {"elastic", "bilinear", "imk"}) {
+  for (const std::string variant : {"elastic", "bilinear", "imk", "bilinear, P-Delta, tangent"}) {
+    const bool heavy = variant.size() > 8;
+    const std::string law = heavy ? "bilinear" : variant;
     for (int mass : {0, 1, 2}) {
       const char* kind[] = {", massless bases", ", massive bases", ", mixed bases"};
-      const std::string name = std::string(law) + kind[mass];
+      const std::string name = variant + kind[mass];
       SCOPED_TRACE(name);
-      const BuildingRow row = soft_pair(law, mass, 0.01);
+      const BuildingRow row = soft_pair(law, mass, 0.01, heavy);
       const AssembledRow a = assemble(row);
       ASSERT_EQ(a.any_massless(), mass != 1);
       const RowSimulation e = run(row, integ, false), d = run(row, integ, true);
       EXPECT_EQ(d.pounding.exact_steps + d.free.exact_steps, 0);
-      const double share = law == std::string("elastic")    ? 0.9
-                           : law == std::string("bilinear") ? 0.6
-                                                            : 0.05;
+      const double share = law == "elastic" ? 0.9 : law == "bilinear" ? 0.6 : 0.05;
       EXPECT_GT(e.free.exact_steps, share * e.free.steps);
       EXPECT_GT(e.pounding.exact_steps, share / 2 * e.pounding.steps)
           << e.pounding.exact_steps << " of " << e.pounding.steps;
       EXPECT_EQ(e.pounding.events, d.pounding.events);
       EXPECT_EQ(e.free.events, d.free.events);
-      if (std::string(law) != "elastic") {
+      if (law != "elastic") {
         EXPECT_GT(e.free.events, 10);  // yield and unloading events
         EXPECT_GT(e.free.hysteretic_energy.sum(), 0.0);
       }
