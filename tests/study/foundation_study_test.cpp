@@ -75,7 +75,7 @@ std::vector<std::string> storeys(const std::string& law) {
 // C / K = 1 ms (the base's first-order time constant). `mass`: a raft of the building's floor
 // mass m_0 = sum m, I_0 = m_0 L^2 / 12 and J = m L^2 / 12 per floor (L the slab length), the
 // dashpots 20 % of critical on the base's own sway and rocking. At r = 1e-6 the base's own
-// frequencies are 1.9e4 to 4.4e4 rad/s, (omega_1 / omega_base)^2 < 1e-6.
+// frequencies are 1.9e4 to 5.1e4 rad/s, (omega_1 / omega_base)^2 < 1e-6.
 std::vector<std::string> springs(double r, bool mass) {
   struct B {
     double k, H, m, n, L;
@@ -168,7 +168,7 @@ std::string note(double worst, int impacts) {
 }
 
 // The fixed-step integrator (Dormand-Prince at 2.5e-5 s: stable on the stiff bases, omega h <=
-// 1.1) for both runs of a comparison: peak accelerations and contact forces are sampled at the
+// 1.3) for both runs of a comparison: peak accelerations and contact forces are sampled at the
 // step ends, so runs that place their steps differently (adaptive steps follow the stiff base's
 // modes) differ by their sampling (up to 3e-3 measured), not by their physics.
 IntegratorSettings fixed_steps() {
