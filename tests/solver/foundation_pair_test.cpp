@@ -3,7 +3,7 @@
 // energy balance tracked) against an independent integration written here.
 //
 // The reference is the classic soil-structure model in coordinates RELATIVE to the base (e.g.
-// Chopra, Dynamics of Structures, ch. 20; Wolf 1985, Dynamic Soil-Structure Interaction): per
+// Veletsos & Meek 1974; Wolf 1985, Dynamic Soil-Structure Interaction, Prentice Hall): per
 // building the floors' deformations u_j (relative to the moving, rotating base), the base's sway
 // u0 (relative to the free-field ground) and its rotation theta; floor j's displacement relative
 // to the free-field ground is U_j = u_j + u0 + H_j theta (H_j its height above the base), so

@@ -4,8 +4,8 @@
 //   T~ = T sqrt(1 + k / K_x + k h^2 / K_theta) (physics.md section 5a; docs/ssi.md).
 // - With the base's mass m_0 and rotary inertia I_0 and the floors' own J_j, the periods are
 //   those of the classic model in coordinates RELATIVE to the base (the floors' deformations
-//   u_j, the base's sway u0 and rotation theta; e.g. Chopra, Dynamics of Structures, ch. 20 on
-//   soil-structure interaction): each floor's total displacement relative to the free-field
+//   u_j, the base's sway u0 and rotation theta; e.g. Wolf 1985, Dynamic Soil-Structure
+//   Interaction, Prentice Hall): each floor's total displacement relative to the free-field
 //   ground is u_j + u0 + H_j theta, so that
 //       M = [ diag(m)    m         m.H                        ]
 //           [ m^T        sum m + m_0   sum m H                ]
