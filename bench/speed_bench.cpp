@@ -14,15 +14,18 @@
 //      collapse saves (issue 23; bench/collapse_bench.cpp).
 //   7. a sample on soil-structure interaction against the same sample on fixed bases
 //      (issue 29; studies/ssi-soft-soil.ini).
+//   8. a sample of two identical neighbours on spatially varying ground against one motion
+//      under both (issue 28; studies/svgm-identical-pair.ini).
 // Usage: bench_speed [source dir [quick | lumped [check] | sample ID | inelastic [N] |
 // samples [N [REPEAT [MODEL [spectral|none]]]] | collapse [N [REPEAT [imk|bilinear|both
-// [--key value ...]]]] | ssi [N [REPEAT [MODEL [ssi|fixed]]]] | ch8 | fine-step | contact-steps]]
-// (default: the source tree it was built from; "quick": only the event-driven chapter 8 run, for
-// profiling; "fine-step": the event path's fine step against the fixed path; "contact-steps": the
-// longer steps through smooth contact forces at several sears.contact_step_tolerance values; "ch8":
-// case 1 alone; "lumped": only the adaptive run of case 2, for profiling, with "check" also its
-// fixed-step reference and the case 2 line; "sample ID": peak forces of sample ID (0..19) of case
-// 3's campaign on the default path, the fixed path at its automatic step and at 10 us)
+// [--key value ...]]]] | ssi|svgm|svgm-default [N [REPEAT [MODEL|all [with|base]]]] | ch8 |
+// fine-step | contact-steps]] (default: the source tree it was built from; "quick": only the
+// event-driven chapter 8 run, for profiling; "fine-step": the event path's fine step against the
+// fixed path; "contact-steps": the longer steps through smooth contact forces at several
+// sears.contact_step_tolerance values; "ch8": case 1 alone; "lumped": only the adaptive run of case
+// 2, for profiling, with "check" also its fixed-step reference and the case 2 line; "sample ID":
+// peak forces of sample ID (0..19) of case 3's campaign on the default path, the fixed path at its
+// automatic step and at 10 us)
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -426,62 +429,65 @@ void samples_case(const std::string& src, long samples, int repeat, const std::s
   }
 }
 
-// Case 7 (issue 29): the cost of a sample on soil-structure interaction against the same
-// sample on fixed bases: studies/ssi-soft-soil.ini as it is (cone foundations, sampled soil)
-// and with both foundations fixed and the soil not sampled (every other draw the same), per
-// contact model; the motion's generation is left out (the same in both).
-void ssi_case(const std::string& src, long samples, int repeat, const std::string& only,
-              const std::string& which) {
+// Cases 7 and 8: the cost of a sample of `study` as it is against the same sample with
+// `baseline` (the other keys' draws are the same: every parameter has its own stream), per
+// contact model, process CPU time of SampleRunner::run (the motions' generation included) and
+// the same without one motion's generation (SimqkeGenerator, the uniform case's motion).
+//   7. ssi (issue 29): studies/ssi-soft-soil.ini on cone foundations against fixed bases;
+//   8. svgm (issue 28): studies/svgm-identical-pair.ini on spatially varying ground (two
+//      coherent stations, wave passage) against one motion under both (which never pounds);
+//      svgm-default: the default study's pair with v = 500 m/s and Harichandran-Vanmarcke
+//      against the study as it is (both pound).
+void compare_case(const char* title, const std::string& src, const std::string& study_file,
+                  const std::vector<std::string>& extra, const std::vector<std::string>& baseline,
+                  long samples, int repeat, const std::string& only, const std::string& which) {
   std::printf(
-      "\n7. SSI: studies/ssi-soft-soil.ini, samples 0-%ld, process CPU time without the "
-      "motion's generation, the smallest of %d runs each\n",
-      samples - 1, repeat);
-  std::printf("%-10s %4s %12s %12s %8s %12s\n", "model", "n", "fixed[ms]", "ssi[ms]", "ratio",
-              "worst ratio");
-  const std::vector<std::string> fixed = {
-      "--building1.foundation",       "fixed", "--building2.foundation", "fixed",
-      "--sample.soil_shear_velocity", "none",  "--sample.soil_density",  "none",
-      "--sample.soil_poisson",        "none"};
-  auto load = [&](const std::vector<std::string>& extra) {
+      "\n%s: %s, samples 0-%ld, process CPU time, the smallest of %d runs each; 'rest': without "
+      "one motion's generation\n",
+      title, study_file.c_str(), samples - 1, repeat);
+  std::printf("%-10s %4s %10s %10s %7s %10s %10s %7s %7s\n", "model", "n", "base[ms]", "with[ms]",
+              "ratio", "base rest", "with rest", "ratio", "worst");
+  auto load = [&](const std::vector<std::string>& keys) {
     Options oc("campaign", "speed benchmark", campaign_option_specs());
-    std::vector<std::string> args = {"--config", src + "/studies/ssi-soft-soil.ini"};
-    args.insert(args.end(), extra.begin(), extra.end());
+    std::vector<std::string> args = {"--config", src + "/" + study_file};
+    args.insert(args.end(), keys.begin(), keys.end());
     oc.parse(args);
     return campaign_from_options(oc, samples, -1);
   };
-  const CampaignStudy on_soil = load({}), on_rock = load(fixed);
-  SampleRunner soil(on_soil), rock(on_rock);
-  SimqkeGenerator gen(*on_soil.spectrum, on_soil.motion_duration, on_soil.generator);
-  const TargetVariability var(on_soil.variability, gen.match_periods());
+  const CampaignStudy with = load(extra), base = load(baseline);
+  SampleRunner rw(with), rb(base);
+  SimqkeGenerator gen(*base.spectrum, base.motion_duration, base.generator);
+  const TargetVariability var(base.variability, gen.match_periods());
   struct Sum {
     int n = 0;
-    double fixed = 0, ssi = 0, worst = 0;
+    double base = 0, with = 0, motion = 0, worst = 0;
   } sums[2];  // 0 sears, 1 lumped
   for (long id = 0; id < samples; ++id) {
-    const SampleDraw ds = soil.draw(id), dr = rock.draw(id);
-    if (!only.empty() && ds.model != only) continue;
+    const SampleDraw dw = rw.draw(id), db = rb.draw(id);
+    if (!only.empty() && dw.model != only) continue;
     const Timing tm = time_it(
         [&] {
-          ds.spectral_epsilon.empty()
-              ? gen.generate(ds.motion_seed, 0)
-              : gen.generate(ds.motion_seed, 0, var.ln_factor(ds.spectral_epsilon));
+          db.spectral_epsilon.empty()
+              ? gen.generate(db.motion_seed, 0)
+              : gen.generate(db.motion_seed, 0, var.ln_factor(db.spectral_epsilon));
         },
         repeat);
-    const double ts =
-        which == "fixed" ? 0.0 : time_it([&] { soil.run(ds); }, repeat).cpu_s - tm.cpu_s;
-    const double tr =
-        which == "ssi" ? 0.0 : time_it([&] { rock.run(dr); }, repeat).cpu_s - tm.cpu_s;
-    Sum& m = sums[is_sears_model(ds.model) ? 0 : 1];
+    const double tw = which == "base" ? 0.0 : time_it([&] { rw.run(dw); }, repeat).cpu_s;
+    const double tb = which == "with" ? 0.0 : time_it([&] { rb.run(db); }, repeat).cpu_s;
+    Sum& m = sums[is_sears_model(dw.model) ? 0 : 1];
     ++m.n;
-    m.ssi += ts;
-    m.fixed += tr;
-    m.worst = std::max(m.worst, ts / std::max(tr, 1e-6));
+    m.with += tw;
+    m.base += tb;
+    m.motion += tm.cpu_s;
+    m.worst = std::max(m.worst, (tw - tm.cpu_s) / std::max(tb - tm.cpu_s, 1e-6));
   }
   for (int k = 0; k < 2; ++k) {
     const Sum& m = sums[k];
     if (!m.n) continue;
-    std::printf("%-10s %4d %12.3f %12.3f %8.2f %12.2f\n", k == 0 ? "sears" : "hc-linear", m.n,
-                1e3 * m.fixed / m.n, 1e3 * m.ssi / m.n, m.ssi / m.fixed, m.worst);
+    std::printf("%-10s %4d %10.3f %10.3f %7.2f %10.3f %10.3f %7.2f %7.2f\n",
+                k == 0 ? "sears" : "lumped", m.n, 1e3 * m.base / m.n, 1e3 * m.with / m.n,
+                m.with / m.base, 1e3 * (m.base - m.motion) / m.n, 1e3 * (m.with - m.motion) / m.n,
+                (m.with - m.motion) / (m.base - m.motion), m.worst);
   }
 }
 
@@ -529,9 +535,30 @@ int main(int argc, char** argv) {
                  std::vector<std::string>(argv + std::min(argc, 7), argv + argc));
     return 0;
   }
-  if (argc > 2 && std::string(argv[2]) == "ssi") {  // case 7 alone
-    ssi_case(src, argc > 3 ? std::stol(argv[3]) : 30, argc > 4 ? std::stoi(argv[4]) : 2,
-             argc > 5 ? argv[5] : "", argc > 6 ? argv[6] : "both");
+  const std::string mode = argc > 2 ? argv[2] : "";
+  if (mode == "ssi" || mode == "svgm" || mode == "svgm-default") {
+    const std::vector<std::string> uniform = {
+        "--ground.apparent_velocity",        "inf", "--ground.coherency", "none",
+        "--sample.ground.apparent_velocity", "none"};
+    const std::vector<std::string> fixed = {
+        "--building1.foundation",       "fixed", "--building2.foundation", "fixed",
+        "--sample.soil_shear_velocity", "none",  "--sample.soil_density",  "none",
+        "--sample.soil_poisson",        "none"};
+    const std::vector<std::string> varying = {"--ground.apparent_velocity", "500",
+                                              "--ground.coherency", "harichandran-vanmarcke-1986"};
+    const long n = argc > 3 ? std::stol(argv[3]) : 30;
+    const int repeat = argc > 4 ? std::stoi(argv[4]) : 2;
+    const std::string only = argc > 5 && std::string(argv[5]) != "all" ? argv[5] : "";
+    const std::string which = argc > 6 ? argv[6] : "both";
+    if (mode == "ssi")
+      compare_case("7. SSI (cone foundations) against fixed bases", src,
+                   "studies/ssi-soft-soil.ini", {}, fixed, n, repeat, only, which);
+    else if (mode == "svgm")
+      compare_case("8. spatially varying ground against one motion under both", src,
+                   "studies/svgm-identical-pair.ini", {}, uniform, n, repeat, only, which);
+    else
+      compare_case("8. the default pair on spatially varying ground against one motion", src,
+                   "studies/fragility-default.ini", varying, {}, n, repeat, only, which);
     return 0;
   }
   if (argc > 2 && std::string(argv[2]) == "collapse")  // case 6 alone

@@ -7,6 +7,7 @@
 #include "motion/motion_processing.hpp"
 #include "motion/motion_reader.hpp"
 #include "motion/spectrum_factory.hpp"
+#include "structure/building_on_base.hpp"
 #include "study/row_options.hpp"
 #include "study/sears_row_options.hpp"
 
@@ -225,7 +226,7 @@ void read_intensity(const Options& opt, CampaignStudy& st) {
     throw opt.invalid("intensity.building",
                       "valid: 1.." + std::to_string(st.buildings()) + " or a name" + names);
   }
-  st.im_period = assemble(st.row.buildings[st.im_building]).periods(0);
+  st.im_period = assemble_on_base(st.row.buildings[st.im_building]).periods(0);
   if (opt.given("intensity.levels") == opt.given("intensity.scale"))
     throw InputError(opt.where("intensity.levels") +
                      ": give either intensity.levels (stripes, in g) or intensity.scale (a "

@@ -54,7 +54,7 @@ struct CampaignStudy : RowStudy {
   // Intensity.
   IntensityMeasure measure = IntensityMeasure::pga;
   int im_building = 0;         ///< 0-based building whose T1 defines Sa(T1)
-  double im_period = 0.0;      ///< T1 of that building [s]
+  double im_period = 0.0;      ///< T1 of that building, on its foundation [s]
   std::vector<double> levels;  ///< stripe levels [m/s^2]; empty: sampled scale factor
   bool has_scale = false;
   Distribution scale;  ///< sampled scale factor on the motion (continuous IM)

@@ -14,6 +14,7 @@
 #include "core/format.hpp"
 #include "io/h5.hpp"
 #include "pound/version.hpp"
+#include "structure/building_on_base.hpp"
 
 namespace pound {
 namespace {
@@ -190,11 +191,12 @@ void write_result_file(const std::string& path, const CampaignStudy& st,
   std::string names;
   for (const auto& b : st.row.buildings) names += (names.empty() ? "" : ", ") + b.name;
   h5::attribute(fid, "/", "building_names", names);
-  // Each building's first mode with the study's fixed (not sampled) properties, for `pound
-  // risk`'s code rules, which then need not read the study again (issue 31).
+  // Each building's first mode, with its foundation and the study's fixed (not sampled)
+  // properties, for `pound risk`'s code rules, which then need not read the study again.
   std::string periods, damping;
   for (const auto& b : st.row.buildings) {
-    periods += (periods.empty() ? "" : ", ") + format_number(assemble(b).periods(0), "%.17g");
+    periods +=
+        (periods.empty() ? "" : ", ") + format_number(assemble_on_base(b).periods(0), "%.17g");
     damping += (damping.empty() ? "" : ", ") + format_number(b.damping_ratio, "%.17g");
   }
   h5::attribute(fid, "/", "first_periods_s", periods);

@@ -9,6 +9,7 @@
 #include "core/error.hpp"
 #include "motion/response_spectrum.hpp"
 #include "sampling/counter_rng.hpp"
+#include "structure/building_on_base.hpp"
 #include "study/ground_options.hpp"
 #include "study/simulation_run.hpp"
 
@@ -103,7 +104,8 @@ SampleOutcome SampleRunner::run(const SampleDraw& d) {
 
     // The ground (issue 28): the motion (matched to the design spectrum, or to the sample's
     // random target; one per building under a coherency model), delayed under each building
-    // by its arrival (wave passage), scaled to the stripe level or by the sampled factor.
+    // by its arrival (wave passage), each made to end at rest when they differ (at_rest.hpp),
+    // scaled to the stripe level or by the sampled factor.
     std::vector<GroundMotion> stations;
     GroundMotion reference;
     if (st_.source == MotionSource::records) {
@@ -117,7 +119,8 @@ SampleOutcome SampleRunner::run(const SampleDraw& d) {
         for (auto& m : g) stations.push_back(m.motion);
       reference = std::move(g.front().motion);
     }
-    const RowGround unscaled = row_ground(sm.ground, reference, stations);
+    const RowGround unscaled =
+        row_ground(sm.ground, reference, stations, st_.source == MotionSource::generated);
     // The intensity of the motion at the base of intensity.building.
     const GroundMotion& base = unscaled.under(st_.im_building).motion();
     double im0;
@@ -125,7 +128,7 @@ SampleOutcome SampleRunner::run(const SampleDraw& d) {
       im0 = base.pga();
     } else {
       // Sa(T1) of the (sampled) building, 5 % damping.
-      const double t1 = assemble(row.buildings[st_.im_building]).periods(0);
+      const double t1 = assemble_on_base(row.buildings[st_.im_building]).periods(0);
       im0 = response_spectrum(base, {t1}, 0.05).psa[0];
     }
     if (!(im0 > 0)) throw NumericalError("the motion has zero intensity");

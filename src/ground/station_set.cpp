@@ -5,6 +5,8 @@
 #include <utility>
 
 #include "core/error.hpp"
+#include "ground/at_rest.hpp"
+#include "ground/ground_trace.hpp"
 #include "ground/wave_passage.hpp"
 #include "motion/motion_processing.hpp"
 #include "motion/response_spectrum.hpp"
@@ -168,16 +170,18 @@ StationSet generate_station_set(const StationSetRequest& request) {
     out.targets.insert(out.targets.end(), own.begin(), own.end());
     std::vector<GroundMotion> row;
     std::vector<MotionReport> reports;
+    for (std::size_t j = 0; j < ns; ++j) row.push_back(delayed(g[j].motion, request.delays[j]));
+    end_at_rest_where_they_differ(row);  // as a campaign's (at_rest.hpp)
     for (std::size_t j = 0; j < ns; ++j) {
-      row.push_back(delayed(g[j].motion, request.delays[j]));
       std::vector<double> psa;
-      calc.compute_psa(row.back().accel, psa);
+      calc.compute_psa(row[j].accel, psa);
       MotionReport r;
       r.match = compare_spectra(psa, own);
-      r.pga = row.back().pga();
-      const GroundKinematics kin = integrate(row.back());  // of the delayed record
-      r.v_end = kin.final_velocity();
-      r.d_end = kin.final_displacement();
+      r.pga = row[j].pga();
+      // The delayed record's end as the solvers integrate it (from rest one sample before the
+      // record, ground_trace.hpp): 0 to round-off when the stations differ (at_rest.hpp).
+      const GroundTrace trace(row[j]);
+      trace.kinematics(trace.duration(), r.v_end, r.d_end);
       r.iterations = g[j].iterations;
       r.attempt = g[j].attempt;
       reports.push_back(r);

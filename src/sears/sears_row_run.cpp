@@ -396,6 +396,7 @@ SearsRowResult SearsRowRun::run() {
       v_prev = v;
     }
     double h = hc;
+    const double t_start = i * dt;  // as the step's start was computed (ag there: see add_energy)
     if (coarse) {
       i += stepping.ratio;
       coarse_step(i * dt);
@@ -415,7 +416,7 @@ SearsRowResult SearsRowRun::run() {
     const double t_next = i * dt;
     current_t = t_next;
     RunRecorder::check_finite(u, t_next, "damped Sears model");
-    if (p.track_energy) add_energy(h, t_next);  // before the ground moves on to t_next
+    if (p.track_energy) add_energy(h, t_start, t_next);  // before the ground moves on to t_next
     ground_at(t_next, gd, gv);
     const double* ag = ground.acc(t_next);
     record_sites(coarse, h, t_next);
@@ -481,12 +482,14 @@ void SearsRowRun::finish() {
 // changes by exactly the work of the averaged forces on the displacement increment):
 // input -du^T M 1 (ag_i + ag_i+1) / 2, damping h v_avg^T C v_avg, contact
 // sum_s (F_i + F_i+1) / 2 (du_L - du_R).
-void SearsRowRun::add_energy(double h, double t_next) {
+void SearsRowRun::add_energy(double h, double t_start, double t_next) {
   const AssembledRow& a = assembled;
   const int m = ground_inputs(ground);
   ag_avg_.resize(m);
   mdu_.assign(m + 1, 0.0);
-  const double* ag0 = ag_at(t_next - h);
+  // ag at the step's start where the step took it: at a record's last sample t_next - h may
+  // round past it, where the record's acceleration drops to 0 (GroundMotion::at).
+  const double* ag0 = ag_at(t_start);
   for (int c = 0; c < m; ++c) ag_avg_[c] = ag0[c];
   const double* ag1 = ag_at(t_next);
   for (int c = 0; c < m; ++c) ag_avg_[c] = 0.5 * (ag_avg_[c] + ag1[c]);

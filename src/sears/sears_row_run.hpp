@@ -82,7 +82,7 @@ class SearsRowRun {
   long lumped_stretch(long i);
   void leave_stretch();
   // Results after a step.
-  void add_energy(double h, double t_next);
+  void add_energy(double h, double t_start, double t_next);  // the step [t_start, t_next]
   void record_sites(bool coarse, double h, double t_next);
   void record_site(int s, bool coarse, double h, double t_next);
   void record_peaks(bool coarse, const double* ag, double t_next, double h);

@@ -9,7 +9,9 @@
 //   /pounding/abs_acceleration [steps, dofs]  m/s^2
 //   /pounding/contact_force [steps, sites] N
 //   /pounding/storey_shear [steps, dofs]   N, shear of the storey below each floor (against the
-//                                          storey drift u_dof - u_below: hysteresis loops)
+//                                          storey drift u_dof - u_below: hysteresis loops; on a
+//                                          flexible foundation minus h theta, issue 29)
+// The columns are the floors: a flexible foundation's sway and rotation are not written.
 //   /free/...                              the same without pounding
 //   /motion/time, /motion/acceleration     s, m/s^2
 // Root attributes: config (resolved study), engine_version, git_revision.

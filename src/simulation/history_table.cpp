@@ -1,5 +1,6 @@
 #include "simulation/history_table.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace pound {
@@ -11,6 +12,7 @@ HistoryLayout history_layout(const BuildingRow& row, const RowSimulation& sim) {
       l.dof_building.push_back(static_cast<int>(b));
       l.dof_floor.push_back(j + 1);
     }
+  l.storeys = assemble(row).storeys;
   for (const auto& s : sim.sites) {
     l.site_pair.push_back(s.pair);
     l.site_floor.push_back(s.floor);
@@ -21,7 +23,8 @@ HistoryLayout history_layout(const BuildingRow& row, const RowSimulation& sim) {
 HistoryTable history_table(const History& h, const HistoryLayout& layout) {
   HistoryTable t;
   t.steps = h.t.size();
-  t.dofs = t.steps ? static_cast<std::size_t>(h.u[0].size()) : 0;
+  // The floors' columns (a foundation's DOFs follow them in u).
+  t.dofs = t.steps ? std::min(static_cast<std::size_t>(h.u[0].size()), layout.dof_floor.size()) : 0;
   t.sites = t.steps ? static_cast<std::size_t>(h.force[0].size()) : 0;
   const std::size_t n = t.steps * t.dofs;
   t.time = h.t;
@@ -36,8 +39,7 @@ HistoryTable history_table(const History& h, const HistoryLayout& layout) {
       t.displacement[k] = h.u[s](i);
       t.abs_acceleration[k] = h.a_abs[s](i);
       t.storey_shear[k] = s < h.shear.size() ? h.shear[s](i) : std::nan("");
-      const bool first_floor = i >= layout.dof_floor.size() || layout.dof_floor[i] == 1;
-      t.storey_drift[k] = first_floor ? h.u[s](i) : h.u[s](i) - h.u[s](i - 1);
+      t.storey_drift[k] = storey_drift(layout.storeys[i], static_cast<int>(i), h.u[s].data());
     }
     for (std::size_t i = 0; i < t.sites; ++i) t.contact_force[s * t.sites + i] = h.force[s](i);
   }

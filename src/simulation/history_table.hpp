@@ -2,7 +2,8 @@
 // The time histories of a row simulation as flat arrays: what `pound simulate --histories`
 // writes (simulation/history_file.hpp) and what the Python module returns with histories=True.
 // Rows are the recorded instants (every accepted step and event), columns the floor DOFs (the
-// floors of building 1, floor 1 first, then building 2, ...) or the contact sites.
+// floors of building 1, floor 1 first, then building 2, ...) or the contact sites. A flexible
+// foundation's sway and rotation (issue 29) are DOFs of the run but not columns here.
 #include <cstddef>
 #include <vector>
 
@@ -17,6 +18,8 @@ struct HistoryLayout {
   std::vector<int> dof_floor;     ///< 1-based floor of each DOF column
   std::vector<int> site_pair;     ///< 0-based pair of each site column
   std::vector<int> site_floor;    ///< 1-based floor of each site column
+  /// The assembled row's storey of each DOF (for the drifts; not written).
+  std::vector<RowStorey> storeys;
 };
 HistoryLayout history_layout(const BuildingRow& row, const RowSimulation& sim);
 
@@ -29,7 +32,9 @@ struct HistoryTable {
   std::vector<double> contact_force;     ///< [steps x sites], N
   std::vector<double> storey_shear;      ///< shear of the storey below each floor, N (NaN when
                                          ///< the run kept none)
-  std::vector<double> storey_drift;      ///< drift of that storey, u_j - u_{j-1} (u_0 = 0), m
+  /// Drift of that storey, its deformation: u_j - u_{j-1} (u_0 = 0) on a fixed base, minus the
+  /// base's rotation times the storey's height on a flexible one (u_0 the base's sway), m.
+  std::vector<double> storey_drift;
 };
 HistoryTable history_table(const History& h, const HistoryLayout& layout);
 

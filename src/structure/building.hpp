@@ -53,7 +53,8 @@ struct Building {
   std::vector<double> gravity_loads;  ///< gravity load per floor [N]; empty: m_j g
   DampingStiffness damping_stiffness = DampingStiffness::initial;
   /// The base on the soil (issue 29, structure/foundation.hpp): fixed (the default, the base
-  /// moves with the ground), springs or a cone. Not simulated yet: only fixed runs.
+  /// moves with the ground), springs or a cone; a flexible one adds the base's sway and rotation
+  /// to the row's DOFs (structure/building_on_base.hpp).
   Foundation foundation;
 
   int floors() const { return static_cast<int>(masses.size()); }

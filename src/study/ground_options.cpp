@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/format.hpp"
+#include "ground/at_rest.hpp"
 #include "ground/wave_passage.hpp"
 
 namespace pound {
@@ -148,13 +149,14 @@ void refuse_coherency_with_records(const Options& opt, const GroundSpec& g) {
 }
 
 RowGround row_ground(const GroundSpec& g, const GroundMotion& reference,
-                     const std::vector<GroundMotion>& own) {
+                     const std::vector<GroundMotion>& own, bool generated) {
   const std::vector<double> delay = g.delays();
   std::vector<GroundMotion> motions;
   for (std::size_t b = 0; b < delay.size(); ++b) {
     const GroundMotion& m = b < own.size() && !own[b].accel.empty() ? own[b] : reference;
     motions.push_back(delay[b] > 0.0 ? delayed(m, delay[b]) : m);
   }
+  if (generated) end_at_rest_where_they_differ(motions);
   return RowGround::per_building(motions);
 }
 

@@ -50,7 +50,10 @@ void refuse_coherency_with_records(const Options& opt, const GroundSpec& g);
 /// The row's ground: building b on its own record (own[b], when given) or on `reference`, each
 /// delayed by its arrival delay (wave passage); buildings on the same motion and delay share a
 /// channel. `own` is empty or has one entry per building (empty records: the reference).
+/// `generated`: the motions are the engine's own (a campaign's generated stations), and when
+/// they differ between buildings each is made to end at rest (ground/at_rest.hpp); recorded
+/// motions are used as they are.
 RowGround row_ground(const GroundSpec& g, const GroundMotion& reference,
-                     const std::vector<GroundMotion>& own = {});
+                     const std::vector<GroundMotion>& own = {}, bool generated = false);
 
 }  // namespace pound

@@ -119,7 +119,6 @@ TEST(FoundationKeys, ABadValueGetsTheSameLineFromSimulateAndCampaign) {
   }
 }
 
-// Not simulated yet: stopped before any simulation with one clear line, never ignored.
 // A good foundation is simulated (issue 29): pound simulate --json gives each building's
 // periods with its foundation and the foundation's constants in SI units, and its base's peak
 // sway and rotation.

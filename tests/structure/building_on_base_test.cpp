@@ -1,0 +1,242 @@
+// A building on its foundation (issue 29, structure/building_on_base.hpp): the periods with the
+// foundation against closed forms and against a model written here independently.
+// - An SDOF (m, k, h) on massless springs has the Veletsos & Meek (1974) period
+//   T~ = T sqrt(1 + k / K_x + k h^2 / K_theta) (physics.md section 5a; docs/ssi.md).
+// - With the base's mass m_0 and rotary inertia I_0 and the floors' own J_j, the periods are
+//   those of the classic model in coordinates RELATIVE to the base (the floors' deformations
+//   u_j, the base's sway u0 and rotation theta; e.g. Wolf 1985, Dynamic Soil-Structure
+//   Interaction, Prentice Hall): each floor's total displacement relative to the free-field
+//   ground is u_j + u0 + H_j theta, so that
+//       M = [ diag(m)    m         m.H                        ]
+//           [ m^T        sum m + m_0   sum m H                ]
+//           [ (m.H)^T    sum m H   sum m H^2 + I_0 + sum J    ],
+//       K = blockdiag(K_fixed, K_x, K_theta),
+//   the coordinates of the library (U_j = u_j + u0 + H_j theta) being a linear change of these.
+//   A massless u0 or theta makes this M singular: the periods are 2 pi sqrt(mu) for the non-zero
+//   eigenvalues mu of K^-1 M (infinite frequencies dropped), as many as the library's DOFs with
+//   mass.
+#include "structure/building_on_base.hpp"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "../support/buildings.hpp"
+#include "structure/building_row.hpp"
+
+namespace pound {
+namespace {
+
+using test::uniform_building;
+
+Foundation springs(double kx, double kr, double m0 = 0.0, double i0 = 0.0,
+                   std::vector<double> j = {}) {
+  Foundation f;
+  f.kind = FoundationKind::springs;
+  f.sway_stiffness = kx;
+  f.rocking_stiffness = kr;
+  f.sway_damping = 1e5;  // the dashpots do not enter the undamped periods
+  f.rocking_damping = 1e7;
+  f.foundation_mass = m0;
+  f.foundation_inertia = i0;
+  f.floor_inertias = std::move(j);
+  return f;
+}
+
+// The undamped periods of the relative model above, longest first [s].
+Eigen::VectorXd relative_model_periods(const Building& b) {
+  const FoundationConstants f = foundation_constants(b.foundation);
+  const int n = b.floors(), m = n + 2, sway = n, rot = n + 1;
+  Eigen::MatrixXd M = Eigen::MatrixXd::Zero(m, m), K = Eigen::MatrixXd::Zero(m, m);
+  double H = 0.0, J = 0.0;
+  for (int j = 0; j < n; ++j) {
+    H += b.storey_heights[j];
+    const double mj = b.masses[j];
+    M(j, j) = mj;
+    M(j, sway) = M(sway, j) = mj;
+    M(j, rot) = M(rot, j) = mj * H;
+    M(sway, sway) += mj;
+    M(sway, rot) += mj * H;
+    M(rot, rot) += mj * H * H;
+    J += j < static_cast<int>(f.floor_inertias.size()) ? f.floor_inertias[j] : 0.0;
+    // The fixed-base shear building's stiffness: storey j between floor j-1 (or the base) and j.
+    K(j, j) += b.stiffnesses[j];
+    if (j > 0) {
+      K(j - 1, j - 1) += b.stiffnesses[j];
+      K(j, j - 1) -= b.stiffnesses[j];
+      K(j - 1, j) -= b.stiffnesses[j];
+    }
+  }
+  M(rot, sway) = M(sway, rot);
+  M(sway, sway) += f.foundation_mass;
+  M(rot, rot) += f.foundation_inertia + J;  // (the cone's trapped soil is in foundation_inertia)
+  K(sway, sway) = f.sway_stiffness;
+  K(rot, rot) = f.rocking_stiffness;
+  // mu = 1 / omega^2 are the eigenvalues of K^-1/2 M K^-1/2 (K positive definite).
+  Eigen::LLT<Eigen::MatrixXd> llt(K);
+  const Eigen::MatrixXd L = llt.matrixL();
+  const Eigen::MatrixXd Li = L.inverse();
+  const Eigen::MatrixXd A = Li * M * Li.transpose();
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(A);
+  const Eigen::VectorXd mu = eig.eigenvalues();  // ascending
+  std::vector<double> periods;
+  for (int i = m - 1; i >= 0; --i)
+    if (mu(i) > 1e-13 * mu(m - 1)) periods.push_back(2 * M_PI * std::sqrt(mu(i)));
+  return Eigen::Map<Eigen::VectorXd>(periods.data(), static_cast<int>(periods.size()));
+}
+
+std::string sci(double x) {
+  char s[32];
+  std::snprintf(s, sizeof s, "%.3g", x);
+  return s;
+}
+
+double worst_relative(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+  double w = 0.0;
+  for (int i = 0; i < a.size(); ++i) w = std::max(w, std::fabs(a(i) / b(i) - 1));
+  return w;
+}
+
+// Veletsos & Meek (1974): an oscillator of mass m = 100 t, stiffness k = 4e7 N/m (T = 0.3142 s)
+// and height h = 3 m on massless springs has one period, T sqrt(1 + k / K_x + k h^2 / K_theta),
+// for flexibilities k / K_x and k h^2 / K_theta from 1e-3 to 3 (the periods from
+// assemble_on_base and from the row's assembly), to 1e-10 (2.2e-16 measured).
+TEST(BuildingOnBase, SdofOnMasslessSpringsHasTheVeletsosMeekPeriod) {
+  const double m = 1e5, k = 4e7, h = 3.0;
+  const double T = 2 * M_PI * std::sqrt(m / k);
+  const std::vector<std::pair<double, double>> flex = {{0.1, 0.2}, {1e-3, 1.0}, {1.0, 1e-3},
+                                                       {0.5, 0.5}, {3.0, 2.0},  {0.02, 0.05}};
+  double worst = 0.0;
+  for (const auto& [sway, rocking] : flex) {
+    SCOPED_TRACE(std::to_string(sway) + ", " + std::to_string(rocking));
+    Building b = uniform_building(1, m, k);
+    b.foundation = springs(k / sway, k * h * h / rocking);
+    const double expected = T * std::sqrt(1 + sway + rocking);
+    const BaseMatrices bm = assemble_on_base(b);
+    ASSERT_TRUE(bm.flexible);
+    ASSERT_EQ(bm.dofs(), 3);
+    ASSERT_EQ(bm.periods.size(), 1);  // the massless sway and rotation have no mode of their own
+    EXPECT_NEAR(bm.periods(0), expected, 1e-10 * expected);
+    BuildingRow row;
+    row.buildings = {uniform_building(2, m, k), b};
+    row.gaps = {{0.01}};
+    const AssembledRow a = assemble(row);
+    ASSERT_EQ(a.periods.size(), 2u);
+    EXPECT_EQ(a.periods[1](0), bm.periods(0));
+    EXPECT_EQ(a.sway[0], -1);
+    EXPECT_EQ(a.sway[1], 3);
+    EXPECT_EQ(a.rot[1], 4);
+    EXPECT_TRUE(a.massless[3] && a.massless[4]);
+    worst = std::max(worst, std::fabs(bm.periods(0) / expected - 1));
+  }
+  RecordProperty("worst_relative_difference", sci(worst));
+}
+
+// With mass: an SDOF with m_0, I_0 and J (three modes), with m_0 only or I_0 only (two: the
+// other base DOF is massless), and buildings of 2 and 3 storeys (unequal masses, stiffnesses and
+// heights) with every inertia, some of them, or none (n modes), against the relative model, to
+// 1e-10 (1.7e-15 measured).
+TEST(BuildingOnBase, PeriodsWithMassiveBaseMatchTheRelativeModel) {
+  struct Case {
+    const char* name;
+    std::function<Building()> make;
+  };
+  const double m = 1e5, k = 4e7;
+  auto sdof = [&](Foundation f) {
+    Building b = uniform_building(1, m, k);
+    b.storey_heights = {3.5};
+    b.foundation = std::move(f);
+    return b;
+  };
+  auto three = [&](Foundation f) {
+    Building b;
+    b.masses = {1.2e5, 1.0e5, 0.7e5};
+    b.stiffnesses = {9e7, 7e7, 4e7};
+    b.storey_heights = {4.0, 3.2, 3.0};
+    b.foundation = std::move(f);
+    return b;
+  };
+  const std::vector<Case> cases = {
+      {"sdof m0 I0 J", [&] { return sdof(springs(2e8, 3e10, 4e4, 6e5, {2e5})); }},
+      {"sdof m0", [&] { return sdof(springs(2e8, 3e10, 4e4)); }},
+      {"sdof I0", [&] { return sdof(springs(2e8, 3e10, 0.0, 6e5)); }},
+      {"sdof J", [&] { return sdof(springs(1e8, 1e10, 0.0, 0.0, {5e5})); }},
+      {"sdof heavy soft base", [&] { return sdof(springs(3e7, 2e9, 3e5, 5e6, {1e6})); }},
+      {"2 storeys m0 I0 J",
+       [&] {
+         Building b = uniform_building(2, 8e4, 6e7);
+         b.foundation = springs(5e8, 8e10, 1.5e5, 2e6, {4e5, 3e5});
+         return b;
+       }},
+      {"3 storeys m0 I0 J",
+       [&] {
+         return three(springs(6e8, 2e11, 2e5, 3e6, {1e6, 8e5, 6e5}));
+       }},
+      {"3 storeys m0", [&] { return three(springs(6e8, 2e11, 2e5)); }},
+      {"3 storeys massless", [&] { return three(springs(6e8, 2e11)); }},
+  };
+  double worst = 0.0;
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.name);
+    const Building b = c.make();
+    const BaseMatrices bm = assemble_on_base(b);
+    const Eigen::VectorXd expected = relative_model_periods(b);
+    int with_mass = 0;
+    for (int i = 0; i < bm.dofs(); ++i) with_mass += bm.M(i, i) > 0.0;
+    ASSERT_EQ(bm.periods.size(), with_mass);
+    ASSERT_EQ(expected.size(), with_mass);
+    for (int i = 0; i < expected.size(); ++i)
+      EXPECT_NEAR(bm.periods(i), expected(i), 1e-10 * expected(i)) << "mode " << i + 1;
+    // The foundation lengthens the fixed base's periods (Rayleigh's interlacing).
+    const BuildingMatrices fixed = assemble(b);
+    EXPECT_GT(bm.periods(0), fixed.periods(0));
+    worst = std::max(worst, worst_relative(bm.periods, expected));
+  }
+  RecordProperty("worst_relative_difference", sci(worst));
+}
+
+// A cone above nu = 1/3 rocks the soil trapped under the footing, Delta M_theta =
+// 0.3 pi (nu - 1/3) rho r^5 (Wolf 1994; physics.md section 5a), with the base: the periods are
+// those of the relative model whose rotary inertia is I_0 + Delta M_theta + sum J, and differ
+// from those without the trapped soil. Below 1/3 there is none.
+TEST(BuildingOnBase, ConeAboveOneThirdRocksTheTrappedSoil) {
+  for (double nu : {0.25, 0.45}) {
+    SCOPED_TRACE(nu);
+    Building b = uniform_building(3, 3e5, 4e8);
+    b.foundation.kind = FoundationKind::cone;
+    b.foundation.radius = 5.0;
+    b.foundation.soil_shear_velocity = 120.0;
+    b.foundation.soil_density = 1800.0;
+    b.foundation.soil_poisson = nu;
+    b.foundation.foundation_mass = 2e5;
+    b.foundation.foundation_inertia = 1e6;
+    b.foundation.floor_inertias.assign(3, 2e6);
+    const double trapped =
+        nu > 1.0 / 3.0 ? 0.3 * M_PI * (nu - 1.0 / 3.0) * 1800.0 * std::pow(5.0, 5) : 0.0;
+    const FoundationConstants f = foundation_constants(b.foundation);
+    EXPECT_NEAR(f.trapped_rocking_inertia, trapped, 1e-12 * (trapped + 1.0));
+    const BaseMatrices bm = assemble_on_base(b);
+    EXPECT_NEAR(bm.M(4, 4), 1e6 + trapped + 6e6, 1e-12 * bm.M(4, 4));
+    const Eigen::VectorXd expected = relative_model_periods(b);
+    ASSERT_EQ(bm.periods.size(), 5);
+    ASSERT_EQ(expected.size(), 5);
+    for (int i = 0; i < 5; ++i)
+      EXPECT_NEAR(bm.periods(i), expected(i), 1e-10 * expected(i)) << "mode " << i + 1;
+    if (trapped > 0.0) {
+      // Without the trapped soil (springs of the same constants): other periods.
+      Building s = b;
+      s.foundation = springs(f.sway_stiffness, f.rocking_stiffness, 2e5, 1e6, {2e6, 2e6, 2e6});
+      const BaseMatrices without = assemble_on_base(s);
+      EXPECT_GT(worst_relative(bm.periods, without.periods), 1e-4);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace pound
