@@ -14,53 +14,6 @@ namespace {
 
 using Complex = std::complex<double>;
 
-// One real FFT length's buffers and plans (plans made and destroyed under the planner lock).
-class RealFft {
- public:
-  explicit RealFft(std::size_t n) : n_(n) {
-    std::lock_guard<std::mutex> lock(fftw_planner_mutex());
-    real_ = fftw_alloc_real(n);
-    spec_ = fftw_alloc_complex(n / 2 + 1);
-    if (!real_ || !spec_) throw std::bad_alloc();
-    r2c_ = fftw_plan_dft_r2c_1d(int(n), real_, spec_, FFTW_ESTIMATE);
-    c2r_ = fftw_plan_dft_c2r_1d(int(n), spec_, real_, FFTW_ESTIMATE);
-    if (!r2c_ || !c2r_) throw std::runtime_error("achieved coherency: no FFTW plan");
-  }
-  ~RealFft() {
-    std::lock_guard<std::mutex> lock(fftw_planner_mutex());
-    if (r2c_) fftw_destroy_plan(r2c_);
-    if (c2r_) fftw_destroy_plan(c2r_);
-    if (real_) fftw_free(real_);
-    if (spec_) fftw_free(spec_);
-  }
-  RealFft(const RealFft&) = delete;
-  RealFft& operator=(const RealFft&) = delete;
-  std::size_t bins() const { return n_ / 2 + 1; }
-  // The spectrum of `a` zero-padded to n.
-  void forward(const std::vector<double>& a, std::vector<Complex>& x) {
-    std::fill(real_, real_ + n_, 0.0);
-    std::copy(a.begin(), a.begin() + long(std::min(a.size(), n_)), real_);
-    fftw_execute(r2c_);
-    x.resize(bins());
-    for (std::size_t b = 0; b < bins(); ++b) x[b] = Complex(spec_[b][0], spec_[b][1]);
-  }
-  // The real sequence of the Hermitian half-spectrum c (unnormalised).
-  std::vector<double> inverse(const std::vector<Complex>& c) {
-    for (std::size_t b = 0; b < bins(); ++b) {
-      spec_[b][0] = c[b].real();
-      spec_[b][1] = c[b].imag();
-    }
-    fftw_execute(c2r_);
-    return std::vector<double>(real_, real_ + n_);
-  }
-
- private:
-  std::size_t n_;
-  double* real_ = nullptr;
-  fftw_complex* spec_ = nullptr;
-  fftw_plan r2c_ = nullptr, c2r_ = nullptr;
-};
-
 // The peak of the circular correlation r (index t: lag t dt, t > n/2: lag (t - n) dt) within
 // +- max_lag samples, refined by a parabola [s].
 double peak_lag(const std::vector<double>& r, double dt, std::size_t max_lag) {

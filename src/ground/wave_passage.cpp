@@ -15,38 +15,12 @@
 namespace pound {
 namespace {
 
-// FFTW buffers and plans of one length, released (plans under the planner lock) on exit.
-struct Fft {
-  std::size_t n = 0;
-  double* real = nullptr;
-  fftw_complex* spec = nullptr;
-  fftw_plan r2c = nullptr, c2r = nullptr;
-  explicit Fft(std::size_t length) : n(length) {
-    std::lock_guard<std::mutex> lock(fftw_planner_mutex());
-    real = fftw_alloc_real(n);
-    spec = fftw_alloc_complex(n / 2 + 1);
-    if (!real || !spec) throw std::bad_alloc();
-    r2c = fftw_plan_dft_r2c_1d(int(n), real, spec, FFTW_ESTIMATE);
-    c2r = fftw_plan_dft_c2r_1d(int(n), spec, real, FFTW_ESTIMATE);
-    if (!r2c || !c2r) throw std::runtime_error("delayed: no FFTW plan");
-  }
-  ~Fft() {
-    std::lock_guard<std::mutex> lock(fftw_planner_mutex());
-    if (r2c) fftw_destroy_plan(r2c);
-    if (c2r) fftw_destroy_plan(c2r);
-    if (real) fftw_free(real);
-    if (spec) fftw_free(spec);
-  }
-  Fft(const Fft&) = delete;
-  Fft& operator=(const Fft&) = delete;
-};
-
 // The record shifted later by `fraction` of a sample (0 < fraction < 1), band-limited:
 // X(w) exp(-i w fraction dt) on a transform of at least 2 (n + 1) points, n + 1 samples kept
 // (the shifted record ends between samples n - 1 and n).
 std::vector<double> fractional_shift(const std::vector<double>& a, double fraction) {
   const std::size_t n = a.size(), out_n = n + 1;
-  Fft f(good_fft_size(2 * out_n));
+  RealFft f(good_fft_size(2 * out_n));
   std::copy(a.begin(), a.end(), f.real);
   std::fill(f.real + n, f.real + f.n, 0.0);
   fftw_execute(f.r2c);

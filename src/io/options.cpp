@@ -261,6 +261,19 @@ std::vector<double> Options::get_doubles(const std::string& key) const {
   return with_expectation(key, [&] { return parse_number_list(text, where(key)); });
 }
 
+std::vector<double> Options::get_per_floor(const std::string& key, std::size_t n,
+                                           const std::string& what,
+                                           const std::function<bool(double)>& valid) const {
+  std::vector<double> v = get_doubles(key);
+  if (v.size() == 1 && n > 1) v.assign(n, v[0]);
+  if (v.size() != n)
+    throw invalid(key, "expected " + std::to_string(n) + " values (one per floor), got " +
+                           std::to_string(v.size()));
+  for (double x : v)
+    if (!valid(x)) throw invalid(key, what);
+  return v;
+}
+
 double Options::get_positive(const std::string& key) const {
   const double v = get_double(key);
   if (!(v > 0)) throw invalid(key, "must be > 0");

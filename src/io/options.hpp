@@ -6,6 +6,7 @@
 //
 // A key may contain '#', standing for a positive integer: "building#.masses" declares
 // building1.masses, building2.masses, ...
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -49,6 +50,10 @@ class Options {
   /// file's folder, one given on the command line relative to the working directory.
   std::string get_path(const std::string& key) const;
   std::vector<double> get_doubles(const std::string& key) const;
+  /// A list of one value for each of n floors (or storeys), or one value for all; each must
+  /// pass `valid`, else invalid(key, what); a list of another length names n and its length.
+  std::vector<double> get_per_floor(const std::string& key, std::size_t n, const std::string& what,
+                                    const std::function<bool(double)>& valid) const;
 
   /// Doubles with a check: lo < x (or lo <= x) and x <= hi; `what` names the quantity.
   double get_positive(const std::string& key) const;

@@ -83,14 +83,8 @@ constexpr FoundationKey kKeys[] = {
 
 // floor_inertias: one value for every floor or one per floor, each >= 0.
 std::vector<double> floor_inertias(const Options& opt, const std::string& key, std::size_t n) {
-  std::vector<double> v = opt.get_doubles(key);
-  if (v.size() == 1 && n > 1) v.assign(n, v[0]);
-  if (v.size() != n)
-    throw opt.invalid(key, "expected " + std::to_string(n) + " values (one per floor), got " +
-                               std::to_string(v.size()));
-  for (double x : v)
-    if (!(x >= 0.0)) throw opt.invalid(key, "valid: floor rotary inertias >= 0 kg m^2");
-  return v;
+  return opt.get_per_floor(key, n, "valid: floor rotary inertias >= 0 kg m^2",
+                           [](double x) { return x >= 0.0; });
 }
 
 }  // namespace

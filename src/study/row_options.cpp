@@ -148,14 +148,7 @@ bool parse_bool(const Options& opt, const std::string& key) {
 template <class Valid>
 std::vector<double> storey_list(const Options& opt, const std::string& key, std::size_t n,
                                 const std::string& what, Valid valid) {
-  std::vector<double> v = opt.get_doubles(key);
-  if (v.size() == 1 && n > 1) v.assign(n, v[0]);
-  if (v.size() != n)
-    throw opt.invalid(key, "expected " + std::to_string(n) + " values (one per floor), got " +
-                               std::to_string(v.size()));
-  for (double x : v)
-    if (!valid(x)) throw opt.invalid(key, what);
-  return v;
+  return opt.get_per_floor(key, n, what, valid);
 }
 
 std::vector<double> positive_list(const Options& opt, const std::string& key, std::size_t n,
