@@ -482,7 +482,10 @@ def plot_hysteresis(hist_path, out, names):
             return
         bld = f["row/dof_building"][:]
         floor = f["row/dof_floor"][:]
-        runs = [(case, f[f"{case}/displacement"][:], f[f"{case}/storey_shear"][:])
+        # The storey's deformation as written (on a flexible foundation the chord minus h
+        # theta); files written before it carry only the floors' displacements.
+        runs = [(case, f[f"{case}/storey_drift"][:] if f"{case}/storey_drift" in f else None,
+                 f[f"{case}/displacement"][:], f[f"{case}/storey_shear"][:])
                 for case in ("pounding", "free")
                 if f"{case}/storey_shear" in f and f"{case}/displacement" in f]
     buildings = np.unique(bld)
@@ -492,9 +495,10 @@ def plot_hysteresis(hist_path, out, names):
         if not first.size:
             continue
         dof = first[0]
-        for case, u, shear in runs:
+        for case, drift, u, shear in runs:
             pounding = case == "pounding"
-            ax.plot(1000 * storey_drift(u, bld, floor, dof), shear[:, dof] / 1000,
+            d = drift[:, dof] if drift is not None else storey_drift(u, bld, floor, dof)
+            ax.plot(1000 * d, shear[:, dof] / 1000,
                     color="tab:red" if pounding else "tab:blue", lw=1.0 if pounding else 0.9,
                     ls="-" if pounding else "--", alpha=0.9 if pounding else 0.7,
                     label="pounding" if pounding else "no pounding")

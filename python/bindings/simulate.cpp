@@ -24,6 +24,7 @@ struct Outcome {
   bool histories = false;
   HistoryLayout layout;
   HistoryTable pounding, free;
+  GroundTable ground;
   std::vector<double> motion_time, motion_accel;
   double prepare_s = 0.0, run_s = 0.0, json_s = 0.0;
 };
@@ -36,6 +37,8 @@ py::dict history_arrays(const HistoryTable& t) {
   d["storey_shear"] = to_array(t.storey_shear, t.steps, t.dofs);
   d["abs_acceleration"] = to_array(t.abs_acceleration, t.steps, t.dofs);
   d["contact_force"] = to_array(t.contact_force, t.steps, t.sites);
+  d["foundation_sway"] = to_array(t.foundation_sway, t.steps, t.buildings);
+  d["foundation_rotation"] = to_array(t.foundation_rotation, t.steps, t.buildings);
   return d;
 }
 
@@ -50,6 +53,11 @@ py::dict histories_of(const Outcome& o) {
   motion["time"] = to_array(o.motion_time);
   motion["acceleration"] = to_array(o.motion_accel);
   h["motion"] = motion;
+  py::dict ground;
+  ground["time"] = to_array(o.ground.time);
+  ground["acceleration"] = to_array(o.ground.acceleration, o.ground.samples, o.ground.buildings);
+  ground["displacement"] = to_array(o.ground.displacement, o.ground.samples, o.ground.buildings);
+  h["ground"] = ground;
   return h;
 }
 
@@ -73,6 +81,7 @@ Outcome simulate_outcome(const std::vector<std::string>& args, const RecordValue
     o.layout = history_layout(setup.row, run.sim);
     o.pounding = history_table(run.sim.pounding.history, o.layout);
     o.free = history_table(run.sim.free.history, o.layout);
+    o.ground = ground_table(setup.ground);
     const GroundMotion& m = setup.motion;
     o.motion_time.resize(m.accel.size());
     for (std::size_t i = 0; i < m.accel.size(); ++i) o.motion_time[i] = i * m.dt;

@@ -70,9 +70,11 @@ def simulate(study, motion=None, histories=False, **overrides):
     histories: also return, under "histories", numpy arrays of both runs ("pounding", "free":
         "time" [s], "displacement" [m], "storey_drift" [m], "storey_shear" [N],
         "abs_acceleration" [m/s2] with a column per floor, "contact_force" [N] with a column
-        per contact site), the columns' "dof_building", "dof_floor", "site_pair", "site_floor",
-        and the "motion" ("time", "acceleration"): what ``--histories FILE.h5`` writes, plus
-        the storey drifts.
+        per contact site, "foundation_sway" [m] and "foundation_rotation" [rad] with a column
+        per building, 0 on a fixed base), the columns' "dof_building", "dof_floor",
+        "site_pair", "site_floor", the "motion" ("time", "acceleration": the study's record)
+        and the "ground" under each building ("time" [s], "acceleration" [m/s2] and
+        "displacement" [m], a column per building): what ``--histories FILE.h5`` writes.
     overrides: study keys as on the command line, winning over the study: contact__e=0.5 or
         **{"contact.e": 0.5}, building1__hysteresis="imk", dt=1e-5, ...
 

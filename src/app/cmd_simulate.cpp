@@ -114,7 +114,8 @@ int run_simulate(int argc, const char* const* argv) {
   if (setup.is_sears)
     std::fprintf(stderr, "pound simulate: damped Sears model, step %.3g s\n", run.sears_dt_s);
   if (setup.options.record_history)
-    write_histories(opt.get_string("histories"), setup.row, motion, run.sim, opt.resolved_text());
+    write_histories(opt.get_string("histories"), setup.row, motion, setup.ground, run.sim,
+                    opt.resolved_text());
   if (opt.flag("json"))
     std::cout << simulation_json(setup.row, run) << "\n";
   else

@@ -17,12 +17,18 @@ void write_run(hid_t f, const std::string& group, const History& h, const Histor
   // Shear of the storey below each floor (storey j joins floor j-1 and floor j): plotted
   // against the storey drift it gives the hysteresis loops.
   h5::write(f, group + "/storey_shear", t.storey_shear, t.steps, t.dofs, "N");
+  // The storey's deformation (the drift the storey law sees; on a flexible foundation the chord
+  // minus h theta) and each base's sway and rotation (0 on a fixed base).
+  h5::write(f, group + "/storey_drift", t.storey_drift, t.steps, t.dofs, "m");
+  h5::write(f, group + "/foundation_sway", t.foundation_sway, t.steps, t.buildings, "m");
+  h5::write(f, group + "/foundation_rotation", t.foundation_rotation, t.steps, t.buildings, "rad");
 }
 
 }  // namespace
 
 void write_histories(const std::string& path, const BuildingRow& row, const GroundMotion& motion,
-                     const RowSimulation& sim, const std::string& config_text) {
+                     const RowGround& ground, const RowSimulation& sim,
+                     const std::string& config_text) {
   AtomicPath out(path);
   {
     h5::File f(out.temp());
@@ -37,6 +43,10 @@ void write_histories(const std::string& path, const BuildingRow& row, const Grou
     for (std::size_t i = 0; i < t.size(); ++i) t[i] = i * motion.dt;
     h5::write(f.id(), "/motion/time", t, t.size(), 0, "s");
     h5::write(f.id(), "/motion/acceleration", motion.accel, t.size(), 0, "m/s^2");
+    const GroundTable g = ground_table(ground);
+    h5::write(f.id(), "/ground/time", g.time, g.samples, 0, "s");
+    h5::write(f.id(), "/ground/acceleration", g.acceleration, g.samples, g.buildings, "m/s^2");
+    h5::write(f.id(), "/ground/displacement", g.displacement, g.samples, g.buildings, "m");
     h5::attribute(f.id(), "/", "config", config_text);
     h5::attribute(f.id(), "/", "engine_version", kVersion);
     h5::attribute(f.id(), "/", "git_revision", kGitRevision);

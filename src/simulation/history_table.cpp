@@ -12,7 +12,10 @@ HistoryLayout history_layout(const BuildingRow& row, const RowSimulation& sim) {
       l.dof_building.push_back(static_cast<int>(b));
       l.dof_floor.push_back(j + 1);
     }
-  l.storeys = assemble(row).storeys;
+  const AssembledRow a = assemble(row);
+  l.storeys = a.storeys;
+  l.sway_dof = a.sway;
+  l.rotation_dof = a.rot;
   for (const auto& s : sim.sites) {
     l.site_pair.push_back(s.pair);
     l.site_floor.push_back(s.floor);
@@ -43,7 +46,38 @@ HistoryTable history_table(const History& h, const HistoryLayout& layout) {
     }
     for (std::size_t i = 0; i < t.sites; ++i) t.contact_force[s * t.sites + i] = h.force[s](i);
   }
+  t.buildings = layout.sway_dof.size();
+  t.foundation_sway.assign(t.steps * t.buildings, 0.0);
+  t.foundation_rotation.assign(t.steps * t.buildings, 0.0);
+  for (std::size_t s = 0; s < t.steps; ++s)
+    for (std::size_t b = 0; b < t.buildings; ++b) {
+      const int sw = layout.sway_dof[b], rt = layout.rotation_dof[b];
+      if (sw >= 0) t.foundation_sway[s * t.buildings + b] = h.u[s](sw);
+      if (rt >= 0) t.foundation_rotation[s * t.buildings + b] = h.u[s](rt);
+    }
   return t;
+}
+
+GroundTable ground_table(const RowGround& ground) {
+  GroundTable g;
+  g.buildings = static_cast<std::size_t>(ground.buildings());
+  const double dt = ground.dt();
+  if (!(dt > 0.0) || g.buildings == 0) return g;
+  g.samples = static_cast<std::size_t>(std::llround(ground.duration() / dt)) + 1;
+  g.time.resize(g.samples);
+  g.acceleration.resize(g.samples * g.buildings);
+  g.displacement.resize(g.samples * g.buildings);
+  for (std::size_t i = 0; i < g.samples; ++i) {
+    const double t = static_cast<double>(i) * dt;
+    g.time[i] = t;
+    for (std::size_t b = 0; b < g.buildings; ++b) {
+      const GroundTrace& tr = ground.under(static_cast<int>(b));
+      const std::vector<double>& ag = tr.motion().accel;  // the samples themselves, 0 after
+      g.acceleration[i * g.buildings + b] = i < ag.size() ? ag[i] : 0.0;
+      g.displacement[i * g.buildings + b] = tr.disp(t);
+    }
+  }
+  return g;
 }
 
 }  // namespace pound

@@ -3,10 +3,12 @@
 // writes (simulation/history_file.hpp) and what the Python module returns with histories=True.
 // Rows are the recorded instants (every accepted step and event), columns the floor DOFs (the
 // floors of building 1, floor 1 first, then building 2, ...) or the contact sites. A flexible
-// foundation's sway and rotation (issue 29) are DOFs of the run but not columns here.
+// foundation's sway and rotation (issue 29) are tables of their own, a column per building, and
+// so is the ground under each building (issue 28).
 #include <cstddef>
 #include <vector>
 
+#include "ground/row_ground.hpp"
 #include "simulation/simulate_row.hpp"
 #include "structure/building_row.hpp"
 
@@ -20,6 +22,8 @@ struct HistoryLayout {
   std::vector<int> site_floor;    ///< 1-based floor of each site column
   /// The assembled row's storey of each DOF (for the drifts; not written).
   std::vector<RowStorey> storeys;
+  /// Per building the DOF of its base's sway and rotation, -1 on a fixed base (not written).
+  std::vector<int> sway_dof, rotation_dof;
 };
 HistoryLayout history_layout(const BuildingRow& row, const RowSimulation& sim);
 
@@ -35,7 +39,21 @@ struct HistoryTable {
   /// Drift of that storey, its deformation: u_j - u_{j-1} (u_0 = 0) on a fixed base, minus the
   /// base's rotation times the storey's height on a flexible one (u_0 the base's sway), m.
   std::vector<double> storey_drift;
+  /// [steps x buildings]: each base's sway u0, m, relative to the free-field ground under it,
+  /// and rotation theta, rad (physics.md section 5a); 0 on a fixed base.
+  std::size_t buildings = 0;
+  std::vector<double> foundation_sway, foundation_rotation;
 };
 HistoryTable history_table(const History& h, const HistoryLayout& layout);
+
+/// The ground under each building at the record's samples, row-major [samples x buildings].
+struct GroundTable {
+  std::size_t samples = 0, buildings = 0;
+  std::vector<double> time;          ///< [samples], s
+  std::vector<double> acceleration;  ///< m/s^2
+  std::vector<double> displacement;  ///< exact integral from rest (ground/ground_trace.hpp), m
+};
+/// Samples 0, dt, ... up to the longest channel's last one.
+GroundTable ground_table(const RowGround& ground);
 
 }  // namespace pound

@@ -7,13 +7,18 @@ import pytest
 import pound
 from conftest import run, study
 
-DATASETS = ["time", "displacement", "abs_acceleration", "contact_force", "storey_shear"]
+DATASETS = ["time", "displacement", "abs_acceleration", "contact_force", "storey_shear",
+            "storey_drift", "foundation_sway", "foundation_rotation"]
+SPRINGS = ["--building1.foundation=springs", "--building1.sway_stiffness=9.56e8",
+           "--building1.rocking_stiffness=1.02e11", "--building1.sway_damping=7.2e7",
+           "--building1.rocking_damping=4.49e9", "--building1.foundation_mass=2.4e5"]
 
 
 @pytest.mark.parametrize("name,overrides", [
     ("ch6-sdof-pair", []),                  # lumped, two SDOF
     ("ch8-yielding", []),                   # damped Sears, yielding storeys
     ("ch3-steel-frames", ["--contact.model=hc-hertz"]),
+    ("ch8-five-three", SPRINGS + ["--ground.apparent_velocity=400"]),  # SSI, wave passage
 ])
 def test_histories_equal_the_file(tmp_path, name, overrides):
     path = tmp_path / "h.h5"
@@ -32,6 +37,8 @@ def test_histories_equal_the_file(tmp_path, name, overrides):
             assert list(h[d]) == list(f[f"row/{d}"][()]), d
         for d in ("time", "acceleration"):
             assert h["motion"][d].tobytes() == f[f"motion/{d}"][()].tobytes(), d
+        for d in ("time", "acceleration", "displacement"):
+            assert h["ground"][d].tobytes() == f[f"ground/{d}"][()].tobytes(), d
     # Many steps, not an empty table.
     assert h["pounding"]["time"].size > 1000
 
@@ -48,3 +55,29 @@ def test_storey_drifts_are_the_differences_of_floor_displacements():
     peak = np.max(np.abs(drift[:, 1])) / 3.0
     reported = pound.simulate(study("ch8-yielding"))["buildings"][0]["floors"][1]
     assert peak == pytest.approx(reported["peak_drift_ratio_free"], rel=1e-3)
+
+
+def test_wave_passage_delays_the_second_buildings_ground():
+    # Chapter 8's pair side by side (slab lengths 2 x 7.5 m / 2 + gap): building 2's ground is
+    # building 1's, later by its distance over the apparent velocity, and the first building
+    # stands on the study's record.
+    v = 150.0
+    d = pound.simulate(study("ch8-five-three"), histories=True, ground__apparent_velocity=v)
+    h = d["histories"]
+    g, t = h["ground"]["acceleration"], h["ground"]["time"]
+    assert g.shape == (t.size, 2)
+    m = h["motion"]["acceleration"]
+    assert np.array_equal(g[: m.size, 0], m)
+    dt = t[1] - t[0]
+    lag = np.argmax(np.correlate(g[:, 1], g[:, 0], "full")) - (t.size - 1)
+    distance = d["buildings"][1]["position_m"] - d["buildings"][0]["position_m"]
+    assert distance > 7.0
+    assert abs(lag * dt - distance / v) <= dt
+
+
+def test_a_fixed_base_has_no_sway():
+    h = pound.simulate(study("ch8-yielding"), histories=True)["histories"]
+    for run_name in ("pounding", "free"):
+        assert h[run_name]["foundation_sway"].shape == (h[run_name]["time"].size, 2)
+        assert not np.any(h[run_name]["foundation_sway"])
+        assert not np.any(h[run_name]["foundation_rotation"])

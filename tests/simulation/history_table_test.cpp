@@ -3,7 +3,9 @@
 // (issue 29; docs/ssi.md): a column per floor, each labelled with its building and floor, the
 // floors' displacements relative to the free-field ground, and the storey drift of each column
 // the storey's deformation d_j = U_j - U_j-1 - h_j theta (U_0 = u0; physics.md section 5a), whose
-// peak over the recorded instants is the reported peak drift.
+// peak over the recorded instants is the reported peak drift; the base's sway and rotation as
+// columns of their own, from which with the drifts each floor's displacement is rebuilt; and the
+// ground under each building as a table of its own (issue 28).
 #include "simulation/history_table.hpp"
 
 #include <gtest/gtest.h>
@@ -74,7 +76,69 @@ TEST(HistoryTable, OnAFoundationTheColumnsAreTheFloorsAndTheDriftsTheirDeformati
       EXPECT_LE(peak_d / h, drift * (1 + 1e-12)) << "column " << i;
       EXPECT_GT(peak_d / h, drift * (1 - 5e-3)) << "column " << i;
     }
+    // The base's columns: the kinematics of physics.md section 5a, floor j's displacement
+    // relative to the free field U_j = u0 + theta H_j + (d_1 + ... + d_j), H_j its height above
+    // the base, rebuilt from the written sway, rotation and storey drifts alone; the fixed
+    // building's base columns are 0 and its floors the sums of its drifts.
+    ASSERT_EQ(t.buildings, 2u);
+    double peak_sway = 0.0, peak_rotation = 0.0;
+    for (std::size_t k = 0; k < t.steps; ++k) {
+      const double u0 = t.foundation_sway[k * 2], theta = t.foundation_rotation[k * 2];
+      EXPECT_EQ(u0, r->history.u[k](8));
+      EXPECT_EQ(theta, r->history.u[k](9));
+      EXPECT_EQ(t.foundation_sway[k * 2 + 1], 0.0);
+      EXPECT_EQ(t.foundation_rotation[k * 2 + 1], 0.0);
+      peak_sway = std::max(peak_sway, std::fabs(u0));
+      peak_rotation = std::max(peak_rotation, std::fabs(theta));
+      for (std::size_t b = 0; b < 2; ++b) {
+        const std::size_t first = b == 0 ? 0 : 5, floors = b == 0 ? 5 : 3;
+        double height = 0.0, sum = b == 0 ? u0 : 0.0;
+        for (std::size_t j = 0; j < floors; ++j) {
+          height += row.buildings[b].storey_heights[j];
+          sum += t.storey_drift[k * t.dofs + first + j];
+          const double expected = sum + (b == 0 ? theta * height : 0.0);
+          EXPECT_NEAR(t.displacement[k * t.dofs + first + j], expected, 1e-12)
+              << "building " << b + 1 << " floor " << j + 1 << " step " << k;
+        }
+      }
+    }
+    EXPECT_GT(peak_sway, 1e-5);  // the base moves: the identity is not 0 = 0
+    EXPECT_GT(peak_rotation, 1e-7);
   }
+}
+
+TEST(GroundTable, EachBuildingsColumnIsItsOwnGroundAndRestsAfterItsRecord) {
+  // Building 1 on the first 2 s of El Centro NS, building 2 on the same record 10 samples later
+  // (its leading zeros, as wave passage writes a delay of 10 dt): 211 samples, the second
+  // column the first shifted by 10, and after building 1's record its acceleration 0 and its
+  // displacement u_end + v_end (t - T) (ground/ground_trace.hpp, from rest, no correction).
+  MotionFileSpec spec;
+  spec.path = std::string(POUND_SOURCE_DIR) + "/motions/elcentro-1940-ns.dat";
+  GroundMotion a = read_motion(spec);
+  a.accel.resize(201);
+  GroundMotion b = a;
+  b.accel.insert(b.accel.begin(), 10, 0.0);
+  const RowGround ground = RowGround::per_building({a, b});
+  const GroundTable g = ground_table(ground);
+  ASSERT_EQ(g.buildings, 2u);
+  ASSERT_EQ(g.samples, 211u);
+  EXPECT_DOUBLE_EQ(g.time[210], 210 * a.dt);
+  const GroundTrace& ta = ground.under(0);
+  for (std::size_t i = 0; i < g.samples; ++i) {
+    const double acc_a = g.acceleration[i * 2], acc_b = g.acceleration[i * 2 + 1];
+    EXPECT_EQ(acc_a, i < 201 ? a.accel[i] : 0.0) << i;
+    EXPECT_EQ(acc_b, i < 10 ? 0.0 : a.accel[i - 10]) << i;
+    if (i >= 10) {
+      EXPECT_NEAR(g.displacement[i * 2 + 1], g.displacement[(i - 10) * 2], 1e-12) << i;
+    } else {
+      EXPECT_EQ(g.displacement[i * 2 + 1], 0.0) << i;
+    }
+  }
+  const double T = 200 * a.dt;
+  double v_end = 0.0, u_end = 0.0;
+  ta.kinematics(T, v_end, u_end);
+  ASSERT_GT(std::fabs(v_end), 1e-4);  // a record that does not end at rest: the line is a line
+  EXPECT_NEAR(g.displacement[210 * 2], u_end + v_end * 10 * a.dt, 1e-12);
 }
 
 }  // namespace
