@@ -31,6 +31,7 @@
 #include <cmath>
 #include <cstdio>
 #include <ctime>
+#include <exception>
 #include <functional>
 #include <string>
 #include <vector>
@@ -493,7 +494,7 @@ void compare_case(const char* title, const std::string& src, const std::string& 
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int run(int argc, char** argv) {
   const std::string src = argc > 1 ? argv[1] : POUND_SOURCE_DIR;
   const std::string ch8 = src + "/studies/ch8-five-three.ini";
   std::printf("speed benchmark (issue 8): default integrators vs fixed dt = %g s, one core\n",
@@ -719,4 +720,21 @@ int main(int argc, char** argv) {
   inelastic_case(src, 24);
   samples_case(src, 48, 3);
   return collapse_case(src, {});
+}
+
+int main(int argc, char** argv) {
+  if (argc > 1 && argv[1][0] == '-') {
+    std::printf(
+        "usage: bench_speed [SOURCE [quick | lumped [check] | sample ID | inelastic [N] | samples "
+        "[N [REPEAT [MODEL [spectral|none]]]] | collapse ... | ssi|svgm|svgm-default [N [REPEAT "
+        "[MODEL|all [with|base]]]] | ch8 | fine-step | contact-steps]]\n(SOURCE: the source tree "
+        "whose studies/ are timed; the cases are described at the top of bench/speed_bench.cpp)\n");
+    return 0;
+  }
+  try {
+    return run(argc, argv);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "bench_speed: error: %s\n", e.what());
+    return 2;
+  }
 }
