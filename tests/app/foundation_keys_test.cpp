@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "../support/pound_command.hpp"
 #include "../support/scratch_dir.hpp"
 #include "../support/shell.hpp"
 
@@ -20,20 +21,8 @@ using pound::test::run_command;
 using pound::test::ScratchDir;
 using pound::test::slurp;
 
-struct Outcome {
-  int code = -1;
-  std::string message;  // stderr without the "pound COMMAND: " prefix
-};
-
-Outcome run(const ScratchDir& dir, const std::string& command, const std::string& args) {
-  const std::string err = dir / (command + ".err");
-  const int code = run_command(std::string(POUND_BINARY) + " " + command + " " + args + " >" +
-                               (dir / (command + ".out")) + " 2>" + err);
-  std::string text = slurp(err);
-  const std::string prefix = "pound " + command + ": ";
-  if (text.rfind(prefix, 0) == 0) text.erase(0, prefix.size());
-  return {code, text};
-}
+using Outcome = pound::test::PoundOutcome;
+const auto run = &pound::test::run_pound_command;
 
 // Both commands on the same flags: the same single line naming `key`, exit 2, no file.
 void expect_same_refusal(const std::string& flags, const std::string& key,

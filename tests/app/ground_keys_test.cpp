@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "../support/pound_command.hpp"
 #include "../support/scratch_dir.hpp"
 #include "../support/shell.hpp"
 #include "motion/motion_reader.hpp"
@@ -24,20 +25,8 @@ using pound::test::run_command;
 using pound::test::ScratchDir;
 using pound::test::slurp;
 
-struct Outcome {
-  int code = -1;
-  std::string out, message;  // stdout; stderr without the "pound COMMAND: " prefix
-};
-
-Outcome run(const ScratchDir& dir, const std::string& command, const std::string& args) {
-  const std::string err = dir / (command + ".err"), out = dir / (command + ".out");
-  const int code = run_command(std::string(POUND_BINARY) + " " + command + " " + args + " >" + out +
-                               " 2>" + err);
-  std::string text = slurp(err);
-  const std::string prefix = "pound " + command + ": ";
-  if (text.rfind(prefix, 0) == 0) text.erase(0, prefix.size());
-  return {code, slurp(out), text};
-}
+using Outcome = pound::test::PoundOutcome;
+const auto run = &pound::test::run_pound_command;
 
 const std::string kSrc = POUND_SOURCE_DIR;
 const std::string kSdofPair = kSrc + "/studies/ch6-sdof-pair.ini";     // no slab lengths

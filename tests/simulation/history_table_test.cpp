@@ -25,14 +25,8 @@ TEST(HistoryTable, OnAFoundationTheColumnsAreTheFloorsAndTheDriftsTheirDeformati
   // springs for Vs = 100 m/s) with a 240 t raft, the 3-storey one fixed; the first 4 s of El
   // Centro NS.
   BuildingRow row = test::chapter8_pair(0.01);
-  Foundation& f = row.buildings[0].foundation;
-  f.kind = FoundationKind::springs;
-  f.sway_stiffness = 9.56e8;
-  f.rocking_stiffness = 1.02e11;
-  f.sway_damping = 7.2e7;
-  f.rocking_damping = 4.49e9;
-  f.foundation_mass = 2.4e5;
-  f.foundation_inertia = 8e6;
+  row.buildings[0].foundation =
+      test::springs_foundation(9.56e8, 1.02e11, 7.2e7, 4.49e9, 2.4e5, 8e6);
   MotionFileSpec spec;
   spec.path = std::string(POUND_SOURCE_DIR) + "/motions/elcentro-1940-ns.dat";
   GroundMotion g = read_motion(spec);

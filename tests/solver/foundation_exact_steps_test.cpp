@@ -38,12 +38,8 @@ BuildingRow soft_pair(const std::string& law, int mass, double gap, bool heavy) 
     bd.p_delta = heavy;
     if (heavy) bd.damping_stiffness = DampingStiffness::tangent;
     if (law != "elastic") bd.yield_shears.assign(bd.floors(), b == 0 ? 4.5e5 : 1.7e5);
+    bd.foundation = test::springs_foundation(K[b][0], K[b][1], K[b][2], K[b][3]);
     Foundation& f = bd.foundation;
-    f.kind = FoundationKind::springs;
-    f.sway_stiffness = K[b][0];
-    f.rocking_stiffness = K[b][1];
-    f.sway_damping = K[b][2];
-    f.rocking_damping = K[b][3];
     if (mass == 1 || (mass == 2 && b == 1)) f.foundation_mass = m0[b];
     if (mass == 1 || (mass == 2 && b == 0)) {
       f.foundation_inertia = m0[b] * L[b] * L[b] / 12;

@@ -34,6 +34,7 @@
 #include <string>
 #include <vector>
 
+#include "../support/buildings.hpp"
 #include "motion/motion_reader.hpp"
 #include "simulation/simulate_row.hpp"
 
@@ -93,15 +94,8 @@ Building to_building(const Spec& s) {
     b.gravity_loads = s.P;
   }
   if (s.flexible) {
-    Foundation& f = b.foundation;
-    f.kind = FoundationKind::springs;
-    f.sway_stiffness = s.kx;
-    f.rocking_stiffness = s.kr;
-    f.sway_damping = s.cx;
-    f.rocking_damping = s.cr;
-    f.foundation_mass = s.m0;
-    f.foundation_inertia = s.i0;
-    f.floor_inertias = s.J;
+    b.foundation = test::springs_foundation(s.kx, s.kr, s.cx, s.cr, s.m0, s.i0);
+    b.foundation.floor_inertias = s.J;
   }
   return b;
 }

@@ -26,23 +26,9 @@ RowSimulation on_soil(const std::string& law, bool p_delta, const IntegratorSett
     bd.p_delta = p_delta;
     if (p_delta) bd.damping_stiffness = DampingStiffness::tangent;
   }
-  Foundation& cone = row.buildings[0].foundation;
-  cone.kind = FoundationKind::cone;
-  cone.radius = 11.3;
-  cone.soil_shear_velocity = 120.0;
-  cone.soil_density = 1800.0;
-  cone.soil_poisson = 0.4;
-  cone.foundation_mass = 48e3;
-  cone.foundation_inertia = 1.6e6;
-  cone.floor_inertias = {1.6e6};
-  Foundation& springs = row.buildings[1].foundation;
-  springs.kind = FoundationKind::springs;
-  springs.sway_stiffness = 6.0e8;
-  springs.rocking_stiffness = 2.5e10;
-  springs.sway_damping = 2.6e7;
-  springs.rocking_damping = 6.0e8;
-  springs.foundation_mass = 29e3;
-  springs.foundation_inertia = 3.48e5;
+  row.buildings[0].foundation = test::cone_foundation(11.3, 120.0, 1800.0, 0.4, 48e3, 1.6e6);
+  row.buildings[0].foundation.floor_inertias = {1.6e6};
+  row.buildings[1].foundation = test::springs_foundation(6.0e8, 2.5e10, 2.6e7, 6.0e8, 29e3, 3.48e5);
   MotionFileSpec spec;
   spec.path = std::string(POUND_SOURCE_DIR) + "/motions/elcentro-1940-ns.dat";
   GroundMotion g = read_motion(spec);

@@ -46,25 +46,12 @@ AssembledRow row_of(const Case& c) {
     if (c.tangent) bd.damping_stiffness = DampingStiffness::tangent;
     if (c.modal) bd.damping = DampingKind::modal;
   }
-  Foundation& cone = row.buildings[0].foundation;
-  cone.kind = FoundationKind::cone;
-  cone.radius = 11.3;
-  cone.soil_shear_velocity = 150.0;
-  cone.soil_density = 1800.0;
-  cone.soil_poisson = 0.4;
-  cone.foundation_mass = c.massless ? 0.0 : 48e3;
-  cone.foundation_inertia = c.massless ? 0.0 : 1.6e6;
-  if (!c.massless) cone.floor_inertias = {1.6e6};
-  if (!c.fixed_right) {
-    Foundation& springs = row.buildings[1].foundation;
-    springs.kind = FoundationKind::springs;
-    springs.sway_stiffness = 1.0e9;
-    springs.rocking_stiffness = 3.0e10;
-    springs.sway_damping = 3.0e7;
-    springs.rocking_damping = 6.0e8;
-    springs.foundation_mass = 29e3;
-    springs.foundation_inertia = 3.48e5;
-  }
+  row.buildings[0].foundation = test::cone_foundation(
+      11.3, 150.0, 1800.0, 0.4, c.massless ? 0.0 : 48e3, c.massless ? 0.0 : 1.6e6);
+  if (!c.massless) row.buildings[0].foundation.floor_inertias = {1.6e6};
+  if (!c.fixed_right)
+    row.buildings[1].foundation =
+        test::springs_foundation(1.0e9, 3.0e10, 3.0e7, 6.0e8, 29e3, 3.48e5);
   return assemble(row);
 }
 

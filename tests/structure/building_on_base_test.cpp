@@ -37,14 +37,8 @@ using test::uniform_building;
 
 Foundation springs(double kx, double kr, double m0 = 0.0, double i0 = 0.0,
                    std::vector<double> j = {}) {
-  Foundation f;
-  f.kind = FoundationKind::springs;
-  f.sway_stiffness = kx;
-  f.rocking_stiffness = kr;
-  f.sway_damping = 1e5;  // the dashpots do not enter the undamped periods
-  f.rocking_damping = 1e7;
-  f.foundation_mass = m0;
-  f.foundation_inertia = i0;
+  // (the dashpots do not enter the undamped periods)
+  Foundation f = test::springs_foundation(kx, kr, 1e5, 1e7, m0, i0);
   f.floor_inertias = std::move(j);
   return f;
 }

@@ -27,4 +27,35 @@ inline BuildingRow chapter8_pair(double gap) {
   return row;
 }
 
+/// A base on springs and dashpots (docs/ssi.md): sway and rocking stiffness kx [N/m], kr
+/// [N m/rad], their dashpots cx [N s/m], cr [N m s/rad], the raft's mass m0 [kg] and rotary
+/// inertia i0 [kg m^2].
+inline Foundation springs_foundation(double kx, double kr, double cx, double cr, double m0 = 0.0,
+                                     double i0 = 0.0) {
+  Foundation f;
+  f.kind = FoundationKind::springs;
+  f.sway_stiffness = kx;
+  f.rocking_stiffness = kr;
+  f.sway_damping = cx;
+  f.rocking_damping = cr;
+  f.foundation_mass = m0;
+  f.foundation_inertia = i0;
+  return f;
+}
+
+/// A rigid disc of radius r [m] on Wolf's cone (docs/ssi.md): the soil's shear wave velocity vs
+/// [m/s], density rho [kg/m^3] and Poisson's ratio nu [-], the raft's m0 [kg] and i0 [kg m^2].
+inline Foundation cone_foundation(double r, double vs, double rho, double nu, double m0 = 0.0,
+                                  double i0 = 0.0) {
+  Foundation f;
+  f.kind = FoundationKind::cone;
+  f.radius = r;
+  f.soil_shear_velocity = vs;
+  f.soil_density = rho;
+  f.soil_poisson = nu;
+  f.foundation_mass = m0;
+  f.foundation_inertia = i0;
+  return f;
+}
+
 }  // namespace pound::test
