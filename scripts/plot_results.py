@@ -6,6 +6,7 @@ Run with Debian's python (python3-matplotlib, python3-h5py):
   /usr/bin/python3 scripts/plot_results.py --campaign RUN.h5 --fragility RUN-fragility \
       --out RUN-fragility/plots [--motions motions.h5] [--histories histories.h5] \
       [--risk RUN-risk]
+  /usr/bin/python3 scripts/plot_results.py --histories histories.h5 --out plots  (alone)
 
 Figures (one PNG each, units on every axis):
   fragility_<building>_<edp>.png  fitted curves with (solid) and without (dashed) pounding,
@@ -21,7 +22,8 @@ Figures (one PNG each, units on every axis):
                                   against the design spectrum, and the motions scaled to the
                                   design PGA (as PGA stripes scale them)
   history.png                     (--histories, from 'pound simulate --histories') top-floor
-                                  displacement of each building and the pounding force
+                                  displacement of each building and the pounding force, and
+                                  on spatially varying ground the ground under each building
   hysteresis.png                  (--histories holding /pounding/storey_shear) shear of the
                                   first storey of each building against its drift, with and
                                   without pounding (skipped when the file has no storey shears)
@@ -430,6 +432,8 @@ def plot_spectra(motions_path, out):
 
 
 def plot_history(hist_path, out, names):
+    """Top-floor displacements and contact forces; with a third panel, the ground under each
+    building (/ground/displacement) when the buildings do not all stand on the same motion."""
     with h5py.File(hist_path, "r") as f:
         bld = f["row/dof_building"][:]
         floor = f["row/dof_floor"][:]
@@ -438,8 +442,13 @@ def plot_history(hist_path, out, names):
         force = f["pounding/contact_force"][:]  # [steps, sites] on pounding/time
         pair = f["row/site_pair"][:]
         sfloor = f["row/site_floor"][:]
+        tg = f["ground/time"][:] if "ground/time" in f else None
+        ug = f["ground/displacement"][:] if "ground/displacement" in f else None
+        varying = ug is not None and ug.shape[1] > 1 and np.any(ug != ug[:, :1])
         step = 1  # full resolution: thinning could clip the short impact peaks
-        fig, (a1, a2) = plt.subplots(2, 1, figsize=(9, 6.5), sharex=True)
+        fig, axes = plt.subplots(3 if varying else 2, 1, figsize=(9, 9 if varying else 6.5),
+                                 sharex=True)
+        a1, a2 = axes[0], axes[1]
         colors = plt.cm.tab10.colors
         for b in np.unique(bld):
             top = np.where(bld == b)[0][np.argmax(floor[bld == b])]
@@ -458,11 +467,24 @@ def plot_history(hist_path, out, names):
     a1.grid(True, alpha=0.3)
     a1.set_title("Top-floor displacement of each building with (solid) and without (dashed) pounding")
     a2.set_ylabel("pounding force [kN]")
-    a2.set_xlabel("time t [s]")
     a2.set_title("Contact force at the colliding floors")
     if a2.lines:
         a2.legend(fontsize=8)
     a2.grid(True, alpha=0.3)
+    if varying:  # spatially varying ground (docs/ground.md): what each base stands on
+        a3 = axes[2]
+        for b in range(ug.shape[1]):
+            a3.plot(tg, 1000 * ug[:, b], color=colors[b % 10], lw=1.0,
+                    label=f"under {building_name(names, b)}")
+        for p in range(ug.shape[1] - 1):
+            a3.plot(tg, 1000 * (ug[:, p] - ug[:, p + 1]), color="k", lw=0.8,
+                    ls=":" if p else "-",
+                    label=f"{building_name(names, p)} minus {building_name(names, p + 1)}")
+        a3.set_ylabel("ground displacement [mm]")
+        a3.set_title("The ground under each building and the relative ground displacement")
+        a3.legend(fontsize=8, ncol=2)
+        a3.grid(True, alpha=0.3)
+    axes[-1].set_xlabel("time t [s]")
     fig.tight_layout()
     save(fig, out, "history.png")
 
@@ -518,13 +540,18 @@ def plot_hysteresis(hist_path, out, names):
 
 def main():
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    p.add_argument("--campaign", required=True, help="campaign result file (HDF5)")
+    p.add_argument("--campaign", help="campaign result file (HDF5); needed unless --histories or "
+                   "--motions is given alone")
     p.add_argument("--fragility", help="output folder of 'pound fragility' (fragility.h5)")
     p.add_argument("--out", required=True, help="folder for the PNGs")
     p.add_argument("--motions", help="motions.h5 of 'pound motion generate'")
     p.add_argument("--histories", help="HDF5 of 'pound simulate --histories'")
     p.add_argument("--risk", help="output folder of 'pound risk' (risk.h5)")
     a = p.parse_args()
+    if not (a.campaign or a.histories or a.motions):
+        p.error("give --campaign, --histories or --motions")
+    if (a.fragility or a.risk) and not a.campaign:
+        p.error("--fragility and --risk need the --campaign they were computed from")
     os.makedirs(a.out, exist_ok=True)
     for path in [a.campaign, a.motions, a.histories] + (
             [os.path.join(a.fragility, "fragility.h5")] if a.fragility else []) + (
@@ -533,20 +560,24 @@ def main():
             sys.exit(f"plot_results.py: error: {path}: no such file")
     if a.fragility:
         plot_fragility(os.path.join(a.fragility, "fragility.h5"), a.out)
-    plot_amplification(a.campaign, a.out)
-    plot_amplification_im(a.campaign, a.out)
+    if a.campaign:
+        plot_amplification(a.campaign, a.out)
+        plot_amplification_im(a.campaign, a.out)
     if a.fragility:
         with pound.open_campaign(a.campaign) as c:
             measure = c.intensity_measure
         plot_collapse_fragility(a.fragility, a.out, measure)
-    plot_ida(a.campaign, a.out)
+    if a.campaign:
+        plot_ida(a.campaign, a.out)
     if a.risk:
         plot_risk(os.path.join(a.risk, "risk.h5"), a.out)
     if a.motions:
         plot_spectra(a.motions, a.out)
     if a.histories:
-        with pound.open_campaign(a.campaign) as c:
-            names = building_names(c)
+        names = []
+        if a.campaign:
+            with pound.open_campaign(a.campaign) as c:
+                names = building_names(c)
         with h5py.File(a.histories, "r") as f:
             cfg = text(f.attrs.get("config", ""))
         hn = [l.split("=", 1)[1].strip() for l in cfg.splitlines()

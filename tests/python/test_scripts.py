@@ -108,3 +108,28 @@ def test_pound_parts_checks_and_compares_through_the_package(analysed, tmp_path)
     code, out, _ = script([parts, "range", "--chunk", 1, "--chunks", 2, "--samples", 24],
                           {"PATH": os.environ.get("PATH", "")})
     assert (code, out) == (0, "12 24\n")
+
+
+@pytest.mark.parametrize("overrides,panels", [
+    ([], 2),                                          # one motion under both: no ground panel
+    (["--ground.apparent_velocity", "150"], 3),       # wave passage: the ground under each
+    (["--building1.foundation", "springs", "--building1.sway_stiffness", "9.56e8",
+      "--building1.rocking_stiffness", "1.02e11", "--building1.sway_damping", "7.2e7",
+      "--building1.rocking_damping", "4.49e9"], 2),  # a flexible base on uniform ground
+])
+def test_plot_results_draws_the_histories(tmp_path, overrides, panels):
+    """history.png and hysteresis.png from `pound simulate --histories`; the history figure has
+    a third panel, the ground under each building, exactly when the grounds differ."""
+    study = SOURCE / "studies" / "ch8-yielding.ini"
+    hist = tmp_path / "h.h5"
+    code, _, err = run(["simulate", "--config", study, "--histories", hist,
+                        "--contact.model", "hc-linear", "--contact.k_factor", "50"] + overrides)
+    assert code == 0, err
+    code, out, err = script([SOURCE / "scripts" / "plot_results.py", "--histories", hist,
+                             "--out", tmp_path / "plots"])
+    assert code == 0, err
+    for name in ("history.png", "hysteresis.png"):
+        assert (tmp_path / "plots" / name).stat().st_size > 10000, name
+    import matplotlib.image
+    height = matplotlib.image.imread(tmp_path / "plots" / "history.png").shape[0]
+    assert (height > 800) == (panels == 3), height  # 6.5 in against 9 in at the figure's dpi
