@@ -9,8 +9,8 @@ std::vector<OptionSpec> foundation_option_specs() {
   return {
       {"building#.foundation", "", "fixed",
        "the base on the soil: fixed (moves with the ground), springs (sway and rocking springs "
-       "and dashpots) or cone (a rigid circular surface footing on a half-space, Wolf 1994); "
-       "only fixed is simulated yet (docs/ssi.md)"},
+       "and dashpots) or cone (a rigid circular surface footing on a half-space, Wolf 1994), "
+       "in both solvers (docs/ssi.md)"},
       {"building#.sway_stiffness", "N/m", "", springs + "sway spring K_x > 0"},
       {"building#.rocking_stiffness", "N m/rad", "", springs + "rocking spring K_theta > 0"},
       {"building#.sway_damping", "N s/m", "", springs + "sway dashpot C_x > 0"},
