@@ -1,5 +1,6 @@
 #include "structure/foundation.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/format.hpp"
@@ -16,6 +17,7 @@ constexpr KindName kKinds[] = {
     {FoundationKind::fixed, "fixed"},
     {FoundationKind::springs, "springs"},
     {FoundationKind::cone, "cone"},
+    {FoundationKind::gazetas, "gazetas"},
 };
 
 bool positive(double x) {
@@ -65,6 +67,39 @@ void cone_constants(const Foundation& f, FoundationConstants& c) {
   c.rocking_internal_inertia = rho * I0 * c.rocking_aspect_ratio * r;
 }
 
+// A rigid rectangular surface footing on the half-space, Gazetas (1991) Table 15.1 (surface
+// footings; as also tabulated in NIST GCR 12-917-21, 2012, Table 2-2a). With 2L x 2B the
+// footing's sides, L >= B, x along L, G = rho Vs^2:
+//   K_y  = 2 G L / (2 - nu) (2 + 2.5 (B/L)^0.85)                  sway along the short side,
+//   K_x  = K_y - 0.2 / (0.75 - nu) G L (1 - B/L)                  sway along the long side,
+//   K_rx = G / (1 - nu) I_bx^0.75 (L/B)^0.25 (2.4 + 0.5 B/L)      rocking about x,
+//   K_ry = 3 G / (1 - nu) I_by^0.75 (L/B)^0.15                    rocking about y,
+// I_bx = 4 L B^3 / 3 and I_by = 4 B L^3 / 3 the area's moments about x and y; the radiation
+// dashpots are the high-frequency limits of his coefficients (c_y, c_rx, c_ry -> 1; c_x = 1 at
+// every frequency): C = rho Vs A_b in sway (A_b = 4 B L) and C = rho V_La I_b in rocking,
+// V_La = 3.4 Vs / (pi (1 - nu)) (Lysmer's analog velocity). The row's plane holds the side
+// `length`: sway along it, rocking about the axis across it, whose area moment is
+// width length^3 / 12 (I_by when length >= width, else I_bx). Left out, as for the cone: the
+// dynamic stiffness factors k(a0) < 1 and the frequency dependence of the rocking dashpot
+// (docs/ssi.md).
+void gazetas_constants(const Foundation& f, FoundationConstants& c) {
+  const double vs = f.soil_shear_velocity, rho = f.soil_density, nu = f.soil_poisson;
+  const double G = rho * vs * vs;
+  const bool along_long = f.length >= f.width;
+  const double L = 0.5 * std::max(f.length, f.width), B = 0.5 * std::min(f.length, f.width);
+  const double k_y = 2.0 * G * L / (2.0 - nu) * (2.0 + 2.5 * std::pow(B / L, 0.85));
+  const double k_x = k_y - 0.2 / (0.75 - nu) * G * L * (1.0 - B / L);
+  const double i_bx = 4.0 * L * B * B * B / 3.0, i_by = 4.0 * B * L * L * L / 3.0;
+  const double k_rx =
+      G / (1.0 - nu) * std::pow(i_bx, 0.75) * std::pow(L / B, 0.25) * (2.4 + 0.5 * B / L);
+  const double k_ry = 3.0 * G / (1.0 - nu) * std::pow(i_by, 0.75) * std::pow(L / B, 0.15);
+  const double v_la = 3.4 * vs / (M_PI * (1.0 - nu));
+  c.sway_stiffness = along_long ? k_x : k_y;
+  c.rocking_stiffness = along_long ? k_ry : k_rx;
+  c.sway_damping = rho * vs * 4.0 * B * L;
+  c.rocking_damping = rho * v_la * (along_long ? i_by : i_bx);
+}
+
 }  // namespace
 
 const char* foundation_kind_name(FoundationKind k) {
@@ -74,7 +109,7 @@ const char* foundation_kind_name(FoundationKind k) {
 }
 
 std::string foundation_kind_names() {
-  return "fixed, springs or cone";
+  return "fixed, springs, cone or gazetas";
 }
 
 bool parse_foundation_kind(const std::string& name, FoundationKind& kind) {
@@ -95,6 +130,8 @@ FoundationConstants foundation_constants(const Foundation& f) {
     c.rocking_stiffness = f.rocking_stiffness;
     c.sway_damping = f.sway_damping;
     c.rocking_damping = f.rocking_damping;
+  } else if (f.kind == FoundationKind::gazetas) {
+    gazetas_constants(f, c);
   } else {
     cone_constants(f, c);
   }
@@ -140,8 +177,13 @@ std::string foundation_problem(const Foundation& f, int floors) {
     if (!positive(f.rocking_damping))
       return "rocking_damping must be a finite number > 0 N m s/rad";
   }
-  if (f.kind == FoundationKind::cone) {
-    if (!positive(f.radius)) return "foundation_radius must be a finite number > 0 m";
+  if (f.kind == FoundationKind::cone && !positive(f.radius))
+    return "foundation_radius must be a finite number > 0 m";
+  if (f.kind == FoundationKind::gazetas) {
+    if (!positive(f.length)) return "foundation_length must be a finite number > 0 m";
+    if (!positive(f.width)) return "foundation_width must be a finite number > 0 m";
+  }
+  if (on_soil(f.kind)) {
     if (!positive(f.soil_shear_velocity))
       return "soil_shear_velocity must be a finite number > 0 m/s";
     if (!positive(f.soil_density)) return "soil_density must be a finite number > 0 kg/m^3";

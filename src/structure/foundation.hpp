@@ -8,7 +8,11 @@
 //            wave velocity Vs, density rho, Poisson's ratio nu), with the frequency-independent
 //            constants of Wolf's cone model (Wolf 1994, "Foundation Vibration Analysis Using
 //            Simple Physical Models", Prentice Hall, ch. 2; Wolf & Deeks 2004, "Foundation
-//            Vibration Analysis: A Strength-of-Materials Approach", Elsevier, ch. 3).
+//            Vibration Analysis: A Strength-of-Materials Approach", Elsevier, ch. 3);
+//   gazetas  a rigid rectangular surface footing (length along the row, width across it) on the
+//            same half-space, with Gazetas' (1991) static stiffnesses and radiation dashpots
+//            ("Foundation vibrations", ch. 15 of H.-Y. Fang (ed.), Foundation Engineering
+//            Handbook, 2nd ed., Van Nostrand Reinhold, Table 15.1).
 // The solvers take it through structure/building_on_base.hpp: the base's sway and rotation are
 // degrees of freedom of the row (docs/ssi.md, "In the solvers").
 #include <complex>
@@ -21,11 +25,17 @@ enum class FoundationKind {
   fixed,    ///< the base moves with the ground (the default)
   springs,  ///< sway and rocking springs and dashpots given directly
   cone,     ///< Wolf's cone: a rigid disk on a homogeneous half-space
+  gazetas,  ///< Gazetas 1991: a rigid rectangle on a homogeneous half-space
 };
 
-/// The kind's name in study files: "fixed", "springs" or "cone".
+/// Whether the kind stands on the soil's Vs, rho and nu (cone, gazetas).
+inline bool on_soil(FoundationKind k) {
+  return k == FoundationKind::cone || k == FoundationKind::gazetas;
+}
+
+/// The kind's name in study files: "fixed", "springs", "cone" or "gazetas".
 const char* foundation_kind_name(FoundationKind k);
-/// "fixed, springs or cone", for messages.
+/// "fixed, springs, cone or gazetas", for messages.
 std::string foundation_kind_names();
 /// The kind named `name`; false (kind untouched) when there is none.
 bool parse_foundation_kind(const std::string& name, FoundationKind& kind);
@@ -39,8 +49,10 @@ struct Foundation {
   double rocking_stiffness = 0.0;  ///< K_theta > 0 [N m/rad]
   double sway_damping = 0.0;       ///< C_x > 0 [N s/m]
   double rocking_damping = 0.0;    ///< C_theta > 0 [N m s/rad]
-  // cone: the footing and the half-space under it.
-  double radius = 0.0;               ///< r > 0, of the rigid circular footing [m]
+  // cone: the footing and the half-space under it (gazetas: the same soil).
+  double radius = 0.0;  ///< r > 0, of the rigid circular footing [m]
+  double length = 0.0;  ///< gazetas: the rectangle's side along the row (sway, rocking) [m]
+  double width = 0.0;   ///< gazetas: its side across the row [m]
   double soil_shear_velocity = 0.0;  ///< Vs > 0 [m/s]
   double soil_density = 0.0;         ///< rho > 0 [kg/m^3]
   double soil_poisson = 0.0;         ///< nu in [0, 0.5) [-]

@@ -52,6 +52,10 @@ const Flags kCone = {{"building1.foundation", "cone"},
                      {"building1.soil_shear_velocity", "150"},
                      {"building1.soil_density", "1900"},
                      {"building1.soil_poisson", "0.3"}};
+const Flags kGazetas = {
+    {"building1.foundation", "gazetas"},  {"building1.foundation_length", "14"},
+    {"building1.foundation_width", "10"}, {"building1.soil_shear_velocity", "150"},
+    {"building1.soil_density", "1900"},   {"building1.soil_poisson", "0.3"}};
 const Flags kSprings = {{"building2.foundation", "springs"},
                         {"building2.sway_stiffness", "1e9"},
                         {"building2.rocking_stiffness", "1e11"},
@@ -76,7 +80,7 @@ TEST(FoundationKeys, ABadValueGetsTheSameLineFromSimulateAndCampaign) {
   // {flags, the key named, what the line says}
   const std::vector<std::vector<std::string>> bad = {
       {with({}, "building1.foundation", "raft"), "building1.foundation",
-       "valid: fixed, springs or cone"},
+       "valid: fixed, springs, cone or gazetas"},
       {with(kSprings, "building2.sway_stiffness", "0"), "building2.sway_stiffness", "K_x > 0"},
       {with(kSprings, "building2.rocking_stiffness", "-1e11"), "building2.rocking_stiffness",
        "K_theta > 0"},
@@ -98,6 +102,11 @@ TEST(FoundationKeys, ABadValueGetsTheSameLineFromSimulateAndCampaign) {
       // A key the kind needs, missing.
       {with({}, "building1.foundation", "cone"), "building1.foundation_radius", "(missing)"},
       {with({}, "building2.foundation", "springs"), "building2.sway_stiffness", "(missing)"},
+      {with(kCone, "building1.foundation", "gazetas"), "building1.foundation_length", "(missing)"},
+      {with(kGazetas, "building1.foundation_length", "0"), "building1.foundation_length",
+       "length > 0 m"},
+      {with(kGazetas, "building1.foundation_width", "-1"), "building1.foundation_width",
+       "width > 0 m"},
       // Keys given with fixed are checked for range too (and then ignored).
       {with({}, "building1.soil_poisson", "0.7"), "building1.soil_poisson", "nu in [0, 0.5)"},
       {with({}, "building2.rocking_damping", "0"), "building2.rocking_damping", "C_theta > 0"},

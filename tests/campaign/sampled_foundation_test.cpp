@@ -115,10 +115,10 @@ TEST(SampledFoundation, SoilValuesAndTheSpringsFactorReachTheirBuilding) {
 TEST(SampledFoundation, EachNeedsItsFoundationAndRange) {
   EXPECT_EQ(error_of({"--sample.building3.soil_density", "uniform(1800, 2000)"}),
             "command line: --sample.building3.soil_density: building3.foundation is 'fixed'; the "
-            "soil and footing of a cone are sampled only with building3.foundation = cone");
+            "soil under it is sampled only with building3.foundation = cone or gazetas");
   EXPECT_EQ(error_of({"--sample.building2.foundation_radius", "uniform(5, 6)"}),
             "command line: --sample.building2.foundation_radius: building2.foundation is "
-            "'springs'; the soil and footing of a cone are sampled only with "
+            "'springs'; the footing radius of a cone is sampled only with "
             "building2.foundation = cone");
   EXPECT_EQ(error_of({"--sample.building1.foundation_scale", "uniform(0.5, 2)"}),
             "command line: --sample.building1.foundation_scale: building1.foundation is 'cone'; "
@@ -134,14 +134,16 @@ TEST(SampledFoundation, EachNeedsItsFoundationAndRange) {
 }
 
 // One site (soil_shear_velocity, soil_density, soil_poisson without a building): the soil under
-// every building on a cone, no other building's foundation touched; refused without a cone, or
-// beside a building's own key for the same soil.
+// every building on the soil (a cone, building 1, and a Gazetas footing, building 3), no other
+// building's foundation touched; refused without one, or beside a building's own key for the
+// same soil.
 TEST(SampledFoundation, TheSitesSoilActsUnderEveryCone) {
   const Options opt =
-      campaign_options({"--building3.foundation", "cone", "--building3.foundation_radius", "4",
-                        "--building3.soil_shear_velocity", "300", "--building3.soil_density",
-                        "2000", "--building3.soil_poisson", "0.25", "--sample.soil_shear_velocity",
-                        "uniform(100, 200)", "--sample.soil_poisson", "uniform(0.35, 0.45)"});
+      campaign_options({"--building3.foundation", "gazetas", "--building3.foundation_length", "8",
+                        "--building3.foundation_width", "6", "--building3.soil_shear_velocity",
+                        "300", "--building3.soil_density", "2000", "--building3.soil_poisson",
+                        "0.25", "--sample.soil_shear_velocity", "uniform(100, 200)",
+                        "--sample.soil_poisson", "uniform(0.35, 0.45)"});
   const BuildingRow row = row_from_options(opt);
   const std::vector<SampledParameter> params = read_sampled_parameters(opt, row);
   ASSERT_EQ(params.size(), 2u);
@@ -161,7 +163,7 @@ TEST(SampledFoundation, TheSitesSoilActsUnderEveryCone) {
   EXPECT_EQ(error_of({"--sample.soil_density", "uniform(1800, 2000)",
                       "--sample.building1.soil_density", "uniform(1800, 2000)"}),
             "command line: --sample.soil_density: soil_density sets the soil under every building "
-            "on a cone; sample it there or as building1.soil_density, not both");
+            "on the soil; sample it there or as building1.soil_density, not both");
   Options fixed("campaign", "", campaign_option_specs());
   fixed.parse({"--building1.masses", "1000", "--building1.stiffnesses", "2e6",
                "--sample.soil_density", "1900"});
@@ -170,8 +172,8 @@ TEST(SampledFoundation, TheSitesSoilActsUnderEveryCone) {
     ADD_FAILURE() << "a site's soil without a cone was accepted";
   } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()),
-              "command line: --sample.soil_density: no building has foundation = cone; the "
-              "site's soil is sampled only under cone foundations");
+              "command line: --sample.soil_density: no building has foundation = cone or "
+              "gazetas; the site's soil is sampled only under them");
   }
   EXPECT_NE(error_of({"--sample.soil_poisson", "uniform(0.3, 0.5)"})
                 .find("soil_poisson must stay in [0, 0.5)"),

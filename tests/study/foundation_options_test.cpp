@@ -120,13 +120,14 @@ TEST(FoundationOptions, KeysOfAnotherKindAreCheckedAndIgnored) {
 
 TEST(FoundationOptions, BadValuesNameTheKeyAndWhatIsValid) {
   EXPECT_EQ(error_of({"--building1.foundation", "raft"}),
-            "command line: --building1.foundation = 'raft': valid: fixed, springs or cone");
+            "command line: --building1.foundation = 'raft': valid: fixed, springs, cone or "
+            "gazetas");
   const std::vector<std::pair<std::string, std::string>> bad = {
       {"sway_stiffness", "0"},   {"rocking_stiffness", "-1"},  {"sway_damping", "-3"},
       {"rocking_damping", "0"},  {"soil_shear_velocity", "0"}, {"soil_density", "-1900"},
       {"soil_poisson", "-0.1"},  {"soil_poisson", "0.5"},      {"foundation_radius", "0"},
       {"foundation_mass", "-1"}, {"foundation_inertia", "-1"}, {"floor_inertias", "1,-1,1"},
-      {"floor_inertias", "1,2"},
+      {"floor_inertias", "1,2"}, {"foundation_length", "0"},   {"foundation_width", "-2"},
   };
   for (const auto& [key, value] : bad) {
     SCOPED_TRACE(key + " = " + value);
@@ -148,9 +149,30 @@ TEST(FoundationOptions, BadValuesNameTheKeyAndWhatIsValid) {
             std::string::npos);
 }
 
-// Until the solvers have foundation degrees of freedom, the study reader stops a row with one,
-// after every other key was checked, naming where it was given; simulate_model (the one entry
-// of both solvers) refuses it too, so that no caller ignores a foundation without a word.
+// A Gazetas footing reads its sides and the soil keys it shares with the cone; a missing side is
+// named where the foundation was chosen.
+TEST(FoundationOptions, GazetasReadsItsSidesAndTheSoil) {
+  const std::vector<std::string> g = {
+      "--building2.foundation",        "gazetas", "--building2.foundation_length",   "12",
+      "--building2.foundation_width",  "9",       "--building2.soil_shear_velocity", "120",
+      "--building2.soil_density",      "1750",    "--building2.soil_poisson",        "0.35",
+      "--building2.foundation_radius", "4"};  // a cone's key: checked, ignored
+  const Foundation f = row_from_options(parsed(g)).buildings[1].foundation;
+  EXPECT_EQ(f.kind, FoundationKind::gazetas);
+  EXPECT_EQ(f.length, 12.0);
+  EXPECT_EQ(f.width, 9.0);
+  EXPECT_EQ(f.soil_shear_velocity, 120.0);
+  EXPECT_EQ(f.soil_density, 1750.0);
+  EXPECT_EQ(f.soil_poisson, 0.35);
+  EXPECT_EQ(f.radius, 0.0);
+  std::vector<std::string> no_width = g;
+  no_width.erase(no_width.begin() + 4, no_width.begin() + 6);
+  EXPECT_EQ(error_of(no_width),
+            "command line: --building2.foundation = 'gazetas': needs building2.foundation_width, "
+            "a footing width > 0 m across the row (missing)");
+}
+
+// Every foundation reaches the row the solvers take.
 TEST(FoundationOptions, TheStudyReaderKeepsEveryFoundation) {
   EXPECT_EQ(error_of(kCone), "");
   EXPECT_EQ(error_of(kSprings), "");
