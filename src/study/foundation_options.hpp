@@ -2,12 +2,13 @@
 // The study keys of each building's foundation (issue 29, docs/ssi.md), read and validated here
 // once, by row_from_options, for `pound simulate`, `pound campaign` and the Python module
 // (study/row_study.hpp):
-//   [buildingN] foundation        fixed (default), springs or cone
+//   [buildingN] foundation        fixed (default), springs, cone or gazetas
 //   springs: sway_stiffness [N/m], rocking_stiffness [N m/rad], sway_damping [N s/m],
 //            rocking_damping [N m s/rad]
 //   cone:    foundation_radius [m], soil_shear_velocity [m/s], soil_density [kg/m^3],
 //            soil_poisson [-]
-//   both:    foundation_mass [kg], foundation_inertia [kg m^2], floor_inertias [kg m^2]
+//   gazetas: foundation_length [m] (along the row), foundation_width [m], and the cone's soil
+//   all:     foundation_mass [kg], foundation_inertia [kg m^2], floor_inertias [kg m^2]
 // A key given for another kind than the building's (or with fixed) is checked for its range and
 // ignored, as another storey law's keys are.
 #include <string>
