@@ -68,7 +68,8 @@ void cone_constants(const Foundation& f, FoundationConstants& c) {
 }
 
 // A rigid rectangular surface footing on the half-space, Gazetas (1991) Table 15.1 (surface
-// footings; as also tabulated in NIST GCR 12-917-21, 2012, Table 2-2a). With 2L x 2B the
+// footings; the handbook not read here: the formulas as remembered and as the public geofound
+// package implements them, docs/ssi.md). With 2L x 2B the
 // footing's sides, L >= B, x along L, G = rho Vs^2:
 //   K_y  = 2 G L / (2 - nu) (2 + 2.5 (B/L)^0.85)                  sway along the short side,
 //   K_x  = K_y - 0.2 / (0.75 - nu) G L (1 - B/L)                  sway along the long side,
