@@ -18,8 +18,8 @@
 //      under both (issue 28; studies/svgm-identical-pair.ini).
 // Usage: bench_speed [source dir [quick | lumped [check] | sample ID | inelastic [N] |
 // samples [N [REPEAT [MODEL [spectral|none]]]] | collapse [N [REPEAT [imk|bilinear|both
-// [--key value ...]]]] | ssi|svgm|svgm-default [N [REPEAT [MODEL|all [with|base]]]] | ch8 |
-// fine-step | contact-steps]] (default: the source tree it was built from; "quick": only the
+// [--key value ...]]]] | ssi|svgm|svgm-apart|svgm-default [N [REPEAT [MODEL|all [with|base]]]] |
+// ch8 | fine-step | contact-steps]] (default: the source tree it was built from; "quick": only the
 // event-driven chapter 8 run, for profiling; "fine-step": the event path's fine step against the
 // fixed path; "contact-steps": the longer steps through smooth contact forces at several
 // sears.contact_step_tolerance values; "ch8": case 1 alone; "lumped": only the adaptive run of case
@@ -437,6 +437,8 @@ void samples_case(const std::string& src, long samples, int repeat, const std::s
 //   7. ssi (issue 29): studies/ssi-soft-soil.ini on cone foundations against fixed bases;
 //   8. svgm (issue 28): studies/svgm-identical-pair.ini on spatially varying ground (two
 //      coherent stations, wave passage) against one motion under both (which never pounds);
+//      svgm-apart: the same two, and the default pair as in svgm-default, with a 1 m gap on
+//      both sides (neither pounds: one run each, the price of the ground alone);
 //      svgm-default: the default study's pair with v = 500 m/s and Harichandran-Vanmarcke
 //      against the study as it is (both pound).
 void compare_case(const char* title, const std::string& src, const std::string& study_file,
@@ -537,7 +539,7 @@ int run(int argc, char** argv) {
     return 0;
   }
   const std::string mode = argc > 2 ? argv[2] : "";
-  if (mode == "ssi" || mode == "svgm" || mode == "svgm-default") {
+  if (mode == "ssi" || mode == "svgm" || mode == "svgm-apart" || mode == "svgm-default") {
     const std::vector<std::string> uniform = {
         "--ground.apparent_velocity",        "inf", "--ground.coherency", "none",
         "--sample.ground.apparent_velocity", "none"};
@@ -557,7 +559,20 @@ int run(int argc, char** argv) {
     else if (mode == "svgm")
       compare_case("8. spatially varying ground against one motion under both", src,
                    "studies/svgm-identical-pair.ini", {}, uniform, n, repeat, only, which);
-    else
+    else if (mode == "svgm-apart") {
+      // The same work on both sides: a gap so wide (1 m) that neither ever pounds, so each
+      // sample is one run, and what remains is the price of the ground itself.
+      const std::vector<std::string> apart = {"--sample.gap", "none", "--pair1.gap", "1"};
+      std::vector<std::string> uniform_apart = uniform;
+      uniform_apart.insert(uniform_apart.end(), apart.begin(), apart.end());
+      compare_case("8. spatially varying ground against one motion, neighbours 1 m apart", src,
+                   "studies/svgm-identical-pair.ini", apart, uniform_apart, n, repeat, only, which);
+      std::vector<std::string> varying_apart = varying;
+      varying_apart.insert(varying_apart.end(), apart.begin(), apart.end());
+      compare_case("8. the default pair on spatially varying ground against one motion, 1 m apart",
+                   src, "studies/fragility-default.ini", varying_apart, apart, n, repeat, only,
+                   which);
+    } else
       compare_case("8. the default pair on spatially varying ground against one motion", src,
                    "studies/fragility-default.ini", varying, {}, n, repeat, only, which);
     return 0;
@@ -726,7 +741,8 @@ int main(int argc, char** argv) {
   if (argc > 1 && argv[1][0] == '-') {
     std::printf(
         "usage: bench_speed [SOURCE [quick | lumped [check] | sample ID | inelastic [N] | samples "
-        "[N [REPEAT [MODEL [spectral|none]]]] | collapse ... | ssi|svgm|svgm-default [N [REPEAT "
+        "[N [REPEAT [MODEL [spectral|none]]]] | collapse ... | ssi|svgm|svgm-apart|svgm-default [N "
+        "[REPEAT "
         "[MODEL|all [with|base]]]] | ch8 | fine-step | contact-steps]]\n(SOURCE: the source tree "
         "whose studies/ are timed; the cases are described at the top of bench/speed_bench.cpp)\n");
     return 0;

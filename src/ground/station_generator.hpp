@@ -50,9 +50,10 @@
 //    coherency at 1-6 Hz and decorrelated close stations below 1 Hz. With a random target (RMS
 //    score) the band is widened to the earlier stations' mean ln(target / computed) +- 0.02
 //    where they miss it by more (a station does not chase an ordinate no motion reaches), and
-//    the iteration has no early end. Phase sets: station j alone, W_j drawn again from the next
-//    stream, at most 2 max_attempts (2 max_attempts_random_target) draws, the one of the
-//    smallest score kept.
+//    the iteration has no stop score; for its stall rules an iteration improves only when it
+//    lowers the score 5 % below the last one that did (SimqkeStart::stall_gain). Phase sets:
+//    station j alone, W_j drawn again from the next stream, at most 2 max_attempts (2
+//    max_attempts_random_target) draws, the one of the smallest score kept.
 //
 // With coherency none (or S = 1) every station is bit for bit SimqkeGenerator::generate's
 // motion, which is computed once and copied.

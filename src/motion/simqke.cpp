@@ -332,7 +332,10 @@ SimqkeAttempt SimqkeGenerator::iterate(const SimqkeStart& s, GroundMotion m,
   const std::vector<double>& target = s.target;
   std::vector<double> psa, ratio(target.size());
   SimqkeAttempt best;
-  int best_it = 0;
+  // The stall rules count from the last iteration that improved by the start's stall_gain (with
+  // stall_gain 0 that is the best iteration).
+  double stall_score = best.score;
+  int stall_it = 0;
   for (int it = 0;; ++it) {
     if (it > 0) correct(m, ratio);
     d.spectra->compute_psa(m.accel, psa);
@@ -355,14 +358,17 @@ SimqkeAttempt SimqkeGenerator::iterate(const SimqkeStart& s, GroundMotion m,
       best.motion = m;
       best.iterations = it;
       best.match = compare_spectra(psa, target);
-      best_it = it;
+    }
+    if (score < stall_score * (1.0 - s.stall_gain)) {
+      stall_score = score;
+      stall_it = it;
     }
     if (max_dev <= d.settings.tolerance || it >= d.settings.max_iterations) break;
     if (s.stop_score > 0.0 && best.score <= s.stop_score) break;
     // Acceptable and no longer improving (an earlier phase set was not acceptable, or this
     // one would not have been drawn, so "acceptable" is this set's best).
-    if (best.score <= d.settings.accept_score && it - best_it >= d.settings.stall) break;
-    if (it - best_it >= 2 * d.settings.stall) break;  // stuck: next phase set
+    if (best.score <= d.settings.accept_score && it - stall_it >= d.settings.stall) break;
+    if (it - stall_it >= 2 * d.settings.stall) break;  // stuck: next phase set
   }
   return best;
 }

@@ -111,6 +111,10 @@ struct SimqkeStart {
   int max_attempts = 1;           ///< phase sets at most [-]
   bool rms_score = false;         ///< score RMS of ln q (random target) instead of max |q - 1|
   double stop_score = 0.0;        ///< > 0: the iteration also ends once a score is <= this [-]
+  /// For the stall rules an iteration improves only when its score is below (1 - stall_gain)
+  /// times the score of the last iteration that did [-] (0: any improvement; the best motion
+  /// is kept either way).
+  double stall_gain = 0.0;
 };
 
 /// The best iteration of one phase set (SimqkeGenerator::match).
