@@ -58,17 +58,19 @@ SearsSteps sears_row_steps(const BuildingRow& row, double record_dt, const Sears
   if (model.stepping == SearsStepping::fixed) return st;
   // The lumped solver's grid (row_run.cpp, set_step_limits): h_L = the largest step <=
   // min(record spacing, T_min,b / 20) that divides the record spacing.
-  const double t_b = shortest_period(assemble(row));
+  const AssembledRow a = assemble(row);
+  const double t_b = shortest_period(a), t_step = step_period(a);
   double h_lumped = std::numeric_limits<double>::infinity();
-  if (std::isfinite(t_b)) {
-    h_lumped = t_b / 20.0;
+  if (std::isfinite(t_step)) {
+    h_lumped = t_step / 20.0;
     if (record_dt > 0.0) {
       h_lumped = std::min(h_lumped, record_dt);
       h_lumped = record_dt / std::ceil(record_dt / h_lumped * (1 - 1e-12));
     }
   }
-  // The coarse step: Newmark accuracy for the buildings, and no step over a record sample; it
-  // divides h_L, whose stretches carry the floors between contacts (issue 30).
+  // The coarse step: Newmark accuracy for the buildings (every mode's period, an overdamped
+  // raft's too: the trapezoidal rule does not damp a stiff root), and no step over a record
+  // sample; it divides h_L, whose stretches carry the floors between contacts (issue 30).
   double hc = t_b * kCoarseStepPerBuildingPeriod;
   if (record_dt > 0.0) hc = std::min(hc, record_dt);
   constexpr double kMaxRatio = 1e5;  // no building period and no record: free floors

@@ -83,7 +83,9 @@ double RowRun::error_norm(const Eigen::VectorXd& y0, const Eigen::VectorXd& y1,
 // (no storey state integrated, no energy balance), on a grid of h_max that holds every record
 // sample.
 void RowRun::set_step_limits() {
-  const double tmin_period = shortest_period(row_);
+  // T_min of the modes that oscillate (an overdamped raft's mode needs no T / 20 steps: its
+  // roots are real; structure/building_row.hpp step_period).
+  const double tmin_period = step_period(row_);
   h_max_ = s_.h_max > 0 ? s_.h_max : tmin_period / 20.0;
   rec_dt_ = p_->ground ? p_->ground->dt() : 0.0;
   if (s_.h_max <= 0 && rec_dt_ > 0) h_max_ = std::min(h_max_, rec_dt_);

@@ -34,6 +34,29 @@ __attribute__((target_clones("avx2", "default"))) void peak_bounds_kernel(
                        h2 * a0[i] - w * (h2 * a0[i - 1]), h2 * a1[i] - w * (h2 * a1[i - 1]));
   }
 }
+
+// The same for a row with flexible foundations (issue 29): the drift of DOF i is
+// u_i + wb_i u_bi + wr_i u_ri (wb_i = -1 on the DOF bi below, wr_i = -h_i on the base rotation
+// ri; weight 0 and the DOF itself where there is none), each coefficient formed in the order of
+// peaks_over_step's scalar quintics, so that every bound has their bits.
+__attribute__((target_clones("avx2", "default"))) void peak_bounds_general_kernel(
+    int n, const double* __restrict u0, const double* __restrict u1, const double* __restrict v0,
+    const double* __restrict v1, const double* __restrict a0, const double* __restrict a1,
+    const int* __restrict bi, const double* __restrict wb, const int* __restrict ri,
+    const double* __restrict wr, double h, double h2, double* __restrict out) {
+  const auto bound = [](double g0, double g1, double m0, double m1, double c0, double c1) {
+    return QuinticHermite::absmax_bound(g0, g1, m0, m1, c0, c1);
+  };
+  for (int i = 0; i < n; ++i) {
+    out[i] = bound(u0[i], u1[i], h * v0[i], h * v1[i], h2 * a0[i], h2 * a1[i]);
+    const int b = bi[i], r = ri[i];
+    const double kb = wb[i], kr = wr[i], kbh = kb * h, kbh2 = kb * h2, krh = kr * h, krh2 = kr * h2;
+    out[n + i] =
+        bound(u0[i] + kb * u0[b] + kr * u0[r], u1[i] + kb * u1[b] + kr * u1[r],
+              h * v0[i] + kbh * v0[b] + krh * v0[r], h * v1[i] + kbh * v1[b] + krh * v1[r],
+              h2 * a0[i] + kbh2 * a0[b] + krh2 * a0[r], h2 * a1[i] + kbh2 * a1[b] + krh2 * a1[r]);
+  }
+}
 }  // namespace
 
 void RunRecorder::peak_bounds(int n, const double* u0, const double* u1, const double* v0,
@@ -62,6 +85,15 @@ RunRecorder::RunRecorder(const AssembledRow& row, const std::vector<RowStorey>& 
     rot_h_[i] = storeys[i].rot >= 0 ? storeys[i].p.h : 0.0;
   }
   bounds_.assign(2 * n_, 0.0);
+  // The general path's drift coefficients (peak_bounds_general_kernel).
+  g_below_.assign(n_, 0), g_rot_.assign(n_, 0);
+  g_wb_.assign(n_, 0.0), g_wr_.assign(n_, 0.0);
+  for (int i = 0; i < n_; ++i) {
+    g_below_[i] = below_[i] >= 0 ? below_[i] : i;
+    g_wb_[i] = below_[i] >= 0 ? -1.0 : 0.0;
+    g_rot_[i] = rot_[i] >= 0 ? rot_[i] : i;
+    g_wr_[i] = rot_[i] >= 0 ? -rot_h_[i] : 0.0;
+  }
   for (const auto& s : row.sites) site_dofs_.emplace_back(s.dof_left, s.dof_right);
 }
 
@@ -129,19 +161,25 @@ void RunRecorder::peaks_over_step_general(const Eigen::VectorXd& y0, const Eigen
   const double h2 = h * h;
   const double *u0 = y0.data(), *u1 = y1.data(), *v0 = u0 + n, *v1 = u1 + n;
   const double *a0 = dy0.data() + n, *a1 = dy1.data() + n;
+  double* bound = bounds_.data();
+  peak_bounds_general_kernel(n, u0, u1, v0, v1, a0, a1, g_below_.data(), g_wb_.data(),
+                             g_rot_.data(), g_wr_.data(), h, h2, bound);
   for (int i = 0; i < n; ++i) {
     if (any_held_ && held_[i]) continue;
     // The quintic of the displacement, then of the drift q = u_i - u_below - h_i u_rot (each
-    // coefficient from the values, rates and accelerations at both ends), raised only where its
+    // coefficient from the values, rates and accelerations at both ends), refined only where its
     // bound could raise the peak (QuinticHermite::raise_peak).
+    const bool disp = !(bound[i] <= r_.peak_disp(i)), drift = !(bound[n + i] <= r_.peak_drift(i));
+    if (!disp && !drift) continue;
     const QuinticHermite c{u0[i], u1[i], h * v0[i], h * v1[i], h2 * a0[i], h2 * a1[i]};
-    r_.peak_disp(i) = c.raise_peak(r_.peak_disp(i));
+    if (disp) r_.peak_disp(i) = c.refine_peak(r_.peak_disp(i));
     const int b = below_[i], r = rot_[i];
     if (b < 0 && r < 0) {  // a storey on the ground or a foundation spring: its drift is u_i
       r_.peak_drift(i) = r_.peak_disp(i);
       if (check_collapse_ && r_.peak_drift(i) > collapse_drift_[i]) step_collapse(i, c, t0, h);
       continue;
     }
+    if (!drift) continue;
     QuinticHermite d = c;
     if (b >= 0) {
       d.g0 += -1.0 * u0[b];
@@ -160,7 +198,7 @@ void RunRecorder::peaks_over_step_general(const Eigen::VectorXd& y0, const Eigen
       d.c0 += w * h2 * a0[r];
       d.c1 += w * h2 * a1[r];
     }
-    r_.peak_drift(i) = d.raise_peak(r_.peak_drift(i));
+    r_.peak_drift(i) = d.refine_peak(r_.peak_drift(i));
     if (check_collapse_ && r_.peak_drift(i) > collapse_drift_[i]) step_collapse(i, d, t0, h);
   }
 }

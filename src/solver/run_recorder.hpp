@@ -193,7 +193,11 @@ class RunRecorder {
   std::vector<int> rot_;        // per DOF: its building's base rotation DOF, -1 (fixed base)
   std::vector<double> rot_h_;   // per DOF: its storey's height where rot_ >= 0 [m]
   bool general_ = false;        // a storey on a flexible foundation (issue 29)
-  std::vector<double> bounds_;  // scratch of peaks_over_step (peak_bounds)
+  // Per DOF, the general path's drift as u_i + wb u_below + wr u_rot: the DOFs (the DOF itself
+  // where there is none) and weights (0 there) [-, -m].
+  std::vector<int> g_below_, g_rot_;
+  std::vector<double> g_wb_, g_wr_;
+  std::vector<double> bounds_;                  // scratch of peaks_over_step (peak_bounds)
   std::vector<std::pair<int, int>> site_dofs_;  // per site: left and right floor DOF
   // Collapse: per DOF its storey's collapse drift [m] (infinite: none), building, storey number
   // within it, and the drift at the last sample [m]; the buildings held still.

@@ -9,7 +9,15 @@
 
 namespace pound {
 
-Eigen::VectorXd undamped_periods(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K) {
+namespace {
+// The undamped modes of K x = w^2 M x (M diagonal) with the massless DOFs condensed statically:
+// w ascending [rad/s] and the mode shapes, mass-normalised (phi^T M phi = 1), on every DOF (a
+// massless DOF's entry from its equilibrium, phi_b = -K_bb^-1 K_ba phi_a).
+struct UndampedModes {
+  Eigen::VectorXd w;
+  Eigen::MatrixXd phi;
+};
+UndampedModes undamped_modes(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K, bool shapes) {
   const int n = static_cast<int>(M.rows());
   std::vector<int> a, b;  // DOFs with and without mass
   for (int i = 0; i < n; ++i) (M(i, i) > 0.0 ? a : b).push_back(i);
@@ -27,12 +35,38 @@ Eigen::VectorXd undamped_periods(const Eigen::MatrixXd& M, const Eigen::MatrixXd
   if (nb > 0) Kaa -= Kab * Kbb.ldlt().solve(Kab.transpose());
   const Eigen::VectorXd s = m.cwiseSqrt().cwiseInverse();
   const Eigen::MatrixXd A = s.asDiagonal() * Kaa * s.asDiagonal();
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(A);
-  const Eigen::VectorXd w = eig.eigenvalues().cwiseMax(0.0).cwiseSqrt();  // ascending
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(
+      A, shapes ? Eigen::ComputeEigenvectors : Eigen::EigenvaluesOnly);
+  UndampedModes out;
+  out.w = eig.eigenvalues().cwiseMax(0.0).cwiseSqrt();  // ascending
+  if (!shapes) return out;
+  const Eigen::MatrixXd pa = s.asDiagonal() * eig.eigenvectors();
+  out.phi = Eigen::MatrixXd::Zero(n, na);
+  for (int i = 0; i < na; ++i) out.phi.row(a[i]) = pa.row(i);
+  if (nb > 0) {
+    const Eigen::MatrixXd pb = -Kbb.ldlt().solve(Kab.transpose() * pa);
+    for (int i = 0; i < nb; ++i) out.phi.row(b[i]) = pb.row(i);
+  }
+  return out;
+}
+}  // namespace
+
+Eigen::VectorXd undamped_periods(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K) {
+  const Eigen::VectorXd w = undamped_modes(M, K, false).w;
+  const Eigen::Index na = w.size();
   Eigen::VectorXd periods(na);
-  for (int i = 0; i < na; ++i)
+  for (Eigen::Index i = 0; i < na; ++i)
     periods(i) = w(i) > 0.0 ? 2.0 * M_PI / w(i) : std::numeric_limits<double>::infinity();
   return periods;
+}
+
+Eigen::VectorXd modal_damping_ratios(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K,
+                                     const Eigen::MatrixXd& C) {
+  const UndampedModes md = undamped_modes(M, K, true);
+  Eigen::VectorXd zeta = Eigen::VectorXd::Zero(md.w.size());
+  for (Eigen::Index i = 0; i < md.w.size(); ++i)
+    if (md.w(i) > 0.0) zeta(i) = md.phi.col(i).dot(C * md.phi.col(i)) / (2.0 * md.w(i));
+  return zeta;
 }
 
 BaseMatrices assemble_on_base(const Building& b) {
@@ -50,6 +84,7 @@ BaseMatrices assemble_on_base(const Building& b) {
     out.C = fixed.C;
     out.influence = Eigen::VectorXd::Ones(n);
     out.periods = fixed.periods;
+    out.damping_ratios = modal_damping_ratios(out.M, out.K0, out.C);
     return out;
   }
   const FoundationConstants f = foundation_constants(b.foundation);
@@ -93,6 +128,7 @@ BaseMatrices assemble_on_base(const Building& b) {
   out.C(sway, sway) += f.sway_damping;
   out.C(rot, rot) += f.rocking_damping;
   out.periods = undamped_periods(out.M, out.K0);
+  out.damping_ratios = modal_damping_ratios(out.M, out.K0, out.C);
   return out;
 }
 

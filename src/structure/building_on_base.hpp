@@ -34,6 +34,10 @@ struct BaseMatrices {
   /// Undamped periods with the foundation, without P-Delta, longest first [s]; a massless sway
   /// or rotation is condensed out (it has no mode of its own).
   Eigen::VectorXd periods;
+  /// Per period, its mode's damping ratio phi^T C phi / (2 omega phi^T M phi) [-] (exact for
+  /// Rayleigh or modal damping; with a foundation's dashpots, which do not damp classically, the
+  /// diagonal of the modal damping matrix). A raft on the cone's dashpots is overdamped (> 1).
+  Eigen::VectorXd damping_ratios;
   std::vector<double> heights;  ///< H_j of floor j above the base [m]
   bool flexible = false;        ///< sway and rotation DOFs
   double rayleigh_a1 = 0.0;     ///< the fixed-base building's Rayleigh a1 [s] (tangent damping)
@@ -46,5 +50,10 @@ BaseMatrices assemble_on_base(const Building& b);
 /// The undamped periods of K x = w^2 M x, longest first [s], with the DOFs whose mass is zero
 /// condensed statically (K* = K_aa - K_ab K_bb^-1 K_ba on the others). Needs M diagonal.
 Eigen::VectorXd undamped_periods(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K);
+/// The damping ratio of each mode of undamped_periods(M, K), in its order [-]:
+/// phi^T C phi / (2 omega) for the mass-normalised shape phi (a massless DOF's entry from its
+/// equilibrium); 0 for omega = 0.
+Eigen::VectorXd modal_damping_ratios(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K,
+                                     const Eigen::MatrixXd& C);
 
 }  // namespace pound

@@ -75,6 +75,7 @@ AssembledRow assemble(const BuildingRow& row) {
       }
     }
     out.periods.push_back(m.periods);
+    out.damping_ratios.push_back(m.damping_ratios);
     const StoreyLaw& law = find_storey_law(bd.hysteresis, bd.name);
     // Linear: the forces are K u and the damping C v with constant matrices.
     out.linear = out.linear && law.linear();
@@ -132,6 +133,19 @@ double shortest_period(const AssembledRow& a) {
   for (const auto& p : a.periods)
     for (int i = 0; i < p.size(); ++i)
       if (p(i) > 0.0 && std::isfinite(p(i))) t = std::min(t, p(i));
+  return t;
+}
+
+double step_period(const AssembledRow& a) {
+  if (a.damping_ratios.size() != a.periods.size()) return shortest_period(a);
+  double t = std::numeric_limits<double>::infinity();
+  for (std::size_t b = 0; b < a.periods.size(); ++b) {
+    const Eigen::VectorXd& p = a.periods[b];
+    const Eigen::VectorXd& z = a.damping_ratios[b];
+    for (int i = 0; i < p.size(); ++i)
+      if (p(i) > 0.0 && std::isfinite(p(i)) && !(i < z.size() && z(i) >= 1.0))
+        t = std::min(t, p(i));
+  }
   return t;
 }
 

@@ -63,6 +63,8 @@ struct AssembledRow {
   Eigen::VectorXd inv_mass;              ///< 1 / M_ii [1/kg]
   std::vector<int> offset;               ///< first global DOF of each building
   std::vector<Eigen::VectorXd> periods;  ///< per building [s]
+  /// Per building, the damping ratio of each period's mode [-] (BaseMatrices::damping_ratios).
+  std::vector<Eigen::VectorXd> damping_ratios;
   std::vector<ContactSite> sites;
   std::vector<RowStorey> storeys;  ///< one per floor DOF
   bool linear = true;              ///< every storey law linear (elastic)
@@ -108,6 +110,11 @@ std::vector<RowStorey> elastic_storeys(const AssembledRow& a);
 /// The shortest positive finite undamped period of the row's buildings [s]; infinity when none
 /// (free bodies).
 double shortest_period(const AssembledRow& a);
+/// The shortest period of a mode that oscillates [s]: of the periods whose mode's damping ratio
+/// is below 1 (an overdamped mode, a raft on its radiation dashpots, does not oscillate: it
+/// needs no steps of a twentieth of its undamped period). The solvers' automatic step
+/// (T_min / 20) is taken from it. shortest_period(a) when the ratios are not known.
+double step_period(const AssembledRow& a);
 
 /// Number of colliding levels of pair p (min floor count).
 int colliding_levels(const BuildingRow& row, int pair);

@@ -56,8 +56,15 @@ TEST(FoundationSteps, ExactStepsPerBuildingAgreeWithDormandPrince) {
       const RowSimulation e = on_soil(law, p_delta, exact);
       const RowSimulation d = on_soil(law, p_delta, dopri);
       EXPECT_EQ(d.pounding.exact_steps + d.free.exact_steps, 0) << what;
-      // (yielding storeys' events hand many grid steps to Dormand-Prince)
-      EXPECT_GT(e.free.exact_steps, (law == "elastic" ? 0.75 : 0.2) * e.free.steps) << what;
+      // (yielding storeys' events hand many grid steps to Dormand-Prince; IMK storeys meet a new
+      // tangent stiffness at every excursion, so that few grid points reach a propagator:
+      // there the exact steps must at least cost no steps)
+      if (law == "imk") {
+        EXPECT_GT(e.free.exact_steps, 0) << what;
+        EXPECT_LT(e.free.steps, 1.1 * d.free.steps) << what;
+      } else {
+        EXPECT_GT(e.free.exact_steps, (law == "elastic" ? 0.75 : 0.5) * e.free.steps) << what;
+      }
       EXPECT_EQ(e.pounding.events, d.pounding.events) << what;
       EXPECT_EQ(e.free.events, d.free.events) << what;
       auto near = [&](double x, double y, double rel, const char* q) {

@@ -232,5 +232,139 @@ TEST(BuildingOnBase, ConeAboveOneThirdRocksTheTrappedSoil) {
   }
 }
 
+// The damping ratio of each mode, phi^T C phi / (2 omega phi^T M phi), is a ratio of quadratic
+// forms and does not depend on the coordinates: the relative model above, with the fixed-base
+// building's damping on the deformations u_j and the dashpots on u0 and theta (C =
+// blockdiag(C_fixed, C_x, C_theta)), solved here by a generalized eigensolver, gives the
+// library's BaseMatrices::damping_ratios. A massive base; longest period first.
+Eigen::VectorXd relative_model_damping(const Building& b) {
+  const FoundationConstants f = foundation_constants(b.foundation);
+  const int n = b.floors(), m = n + 2, sway = n, rot = n + 1;
+  Eigen::MatrixXd M = Eigen::MatrixXd::Zero(m, m), K = Eigen::MatrixXd::Zero(m, m);
+  Eigen::MatrixXd C = Eigen::MatrixXd::Zero(m, m);
+  const BuildingMatrices fixed = assemble(b);
+  C.topLeftCorner(n, n) = fixed.C;
+  K.topLeftCorner(n, n) = fixed.K;
+  double H = 0.0, J = 0.0;
+  for (int j = 0; j < n; ++j) {
+    H += b.storey_heights[j];
+    const double mj = b.masses[j];
+    M(j, j) = mj;
+    M(j, sway) = M(sway, j) = mj;
+    M(j, rot) = M(rot, j) = mj * H;
+    M(sway, sway) += mj;
+    M(sway, rot) += mj * H;
+    M(rot, rot) += mj * H * H;
+    J += j < static_cast<int>(f.floor_inertias.size()) ? f.floor_inertias[j] : 0.0;
+  }
+  M(rot, sway) = M(sway, rot);
+  M(sway, sway) += f.foundation_mass;
+  M(rot, rot) += f.foundation_inertia + J;
+  K(sway, sway) = f.sway_stiffness;
+  K(rot, rot) = f.rocking_stiffness;
+  C(sway, sway) = f.sway_damping;
+  C(rot, rot) = f.rocking_damping;
+  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eig(K, M);  // phi^T M phi = 1
+  Eigen::VectorXd zeta(m);
+  for (int i = 0; i < m; ++i) {  // ascending omega^2: longest period first
+    const Eigen::VectorXd phi = eig.eigenvectors().col(i);
+    zeta(i) = phi.dot(C * phi) / (2.0 * std::sqrt(eig.eigenvalues()(i)));
+  }
+  return zeta;
+}
+
+// The modal damping ratios against the relative model: on a fixed base (Rayleigh damping, 5 %
+// at its two anchor modes), with springs and dashpots, and for the soft-soil study's raft on
+// Wolf's cone (studies/ssi-soft-soil.ini's 5-storey building), whose shortest-period mode is
+// overdamped by the cone's radiation dashpots (about 5: C_x / (2 sqrt(K_x m0)) alone).
+TEST(BuildingOnBase, ModalDampingRatiosMatchTheRelativeModel) {
+  Building three;
+  three.masses = {1.2e5, 1.0e5, 0.7e5};
+  three.stiffnesses = {9e7, 7e7, 4e7};
+  three.storey_heights = {4.0, 3.2, 3.0};
+  three.damping_ratio = 0.05;
+  {
+    const BaseMatrices fixed = assemble_on_base(three);
+    ASSERT_EQ(fixed.damping_ratios.size(), 3);
+    const BuildingMatrices bm = assemble(three);
+    Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eig(bm.K, bm.M);
+    for (int i = 0; i < 3; ++i) {
+      const Eigen::VectorXd phi = eig.eigenvectors().col(i);
+      EXPECT_NEAR(fixed.damping_ratios(i),
+                  phi.dot(bm.C * phi) / (2.0 * std::sqrt(eig.eigenvalues()(i))), 1e-10);
+      EXPECT_LT(fixed.damping_ratios(i), 0.2);
+    }
+    EXPECT_NEAR(fixed.damping_ratios(0), 0.05, 1e-10);  // an anchor of the Rayleigh damping
+  }
+  Building on_springs = three;
+  on_springs.foundation = test::springs_foundation(6e8, 2e11, 3e7, 4e9, 2e5, 3e6);
+  on_springs.foundation.floor_inertias = {1e6, 8e5, 6e5};
+  Building on_cone = uniform_building(5, 48e3, 8.4e7);
+  on_cone.damping_ratio = 0.05;
+  on_cone.foundation = test::cone_foundation(11.3, 150.0, 1800.0, 0.4, 48e3, 1.6e6);
+  on_cone.foundation.floor_inertias = {1.6e6};
+  for (const Building* b : {&on_springs, &on_cone}) {
+    const BaseMatrices bm = assemble_on_base(*b);
+    const Eigen::VectorXd expected = relative_model_damping(*b);
+    ASSERT_EQ(bm.damping_ratios.size(), expected.size());
+    for (int i = 0; i < expected.size(); ++i)
+      EXPECT_NEAR(bm.damping_ratios(i), expected(i), 1e-9 * std::max(1.0, expected(i)))
+          << "mode " << i + 1;
+  }
+  const BaseMatrices cone = assemble_on_base(on_cone);
+  const FoundationConstants f = foundation_constants(on_cone.foundation);
+  EXPECT_NEAR(f.sway_damping / (2.0 * std::sqrt(f.sway_stiffness * 48e3)), 5.2, 0.1);
+  EXPECT_GT(cone.damping_ratios(cone.damping_ratios.size() - 1), 1.0);
+  // The ratios are the classical estimate; the state matrix [0 I; -M^-1 K, -M^-1 C] of the
+  // non-classically damped system says the same: as many oscillating root pairs as modes below
+  // 1 (the raft's sway and rocking become four real roots, -2243, -244, -45 and -22 1/s), the
+  // fastest at the shortest such mode's period to 1 %.
+  const int n = cone.dofs();
+  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(2 * n, 2 * n);
+  A.topRightCorner(n, n).setIdentity();
+  const Eigen::MatrixXd Mi = cone.M.inverse();
+  A.bottomLeftCorner(n, n) = -Mi * cone.K0;
+  A.bottomRightCorner(n, n) = -Mi * cone.C;
+  Eigen::EigenSolver<Eigen::MatrixXd> es(A);
+  int pairs = 0, below = 0;
+  double fastest = 0.0, shortest = 1e9;
+  for (int i = 0; i < 2 * n; ++i)
+    if (es.eigenvalues()(i).imag() > 0.0) {
+      ++pairs;
+      fastest = std::max(fastest, es.eigenvalues()(i).imag());
+    }
+  for (int i = 0; i < cone.periods.size(); ++i)
+    if (cone.damping_ratios(i) < 1.0) ++below, shortest = std::min(shortest, cone.periods(i));
+  EXPECT_EQ(pairs, below);
+  EXPECT_EQ(below, 5);
+  EXPECT_NEAR(2.0 * M_PI / fastest, shortest, 0.01 * shortest);
+}
+
+// The solvers' automatic step is a twentieth of the shortest period of a mode that oscillates
+// (step_period): on fixed bases every mode does, so it is the shortest period bit for bit; for
+// the soft-soil pair on cone rafts the overdamped raft modes (undamped periods of 0.01-0.03 s)
+// are left out, and what remains is the buildings' own highest storey modes, within 15 % of
+// the fixed-base buildings' shortest periods (the foundation lengthens them a little).
+TEST(BuildingOnBase, StepPeriodLeavesOutOverdampedModes) {
+  BuildingRow row;
+  row.buildings = {uniform_building(5, 48e3, 8.4e7), uniform_building(3, 29e3, 6.7e7)};
+  row.gaps = {{0.01, 0.01, 0.01}};
+  for (Building& b : row.buildings) b.damping_ratio = 0.05;
+  const AssembledRow fixed = assemble(row);
+  EXPECT_EQ(step_period(fixed), shortest_period(fixed));
+  row.buildings[0].foundation = test::cone_foundation(11.3, 150.0, 1800.0, 0.4, 48e3, 1.6e6);
+  row.buildings[0].foundation.floor_inertias = {1.6e6};
+  row.buildings[1].foundation = test::cone_foundation(6.8, 150.0, 1800.0, 0.4, 29e3, 3.48e5);
+  row.buildings[1].foundation.floor_inertias = {3.48e5};
+  const AssembledRow soil = assemble(row);
+  EXPECT_LT(shortest_period(soil), 0.04);
+  EXPECT_GT(step_period(soil), shortest_period(soil));
+  EXPECT_GE(step_period(soil), shortest_period(fixed));
+  EXPECT_LT(step_period(soil), 1.15 * shortest_period(fixed));
+  for (std::size_t b = 0; b < soil.periods.size(); ++b)
+    for (int i = 0; i < soil.periods[b].size(); ++i)
+      if (soil.periods[b](i) < step_period(soil)) EXPECT_GE(soil.damping_ratios[b](i), 1.0);
+}
+
 }  // namespace
 }  // namespace pound
