@@ -43,11 +43,19 @@ Foundation springs(double kx, double kr, double m0 = 0.0, double i0 = 0.0,
   return f;
 }
 
-// The undamped periods of the relative model above, longest first [s].
-Eigen::VectorXd relative_model_periods(const Building& b) {
+// The relative model above: M, K and, with the fixed-base building's damping on the
+// deformations u_j and the foundation's dashpots on u0 and theta, C = blockdiag(C_fixed, C_x,
+// C_theta).
+struct RelativeModel {
+  Eigen::MatrixXd M, K, C;
+};
+RelativeModel relative_model(const Building& b) {
   const FoundationConstants f = foundation_constants(b.foundation);
   const int n = b.floors(), m = n + 2, sway = n, rot = n + 1;
-  Eigen::MatrixXd M = Eigen::MatrixXd::Zero(m, m), K = Eigen::MatrixXd::Zero(m, m);
+  RelativeModel r;
+  r.M = Eigen::MatrixXd::Zero(m, m), r.K = Eigen::MatrixXd::Zero(m, m);
+  r.C = Eigen::MatrixXd::Zero(m, m);
+  Eigen::MatrixXd &M = r.M, &K = r.K;
   double H = 0.0, J = 0.0;
   for (int j = 0; j < n; ++j) {
     H += b.storey_heights[j];
@@ -72,6 +80,17 @@ Eigen::VectorXd relative_model_periods(const Building& b) {
   M(rot, rot) += f.foundation_inertia + J;  // (the cone's trapped soil is in foundation_inertia)
   K(sway, sway) = f.sway_stiffness;
   K(rot, rot) = f.rocking_stiffness;
+  r.C.topLeftCorner(n, n) = assemble(b).C;
+  r.C(sway, sway) = f.sway_damping;
+  r.C(rot, rot) = f.rocking_damping;
+  return r;
+}
+
+// The undamped periods of the relative model, longest first [s].
+Eigen::VectorXd relative_model_periods(const Building& b) {
+  const RelativeModel r = relative_model(b);
+  const Eigen::MatrixXd &M = r.M, &K = r.K;
+  const int m = static_cast<int>(M.rows());
   // mu = 1 / omega^2 are the eigenvalues of K^-1/2 M K^-1/2 (K positive definite).
   Eigen::LLT<Eigen::MatrixXd> llt(K);
   const Eigen::MatrixXd L = llt.matrixL();
@@ -233,42 +252,17 @@ TEST(BuildingOnBase, ConeAboveOneThirdRocksTheTrappedSoil) {
 }
 
 // The damping ratio of each mode, phi^T C phi / (2 omega phi^T M phi), is a ratio of quadratic
-// forms and does not depend on the coordinates: the relative model above, with the fixed-base
-// building's damping on the deformations u_j and the dashpots on u0 and theta (C =
-// blockdiag(C_fixed, C_x, C_theta)), solved here by a generalized eigensolver, gives the
-// library's BaseMatrices::damping_ratios. A massive base; longest period first.
+// forms and does not depend on the coordinates: the relative model, solved here by a
+// generalized eigensolver, gives the library's BaseMatrices::damping_ratios. A massive base;
+// longest period first.
 Eigen::VectorXd relative_model_damping(const Building& b) {
-  const FoundationConstants f = foundation_constants(b.foundation);
-  const int n = b.floors(), m = n + 2, sway = n, rot = n + 1;
-  Eigen::MatrixXd M = Eigen::MatrixXd::Zero(m, m), K = Eigen::MatrixXd::Zero(m, m);
-  Eigen::MatrixXd C = Eigen::MatrixXd::Zero(m, m);
-  const BuildingMatrices fixed = assemble(b);
-  C.topLeftCorner(n, n) = fixed.C;
-  K.topLeftCorner(n, n) = fixed.K;
-  double H = 0.0, J = 0.0;
-  for (int j = 0; j < n; ++j) {
-    H += b.storey_heights[j];
-    const double mj = b.masses[j];
-    M(j, j) = mj;
-    M(j, sway) = M(sway, j) = mj;
-    M(j, rot) = M(rot, j) = mj * H;
-    M(sway, sway) += mj;
-    M(sway, rot) += mj * H;
-    M(rot, rot) += mj * H * H;
-    J += j < static_cast<int>(f.floor_inertias.size()) ? f.floor_inertias[j] : 0.0;
-  }
-  M(rot, sway) = M(sway, rot);
-  M(sway, sway) += f.foundation_mass;
-  M(rot, rot) += f.foundation_inertia + J;
-  K(sway, sway) = f.sway_stiffness;
-  K(rot, rot) = f.rocking_stiffness;
-  C(sway, sway) = f.sway_damping;
-  C(rot, rot) = f.rocking_damping;
-  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eig(K, M);  // phi^T M phi = 1
+  const RelativeModel r = relative_model(b);
+  const int m = static_cast<int>(r.M.rows());
+  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eig(r.K, r.M);  // phi^T M phi = 1
   Eigen::VectorXd zeta(m);
   for (int i = 0; i < m; ++i) {  // ascending omega^2: longest period first
     const Eigen::VectorXd phi = eig.eigenvectors().col(i);
-    zeta(i) = phi.dot(C * phi) / (2.0 * std::sqrt(eig.eigenvalues()(i)));
+    zeta(i) = phi.dot(r.C * phi) / (2.0 * std::sqrt(eig.eigenvalues()(i)));
   }
   return zeta;
 }
