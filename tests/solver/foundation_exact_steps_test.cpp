@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "../support/buildings.hpp"
+#include "../support/reference_inputs.hpp"
 #include "motion/motion_reader.hpp"
 #include "simulation/simulate_row.hpp"
 
@@ -51,10 +52,7 @@ BuildingRow soft_pair(const std::string& law, int mass, double gap, bool heavy) 
 
 // The first 6 s of El Centro NS and 1 s of free vibration.
 RowSimulation run(const BuildingRow& row, const IntegratorSettings& integ, bool energy) {
-  MotionFileSpec spec;
-  spec.path = std::string(POUND_SOURCE_DIR) + "/motions/elcentro-1940-ns.dat";
-  GroundMotion g = read_motion(spec);
-  g.accel.resize(301);
+  const GroundMotion g = test::elcentro_first(301);
   ContactSpec c;
   c.model = "hc-linear";
   c.params.k = 50 * 8.4e7;

@@ -35,30 +35,15 @@
 #include <vector>
 
 #include "../support/buildings.hpp"
+#include "../support/reference_inputs.hpp"
 #include "motion/motion_reader.hpp"
 #include "simulation/simulate_row.hpp"
 
 namespace pound {
 namespace {
 
-GroundMotion elcentro_first(int samples) {
-  MotionFileSpec spec;
-  spec.path = std::string(POUND_SOURCE_DIR) + "/motions/elcentro-1940-ns.dat";
-  GroundMotion m = read_motion(spec);
-  m.accel.resize(static_cast<std::size_t>(samples));
-  return m;
-}
-
-// Exact Hunt-Crossley factor a(e) (Th. 4.20): (1 + e) a = ln((1 + a) / (1 - e a)), 0 < a < 1/e.
-double hunt_crossley_a(double e) {
-  auto g = [e](double a) { return std::log((1 + a) / (1 - e * a)) - (1 + e) * a; };
-  double lo = 1e-6 / e, hi = (1 - 1e-15) / e;
-  for (int i = 0; i < 200; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    (g(mid) < 0 ? lo : hi) = mid;
-  }
-  return 0.5 * (lo + hi);
-}
+using test::elcentro_first;
+using test::hunt_crossley_a;
 
 // A building as the test gives it: floors, storeys, Rayleigh damping, and its foundation.
 struct Spec {

@@ -7,6 +7,8 @@
 #include <string>
 
 #include "../support/buildings.hpp"
+#include "../support/reference_inputs.hpp"
+#include "../support/same_run.hpp"
 #include "motion/motion_reader.hpp"
 #include "simulation/simulate_row.hpp"
 
@@ -29,10 +31,7 @@ RowSimulation on_soil(const std::string& law, bool p_delta, const IntegratorSett
   row.buildings[0].foundation = test::cone_foundation(11.3, 120.0, 1800.0, 0.4, 48e3, 1.6e6);
   row.buildings[0].foundation.floor_inertias = {1.6e6};
   row.buildings[1].foundation = test::springs_foundation(6.0e8, 2.5e10, 2.6e7, 6.0e8, 29e3, 3.48e5);
-  MotionFileSpec spec;
-  spec.path = std::string(POUND_SOURCE_DIR) + "/motions/elcentro-1940-ns.dat";
-  GroundMotion g = read_motion(spec);
-  g.accel.resize(static_cast<std::size_t>(8.0 / g.dt) + 1);
+  const GroundMotion g = test::elcentro_first(401);  // 8 s
   ContactSpec c;
   c.model = "hc-linear";
   c.params.k = 50 * 8.4e7;
@@ -44,9 +43,8 @@ RowSimulation on_soil(const std::string& law, bool p_delta, const IntegratorSett
 }
 
 TEST(FoundationSteps, ExactStepsPerBuildingAgreeWithDormandPrince) {
-  // As Yielding.ExactStepsBetweenEventsAgreeWithDormandPrince on fixed bases: both at rtol
-  // 1e-10, the same events and impacts, peaks within the Dormand-Prince error; accelerations
-  // and contact forces within their sampling at the steps' ends.
+  // As Yielding.ExactStepsBetweenEventsAgreeWithDormandPrince on fixed bases
+  // (support/same_run.hpp).
   IntegratorSettings exact, dopri;
   exact.rtol = dopri.rtol = 1e-10;
   dopri.exact_free = false;
@@ -65,28 +63,7 @@ TEST(FoundationSteps, ExactStepsPerBuildingAgreeWithDormandPrince) {
       } else {
         EXPECT_GT(e.free.exact_steps, (law == "elastic" ? 0.75 : 0.5) * e.free.steps) << what;
       }
-      EXPECT_EQ(e.pounding.events, d.pounding.events) << what;
-      EXPECT_EQ(e.free.events, d.free.events) << what;
-      auto near = [&](double x, double y, double rel, const char* q) {
-        EXPECT_NEAR(x, y, rel * std::fabs(y) + 1e-12) << what << " " << q;
-      };
-      for (std::size_t i = 0; i < e.floors.size(); ++i) {
-        near(e.floors[i].disp_pounding, d.floors[i].disp_pounding, 1e-6, "disp");
-        near(e.floors[i].disp_free, d.floors[i].disp_free, 1e-6, "disp free");
-        near(e.floors[i].peak_drift_ratio_pounding, d.floors[i].peak_drift_ratio_pounding, 1e-6,
-             "drift");
-        near(e.floors[i].residual_drift_ratio_free, d.floors[i].residual_drift_ratio_free, 1e-5,
-             "residual");
-        near(e.floors[i].accel_pounding, d.floors[i].accel_pounding, 1e-2, "accel");
-        near(e.floors[i].accel_free, d.floors[i].accel_free, 1e-2, "accel free");
-      }
-      int impacts = 0;
-      for (std::size_t k = 0; k < e.sites.size(); ++k) {
-        EXPECT_EQ(e.sites[k].impacts, d.sites[k].impacts) << what;
-        impacts += e.sites[k].impacts;
-        near(e.sites[k].peak_force, d.sites[k].peak_force, 2e-3, "force");
-        near(e.sites[k].approach_free, d.sites[k].approach_free, 1e-6, "approach");
-      }
+      const int impacts = test::expect_same_run(e, d, what);
       EXPECT_GT(impacts, 0) << what;
     }
   }

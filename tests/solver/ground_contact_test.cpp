@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "../support/buildings.hpp"
+#include "../support/reference_inputs.hpp"
 #include "ground/row_ground.hpp"
 #include "motion/motion_reader.hpp"
 #include "simulation/simulate_row.hpp"
@@ -24,28 +25,11 @@
 namespace pound {
 namespace {
 
-GroundMotion elcentro_first(int samples) {
-  MotionFileSpec spec;
-  spec.path = std::string(POUND_SOURCE_DIR) + "/motions/elcentro-1940-ns.dat";
-  GroundMotion m = read_motion(spec);
-  m.accel.resize(static_cast<std::size_t>(samples));
-  return m;
-}
+using test::elcentro_first;
+using test::hunt_crossley_a;
 
 // A contact law written here from physics.md section 2: F(delta, ddelta, v0) [N].
 using Law = std::function<double(double, double, double)>;
-
-// Exact Hunt-Crossley factor a(e) (Th. 4.20): (1 + e) a = ln((1 + a) / (1 - e a)), 0 < a < 1/e,
-// by bisection (the difference is negative just above 0 and grows to +inf at 1/e).
-double hunt_crossley_a(double e) {
-  auto g = [e](double a) { return std::log((1 + a) / (1 - e * a)) - (1 + e) * a; };
-  double lo = 1e-6 / e, hi = (1 - 1e-15) / e;
-  for (int i = 0; i < 200; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    (g(mid) < 0 ? lo : hi) = mid;
-  }
-  return 0.5 * (lo + hi);
-}
 
 // hc-linear: F = k delta (1 + a ddelta / max(v0, v0_min)), clamped at 0 (v0_min = 1e-3 m/s).
 Law hc_linear(double k, double e) {
