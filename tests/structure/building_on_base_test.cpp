@@ -357,7 +357,9 @@ TEST(BuildingOnBase, StepPeriodLeavesOutOverdampedModes) {
   EXPECT_LT(step_period(soil), 1.15 * shortest_period(fixed));
   for (std::size_t b = 0; b < soil.periods.size(); ++b)
     for (int i = 0; i < soil.periods[b].size(); ++i)
-      if (soil.periods[b](i) < step_period(soil)) EXPECT_GE(soil.damping_ratios[b](i), 1.0);
+      if (soil.periods[b](i) < step_period(soil)) {
+        EXPECT_GE(soil.damping_ratios[b](i), 1.0);
+      }
 }
 
 }  // namespace
