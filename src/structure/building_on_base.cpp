@@ -9,15 +9,8 @@
 
 namespace pound {
 
-namespace {
-// The undamped modes of K x = w^2 M x (M diagonal) with the massless DOFs condensed statically:
-// w ascending [rad/s] and the mode shapes, mass-normalised (phi^T M phi = 1), on every DOF (a
-// massless DOF's entry from its equilibrium, phi_b = -K_bb^-1 K_ba phi_a).
-struct UndampedModes {
-  Eigen::VectorXd w;
-  Eigen::MatrixXd phi;
-};
-UndampedModes undamped_modes(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K, bool shapes) {
+ModalProperties modal_properties(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K,
+                                 const Eigen::MatrixXd& C) {
   const int n = static_cast<int>(M.rows());
   std::vector<int> a, b;  // DOFs with and without mass
   for (int i = 0; i < n; ++i) (M(i, i) > 0.0 ? a : b).push_back(i);
@@ -32,41 +25,29 @@ UndampedModes undamped_modes(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K,
   for (int i = 0; i < nb; ++i)
     for (int j = 0; j < nb; ++j) Kbb(i, j) = K(b[i], b[j]);
   // Static condensation of the massless DOFs (Guyan): their forces are in equilibrium.
-  if (nb > 0) Kaa -= Kab * Kbb.ldlt().solve(Kab.transpose());
+  const Eigen::LDLT<Eigen::MatrixXd> kbb(Kbb);
+  if (nb > 0) Kaa -= Kab * kbb.solve(Kab.transpose());
   const Eigen::VectorXd s = m.cwiseSqrt().cwiseInverse();
   const Eigen::MatrixXd A = s.asDiagonal() * Kaa * s.asDiagonal();
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(
-      A, shapes ? Eigen::ComputeEigenvectors : Eigen::EigenvaluesOnly);
-  UndampedModes out;
-  out.w = eig.eigenvalues().cwiseMax(0.0).cwiseSqrt();  // ascending
-  if (!shapes) return out;
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(A);
+  const Eigen::VectorXd w = eig.eigenvalues().cwiseMax(0.0).cwiseSqrt();  // ascending
+  // The mode shapes, mass-normalised (phi^T M phi = 1), on every DOF: a massless DOF's entry
+  // from its equilibrium, phi_b = -K_bb^-1 K_ba phi_a.
   const Eigen::MatrixXd pa = s.asDiagonal() * eig.eigenvectors();
-  out.phi = Eigen::MatrixXd::Zero(n, na);
-  for (int i = 0; i < na; ++i) out.phi.row(a[i]) = pa.row(i);
+  Eigen::MatrixXd phi = Eigen::MatrixXd::Zero(n, na);
+  for (int i = 0; i < na; ++i) phi.row(a[i]) = pa.row(i);
   if (nb > 0) {
-    const Eigen::MatrixXd pb = -Kbb.ldlt().solve(Kab.transpose() * pa);
-    for (int i = 0; i < nb; ++i) out.phi.row(b[i]) = pb.row(i);
+    const Eigen::MatrixXd pb = -kbb.solve(Kab.transpose() * pa);
+    for (int i = 0; i < nb; ++i) phi.row(b[i]) = pb.row(i);
+  }
+  ModalProperties out;
+  out.periods.resize(na);
+  out.damping_ratios = Eigen::VectorXd::Zero(na);
+  for (int i = 0; i < na; ++i) {
+    out.periods(i) = w(i) > 0.0 ? 2.0 * M_PI / w(i) : std::numeric_limits<double>::infinity();
+    if (w(i) > 0.0) out.damping_ratios(i) = phi.col(i).dot(C * phi.col(i)) / (2.0 * w(i));
   }
   return out;
-}
-}  // namespace
-
-Eigen::VectorXd undamped_periods(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K) {
-  const Eigen::VectorXd w = undamped_modes(M, K, false).w;
-  const Eigen::Index na = w.size();
-  Eigen::VectorXd periods(na);
-  for (Eigen::Index i = 0; i < na; ++i)
-    periods(i) = w(i) > 0.0 ? 2.0 * M_PI / w(i) : std::numeric_limits<double>::infinity();
-  return periods;
-}
-
-Eigen::VectorXd modal_damping_ratios(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K,
-                                     const Eigen::MatrixXd& C) {
-  const UndampedModes md = undamped_modes(M, K, true);
-  Eigen::VectorXd zeta = Eigen::VectorXd::Zero(md.w.size());
-  for (Eigen::Index i = 0; i < md.w.size(); ++i)
-    if (md.w(i) > 0.0) zeta(i) = md.phi.col(i).dot(C * md.phi.col(i)) / (2.0 * md.w(i));
-  return zeta;
 }
 
 BaseMatrices assemble_on_base(const Building& b) {
@@ -83,8 +64,8 @@ BaseMatrices assemble_on_base(const Building& b) {
     out.Kg = fixed.Kg;
     out.C = fixed.C;
     out.influence = Eigen::VectorXd::Ones(n);
-    out.periods = fixed.periods;
-    out.damping_ratios = modal_damping_ratios(out.M, out.K0, out.C);
+    out.periods = fixed.periods;  // (Building's own periods, as before foundations)
+    out.damping_ratios = modal_properties(out.M, out.K0, out.C).damping_ratios;
     return out;
   }
   const FoundationConstants f = foundation_constants(b.foundation);
@@ -127,8 +108,9 @@ BaseMatrices assemble_on_base(const Building& b) {
   out.C = T.transpose() * fixed.C * T;
   out.C(sway, sway) += f.sway_damping;
   out.C(rot, rot) += f.rocking_damping;
-  out.periods = undamped_periods(out.M, out.K0);
-  out.damping_ratios = modal_damping_ratios(out.M, out.K0, out.C);
+  ModalProperties modes = modal_properties(out.M, out.K0, out.C);
+  out.periods = std::move(modes.periods);
+  out.damping_ratios = std::move(modes.damping_ratios);
   return out;
 }
 

@@ -47,13 +47,14 @@ struct BaseMatrices {
 /// The matrices of `b` on its foundation (b.foundation; fixed: the fixed-base building's).
 BaseMatrices assemble_on_base(const Building& b);
 
-/// The undamped periods of K x = w^2 M x, longest first [s], with the DOFs whose mass is zero
-/// condensed statically (K* = K_aa - K_ab K_bb^-1 K_ba on the others). Needs M diagonal.
-Eigen::VectorXd undamped_periods(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K);
-/// The damping ratio of each mode of undamped_periods(M, K), in its order [-]:
-/// phi^T C phi / (2 omega) for the mass-normalised shape phi (a massless DOF's entry from its
-/// equilibrium); 0 for omega = 0.
-Eigen::VectorXd modal_damping_ratios(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K,
-                                     const Eigen::MatrixXd& C);
+/// The undamped modes of K x = w^2 M x (M diagonal; the DOFs whose mass is zero condensed
+/// statically, K* = K_aa - K_ab K_bb^-1 K_ba on the others), longest period first: their
+/// periods [s] and damping ratios phi^T C phi / (2 omega) for the mass-normalised shapes phi (a
+/// massless DOF's entry from its equilibrium; 0 for omega = 0) [-].
+struct ModalProperties {
+  Eigen::VectorXd periods, damping_ratios;
+};
+ModalProperties modal_properties(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K,
+                                 const Eigen::MatrixXd& C);
 
 }  // namespace pound
