@@ -10,9 +10,21 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 samples=()
 if [ "${1:-}" = "--samples" ]; then samples=(--samples "$2"); fi
+# Each stage prints its wall time; the build makes the program alone (the tests, the Python
+# module and the benchmarks are built by scripts/test.sh, which runs them).
+t_stage=$(date +%s)
+stage_done() {
+  local now
+  now=$(date +%s)
+  echo "== [$1: $((now - t_stage)) s]"
+  t_stage=$now
+}
 bash scripts/install-deps.sh
+stage_done "packages"
 cmake --preset release >/dev/null
-cmake --build --preset release -j "$(nproc)"
+stage_done "configure"
+cmake --build --preset release -j "$(nproc)" --target pound
+stage_done "build (pound)"
 out=results/default
 mkdir -p "$out"
 mpi=(mpirun -np 2)
@@ -30,6 +42,7 @@ if [[ $rc -eq 4 ]]; then
 elif [[ $rc -ne 0 ]]; then
   exit "$rc"
 fi
+stage_done "campaign"
 echo "== build/bin/pound fragility --input $out/campaign.h5 --out $out/fragility"
 build/bin/pound fragility --input "$out/campaign.h5" --out "$out/fragility"
 # Inputs of the figures that the campaign file does not hold: 100 motions like the default
@@ -47,9 +60,11 @@ echo "   (the whole table: $out/summary.txt)"
 # The risk run writes its files first and its table last, so that the answer ends the output.
 build/bin/pound risk --input "$out/campaign.h5" --hazard studies/hazard-los-angeles-pga.csv \
   --out "$out/risk" > "$out/risk.txt"
+stage_done "analyses"
 /usr/bin/python3 scripts/plot_results.py --campaign "$out/campaign.h5" --fragility "$out/fragility" \
   --motions "$out/motions/motions.h5" --histories "$out/ch8-histories.h5" --risk "$out/risk" \
   --out "$out/plots"
+stage_done "figures"
 echo "== results:  $out/campaign.h5 (samples, /amplification; schema in docs/campaign.md)"
 echo "             $out/fragility/ (curves.csv, shift.csv, observations.csv, sensitivity.csv, fragility.h5)"
 echo "             $out/risk/ (risk_gaps.csv, code_rules.csv, damage_maf.csv, risk.h5; docs/risk.md)"

@@ -110,6 +110,8 @@ int run_simulate(int argc, const char* const* argv) {
                "PGA %.4g g)\n",
                setup.row.buildings.size(), setup.contact.model.c_str(), motion.name.c_str(),
                motion.accel.size(), motion.dt, motion.pga() / kGravity);
+  for (const std::string& line : describe_sites(setup.row))
+    std::fprintf(stderr, "pound simulate: %s\n", line.c_str());
   const SimulationRun run = run_simulation(setup);
   if (setup.is_sears)
     std::fprintf(stderr, "pound simulate: damped Sears model, step %.3g s\n", run.sears_dt_s);

@@ -52,6 +52,10 @@ RowContactLayout make_layout(const BuildingRow& row, const AssembledRow& a,
   };
   for (std::size_t s = 0; s < a.sites.size(); ++s) {
     const ContactSite& site = a.sites[s];
+    if (site.column())
+      throw InputError("damped Sears model: " + describe_site(row, site) +
+                       " is slab to column, which the Sears path does not model yet (issue "
+                       "36); use a lumped contact model, or align the floors");
     const int fl = floor_index(site.dof_left), fr = floor_index(site.dof_right);
     L.floors[fl].site_right = static_cast<int>(s);  // the left building's floor: its x = l end
     L.floors[fr].site_left = static_cast<int>(s);   // the right building's floor: its x = 0 end
@@ -62,8 +66,8 @@ RowContactLayout make_layout(const BuildingRow& row, const AssembledRow& a,
     law.force_cap_N = model.force_cap_N;
     if (model.contact == ContactKind::flat) {
       if (!(model.D >= 1.0)) throw InputError("damped Sears model: D must be >= 1");
-      const Slab left = floor_slab(row, model, site.pair, site.level);
-      const Slab right = floor_slab(row, model, site.pair + 1, site.level);
+      const Slab left = floor_slab(row, model, site.pair, site.geometry.slab_floor);
+      const Slab right = floor_slab(row, model, site.pair + 1, site.geometry.hit);
       law.stiffness = flat_contact_stiffness(left, right, model.D);  // Th. 8.1-8.2
     } else if (model.hertz_k > 0.0) {
       law.stiffness = model.hertz_k;

@@ -1,5 +1,6 @@
 #include "simulation/contact_spec.hpp"
 
+#include "contact/column_series.hpp"
 #include "contact/registry.hpp"
 
 namespace pound {
@@ -10,9 +11,10 @@ std::vector<std::unique_ptr<ContactLaw>> make_site_laws(const ContactSpec& spec,
   std::vector<std::unique_ptr<ContactLaw>> laws;
   for (const auto& s : assembled.sites) {
     ContactParameters p = spec.params;
-    p.m1 = 1.0 / assembled.inv_mass(s.dof_left);
-    p.m2 = 1.0 / assembled.inv_mass(s.dof_right);
-    laws.push_back(info.make(p));
+    // The sides' apparent masses (a slab: its floor mass; physics.md section 5b).
+    p.m1 = s.mass_left;
+    p.m2 = s.mass_right;
+    laws.push_back(column_law(info, p, s.column_stiffness));
   }
   return laws;
 }

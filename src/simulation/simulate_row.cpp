@@ -57,6 +57,7 @@ RowSimulation summarize_runs(const BuildingRow& row, const RowGround& ground, do
     SiteResponse s;
     s.pair = a.sites[k].pair;
     s.floor = a.sites[k].level + 1;
+    s.site = a.sites[k];
     s.impacts = sr.impacts;
     s.peak_force = sr.peak_force;
     s.peak_penetration = sr.peak_penetration;

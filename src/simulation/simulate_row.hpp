@@ -34,8 +34,11 @@ struct FloorResponse {
 };
 
 struct SiteResponse {
-  int pair = 0;   ///< 0-based pair index (buildings pair and pair+1)
-  int floor = 0;  ///< 1-based floor level
+  int pair = 0;  ///< 0-based pair index (buildings pair and pair+1)
+  /// 1-based site number within the pair (the floor level where floors align; the campaign
+  /// file's level index).
+  int floor = 0;
+  ContactSite site;  ///< where and how the slabs meet (issue 36): kind, floors, xi, k_col
   int impacts = 0;
   double peak_force = 0.0;        ///< [N]
   double peak_penetration = 0.0;  ///< [m]

@@ -16,10 +16,7 @@ ImpactResult simulate_free_impact(const ContactLaw& law, const FreeImpactSpec& s
   row.K = Eigen::MatrixXd::Zero(2, 2);
   row.inv_mass = row.M.diagonal().cwiseInverse();
   row.offset = {0, 1};
-  ContactSite site;
-  site.dof_left = 0;
-  site.dof_right = 1;
-  row.sites = {site};
+  row.sites = {floor_site(row, 0, 0, 0, 1, 0.0)};
 
   RowProblem p;
   p.row = &row;

@@ -93,9 +93,15 @@ void RowDynamics::rhs(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy) {
     const double f = force_(i);
     du[layout_.impulses + i] = f;
     if (f == 0.0) continue;
-    const auto& site = row_.sites[i];
-    dv[site.dof_left] -= im[site.dof_left] * f;
-    dv[site.dof_right] += im[site.dof_right] * f;
+    const auto& site = row_.sites[i];  // w_k F on each DOF of a side (SitePoint)
+    for (int k = 0; k < site.left.count; ++k) {
+      const int d = site.left.dof[k];
+      dv[d] -= im[d] * (site.left.weight[k] * f);
+    }
+    for (int k = 0; k < site.right.count; ++k) {
+      const int d = site.right.dof[k];
+      dv[d] += im[d] * (site.right.weight[k] * f);
+    }
   }
   if (any_held_)
     for (int i = 0; i < n_; ++i)

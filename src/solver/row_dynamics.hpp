@@ -81,19 +81,21 @@ class RowDynamics {
   }
   const Eigen::VectorXd& contact_force() const { return force_; }
 
-  /// Penetration delta = (u_L + ug_L) - (u_R + ug_R) - gap at site i (physics.md sections 1
-  /// and 5a) [m] and its rate; the ground terms where the site's buildings stand on different
-  /// channels.
+  /// Penetration delta = (u_L + ug_L) - (u_R + ug_R) - gap at site i (physics.md sections 1,
+  /// 5a and 5b) [m] and its rate, u_L and u_R the sides' points (SitePoint: a slab's floor, or
+  /// the weighted floors of a struck column); the ground terms where the site's buildings stand
+  /// on different channels.
   double penetration(const Eigen::VectorXd& y, int i) const {
     const auto& s = row_.sites[i];
-    double d = y(s.dof_left) - y(s.dof_right) - s.gap;
+    double d = s.left.of(y.data()) - s.right.of(y.data()) - s.gap;
     const auto& g = site_ground_[i];
     if (g.first >= 0) d += y(g.first) - y(g.second);
     return d;
   }
   double penetration_rate(const Eigen::VectorXd& y, int i) const {
     const auto& s = row_.sites[i];
-    double r = y(n_ + s.dof_left) - y(n_ + s.dof_right);
+    const double* v = y.data() + n_;
+    double r = s.left.of(v) - s.right.of(v);
     const auto& g = site_ground_[i];
     if (g.first >= 0) r += y(g.first + 1) - y(g.second + 1);
     return r;
@@ -101,7 +103,7 @@ class RowDynamics {
   /// The approach (u_L + ug_L) - (u_R + ug_R) of site i's floors [m]: penetration + gap.
   double approach(const Eigen::VectorXd& y, int i) const {
     const auto& s = row_.sites[i];
-    double d = y(s.dof_left) - y(s.dof_right);
+    double d = s.left.of(y.data()) - s.right.of(y.data());
     const auto& g = site_ground_[i];
     if (g.first >= 0) d += y(g.first) - y(g.second);
     return d;

@@ -177,19 +177,30 @@ void RowRun::apply_contact_event(int i, double t, Eigen::VectorXd& y) {
   // Stereomechanical impact (Goldsmith): velocity jump conserving momentum, separation
   // velocity e times the approach velocity.
   if (rate > 0.0) {
+    // Along the site: the sides' apparent masses (a slab's is its floor mass), each DOF's
+    // velocity changed by w_k J / m_k (J the impulse; SitePoint).
     const auto& s = row_.sites[i];
     const StateLayout& at = dyn_.layout();
-    const double mL = 1.0 / row_.inv_mass(s.dof_left), mR = 1.0 / row_.inv_mass(s.dof_right);
+    const double mL = s.mass_left, mR = s.mass_right;
     const double jump = (1.0 + law.restitution()) * rate;
     const double impulse = mL * mR / (mL + mR) * jump;
-    const double e_before =
-        0.5 * (mL * std::pow(y(n_ + s.dof_left), 2) + mR * std::pow(y(n_ + s.dof_right), 2));
-    y(n_ + s.dof_left) -= impulse / mL;
-    y(n_ + s.dof_right) += impulse / mR;
+    const auto kinetic = [&] {
+      double e = 0.0;
+      for (const SitePoint* pt : {&s.left, &s.right})
+        for (int k = 0; k < pt->count; ++k) {
+          const int d = pt->dof[k];
+          if (row_.inv_mass(d) != 0.0) e += 0.5 / row_.inv_mass(d) * std::pow(y(n_ + d), 2);
+        }
+      return e;
+    };
+    const double e_before = kinetic();
+    for (int k = 0; k < s.left.count; ++k)
+      y(n_ + s.left.dof[k]) -= s.left.weight[k] * impulse / (1.0 / row_.inv_mass(s.left.dof[k]));
+    for (int k = 0; k < s.right.count; ++k)
+      y(n_ + s.right.dof[k]) += s.right.weight[k] * impulse / (1.0 / row_.inv_mass(s.right.dof[k]));
     y(at.impulses + i) += impulse;
     if (track_)  // the kinetic energy the jump removes: mu v0^2 (1 - e^2) / 2
-      y(at.energies + 2) += e_before - 0.5 * (mL * std::pow(y(n_ + s.dof_left), 2) +
-                                              mR * std::pow(y(n_ + s.dof_right), 2));
+      y(at.energies + 2) += e_before - kinetic();
     rec_.result().sites[i].peak_force = kNaN;
   }
   rec_.contact_ended(i, t);

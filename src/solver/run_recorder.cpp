@@ -94,7 +94,7 @@ RunRecorder::RunRecorder(const AssembledRow& row, const std::vector<RowStorey>& 
     g_rot_[i] = rot_[i] >= 0 ? rot_[i] : i;
     g_wr_[i] = rot_[i] >= 0 ? -rot_h_[i] : 0.0;
   }
-  for (const auto& s : row.sites) site_dofs_.emplace_back(s.dof_left, s.dof_right);
+  for (const auto& s : row.sites) site_points_.emplace_back(s.left, s.right);
 }
 
 void RunRecorder::set_collapse(const std::vector<RowStorey>& storeys, double ratio) {
@@ -132,7 +132,8 @@ void RunRecorder::start(const Eigen::VectorXd& u0) {
   r_.peak_abs_accel.setZero(n_);
   r_.sites.assign(ns_, SiteResult{});
   for (int s = 0; s < ns_ && !contacts_; ++s)
-    r_.sites[s].peak_approach = u0(site_dofs_[s].first) - u0(site_dofs_[s].second);
+    r_.sites[s].peak_approach =
+        site_points_[s].first.of(u0.data()) - site_points_[s].second.of(u0.data());
 }
 
 void RunRecorder::collapse(int b, int storey, double t, CollapseCause cause) {

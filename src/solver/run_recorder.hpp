@@ -197,8 +197,8 @@ class RunRecorder {
   // where there is none) and weights (0 there) [-, -m].
   std::vector<int> g_below_, g_rot_;
   std::vector<double> g_wb_, g_wr_;
-  std::vector<double> bounds_;                  // scratch of peaks_over_step (peak_bounds)
-  std::vector<std::pair<int, int>> site_dofs_;  // per site: left and right floor DOF
+  std::vector<double> bounds_;  // scratch of peaks_over_step (peak_bounds)
+  std::vector<std::pair<SitePoint, SitePoint>> site_points_;  // per site: its two sides
   // Collapse: per DOF its storey's collapse drift [m] (infinite: none), building, storey number
   // within it, and the drift at the last sample [m]; the buildings held still.
   bool check_collapse_ = false;

@@ -68,6 +68,12 @@ void validate(const Building& b, const std::string& where) {
   }
   if (!(b.damping_ratio >= 0.0 && b.damping_ratio < 1.0))
     throw InputError(where + ": damping ratio must be in [0, 1)");
+  if (!std::isfinite(b.base_elevation))
+    throw InputError(where + ": base_elevation must be a finite number in m");
+  if (!(b.slab_thickness > 0.0 && std::isfinite(b.slab_thickness)))
+    throw InputError(where + ": slab_thickness must be a finite number > 0 m");
+  if (!(b.face_column_share > 0.0 && b.face_column_share <= 1.0))
+    throw InputError(where + ": face_column_share must be in (0, 1]");
   find_storey_law(b.hysteresis, where);
   auto per_storey = [&](const std::vector<double>& v, const char* what) {
     if (!v.empty() && v.size() != n)

@@ -27,7 +27,14 @@ struct Building {
   std::vector<double> masses;          ///< floor masses, floor 1 first [kg]
   std::vector<double> stiffnesses;     ///< storey stiffnesses, storey 1 first [N/m]
   std::vector<double> storey_heights;  ///< storey heights, for drift ratios [m]
-  double damping_ratio = 0.05;         ///< inherent damping ratio [-]
+  // Where its slabs stand (issue 36, structure/contact_geometry.hpp): floor j at base_elevation
+  // plus the heights of storeys 1..j.
+  double base_elevation = 0.0;  ///< the base's level against the row's datum [m] (a slope)
+  double slab_thickness = 0.2;  ///< the slabs' thickness [m], > 0
+  /// The share of a storey's stiffness in the columns of the face a neighbour's slab can
+  /// strike [-], in (0, 1] (0.5: two of four corner columns).
+  double face_column_share = 0.5;
+  double damping_ratio = 0.05;  ///< inherent damping ratio [-]
   DampingKind damping = DampingKind::rayleigh;
   /// Storey hysteresis (hysteresis/registry.hpp): "elastic", "bilinear", "bouc-wen" or "imk".
   /// The damping matrix stays the one built from the initial stiffnesses, constant through

@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
+#include "core/error.hpp"
 #include "hysteresis/registry.hpp"
 #include "structure/building_on_base.hpp"
 #include "structure/foundation.hpp"
@@ -11,8 +13,120 @@
 namespace pound {
 
 int colliding_levels(const BuildingRow& row, int pair) {
-  return std::min(row.buildings[pair].floors(), row.buildings[pair + 1].floors());
+  return static_cast<int>(pair_sites(row.buildings[pair], row.buildings[pair + 1]).size());
 }
+
+std::string describe_site(const BuildingRow& row, const ContactSite& s) {
+  const SiteGeometry& g = s.geometry;
+  const std::string& slab = row.buildings[s.pair + g.slab_side].name;
+  const std::string& hit = row.buildings[s.pair + 1 - g.slab_side].name;
+  std::string out = slab + " floor " + std::to_string(g.slab_floor + 1) + " against " + hit;
+  if (g.kind == SiteKind::slab)
+    return out + " floor " + std::to_string(g.hit + 1) + " (slab to slab)";
+  char xi[32];
+  std::snprintf(xi, sizeof xi, "%.3f", g.xi);
+  return out + " storey " + std::to_string(g.hit + 1) + " at xi " + xi + " (slab to column)";
+}
+
+ContactSite floor_site(const AssembledRow& a, int pair, int level, int dof_left, int dof_right,
+                       double gap) {
+  ContactSite s;
+  s.pair = pair;
+  s.level = level;
+  s.gap = gap;
+  s.dof_left = dof_left;
+  s.dof_right = dof_right;
+  s.left.add(dof_left, 1.0);
+  s.right.add(dof_right, 1.0);
+  s.geometry.slab_floor = s.geometry.hit = level;
+  s.mass_left = 1.0 / a.inv_mass(dof_left);
+  s.mass_right = 1.0 / a.inv_mass(dof_right);
+  return s;
+}
+
+std::vector<std::string> describe_sites(const BuildingRow& row) {
+  std::vector<std::string> out;
+  for (std::size_t p = 0; p + 1 < row.buildings.size(); ++p) {
+    const std::vector<SiteGeometry> g = pair_sites(row.buildings[p], row.buildings[p + 1]);
+    const std::string pair = "pair " + std::to_string(p + 1);
+    bool aligned = true;
+    for (std::size_t k = 0; k < g.size(); ++k)
+      aligned =
+          aligned && g[k].kind == SiteKind::slab && g[k].slab_floor == int(k) && g[k].hit == int(k);
+    if (aligned) {
+      out.push_back(pair + " (" + row.buildings[p].name + " | " + row.buildings[p + 1].name +
+                    "): " +
+                    (g.empty() ? std::string("no contact site")
+                               : "floors 1-" + std::to_string(g.size()) + " slab to slab"));
+      continue;
+    }
+    for (std::size_t k = 0; k < g.size(); ++k) {
+      ContactSite s;
+      s.pair = static_cast<int>(p);
+      s.geometry = g[k];
+      out.push_back(pair + " site " + std::to_string(k + 1) + ": " + describe_site(row, s));
+    }
+  }
+  return out;
+}
+
+namespace {
+
+// The apparent mass of a point, 1 / sum(w^2 / m) [kg] (physics.md section 5b): a DOF without
+// mass (inv_mass 0) adds nothing. A slab's is its floor mass, 1 / inv_mass, to the bit.
+double apparent_mass(const SitePoint& pt, const AssembledRow& a) {
+  double inv = 0.0;
+  for (int k = 0; k < pt.count; ++k) inv += pt.weight[k] * pt.weight[k] * a.inv_mass(pt.dof[k]);
+  return 1.0 / inv;
+}
+
+// The point of building b's columns in storey j at xi (SitePoint): floor j-1 (or the base's
+// sway) with 1 - s, floor j with s, the base's rotation with h (xi - s).
+SitePoint column_point(const Building& bd, const AssembledRow& a, int b, int j, double xi) {
+  const double s = column_shape(xi);
+  const int below = j > 0 ? a.offset[b] + j - 1 : a.sway[b];
+  SitePoint pt;
+  if (below >= 0) pt.add(below, 1.0 - s);
+  pt.add(a.offset[b] + j, s);
+  if (a.rot[b] >= 0) pt.add(a.rot[b], bd.storey_heights[j] * (xi - s));
+  return pt;
+}
+
+ContactSite make_site(const BuildingRow& row, const AssembledRow& a, int p, int k,
+                      const SiteGeometry& g) {
+  ContactSite s;
+  s.pair = p;
+  s.level = k;
+  s.geometry = g;
+  s.gap = row.gaps.at(p).at(k);
+  const int slab_b = p + g.slab_side, hit_b = p + 1 - g.slab_side;
+  SitePoint slab;
+  slab.add(a.offset[slab_b] + g.slab_floor, 1.0);
+  SitePoint hit;
+  if (g.kind == SiteKind::slab) {
+    hit.add(a.offset[hit_b] + g.hit, 1.0);
+  } else {
+    const Building& bd = row.buildings[hit_b];
+    hit = column_point(bd, a, hit_b, g.hit, g.xi);
+    s.column_stiffness = column_point_stiffness(bd.stiffnesses[g.hit], bd.face_column_share, g.xi);
+    for (int q = 0; q < hit.count; ++q)
+      if (a.massless[hit.dof[q]])
+        throw InputError(bd.name + ": a slab of " + row.buildings[slab_b].name +
+                         " strikes the columns of storey " + std::to_string(g.hit + 1) +
+                         ", which stand on a massless foundation DOF: not modelled; give the "
+                         "foundation a mass and rotary inertia (foundation_mass, "
+                         "foundation_inertia)");
+  }
+  s.left = g.slab_side == 0 ? slab : hit;
+  s.right = g.slab_side == 0 ? hit : slab;
+  s.dof_left = a.offset[p] + (g.slab_side == 0 ? g.slab_floor : g.hit);
+  s.dof_right = a.offset[p + 1] + (g.slab_side == 0 ? g.hit : g.slab_floor);
+  s.mass_left = apparent_mass(s.left, a);
+  s.mass_right = apparent_mass(s.right, a);
+  return s;
+}
+
+}  // namespace
 
 std::vector<RowStorey> elastic_storeys(const AssembledRow& a) {
   const StoreyLaw& law = find_storey_law("elastic", "elastic_storeys");
@@ -115,15 +229,9 @@ AssembledRow assemble(const BuildingRow& row) {
       out.massless[i] = 1;
   }
   for (int p = 0; p + 1 < nb; ++p) {
-    for (int j = 0; j < colliding_levels(row, p); ++j) {
-      ContactSite s;
-      s.pair = p;
-      s.level = j;
-      s.dof_left = out.offset[p] + j;
-      s.dof_right = out.offset[p + 1] + j;
-      s.gap = row.gaps.at(p).at(j);
-      out.sites.push_back(s);
-    }
+    const std::vector<SiteGeometry> g = pair_sites(row.buildings[p], row.buildings[p + 1]);
+    for (std::size_t k = 0; k < g.size(); ++k)
+      out.sites.push_back(make_site(row, out, p, static_cast<int>(k), g[k]));
   }
   return out;
 }

@@ -1,30 +1,71 @@
 #pragma once
 // Buildings standing in a row, left to right (physics.md section 1; thesis chapter 2: two
-// buildings, a building between two others, a building at the end of a row). Floor j of
-// building b and floor j of building b+1 can collide when both exist, so buildings of
-// unequal height collide up to the lower roof.
+// buildings, a building between two others, a building at the end of a row). The contact
+// sites of each adjacent pair follow from the floors' elevations (issue 36,
+// structure/contact_geometry.hpp): slab to slab where floors align, a slab against the
+// neighbour's columns between its floors otherwise. A site is a pair of weighted lists of DOFs
+// (SitePoint) with its series stiffness and apparent masses: the solvers, the event stepper and
+// the recorder see sites, never their kind.
 #include <Eigen/Dense>
+#include <array>
+#include <limits>
+#include <string>
 #include <vector>
 
 #include "hysteresis/storey_law.hpp"
 #include "structure/building.hpp"
+#include "structure/contact_geometry.hpp"
 
 namespace pound {
 
 struct BuildingRow {
   std::vector<Building> buildings;
-  /// gaps[p][j]: at-rest gap between building p and p+1 at floor level j+1 [m], one entry
-  /// per colliding level (min of the two floor counts).
+  /// gaps[p][k]: at-rest gap between building p and p+1 at the pair's site k [m], one entry
+  /// per site of pair_sites() (with aligned floors: per colliding floor level).
   std::vector<std::vector<double>> gaps;
 };
 
-/// One floor level of one adjacent pair where contact can happen.
+/// One side of a contact site: the point that strikes or is struck, u = sum w_k u_{dof_k} over
+/// at most three DOFs (physics.md section 5b). A slab: its floor, weight 1. A point on a column
+/// of storey j at xi (s = column_shape(xi)): floor j-1 (the base's sway where j-1 is the base;
+/// nothing on a fixed base) with 1 - s, floor j with s, and on a rocking base its rotation with
+/// h (xi - s) (the storey's chord turns with the base: u = u_{j-1} + xi h theta + s d_j, d_j =
+/// u_j - u_{j-1} - h theta). A force F on the point loads each DOF with w_k F (virtual work).
+struct SitePoint {
+  int count = 0;
+  std::array<int, 3> dof{{-1, -1, -1}};
+  std::array<double, 3> weight{{0.0, 0.0, 0.0}};
+  /// sum w_k x[dof_k] (x: displacements or velocities of the DOFs).
+  double of(const double* x) const {
+    double r = weight[0] * x[dof[0]];
+    for (int k = 1; k < count; ++k) r += weight[k] * x[dof[k]];
+    return r;
+  }
+  void add(int d, double w) {
+    dof[count] = d;
+    weight[count] = w;
+    ++count;
+  }
+};
+
+/// One contact site of one adjacent pair.
 struct ContactSite {
-  int pair = 0;       ///< building pair index p (buildings p and p+1)
-  int level = 0;      ///< floor level, 0-based (floor level+1)
-  int dof_left = 0;   ///< global DOF of the left building's floor
-  int dof_right = 0;  ///< global DOF of the right building's floor
-  double gap = 0.0;   ///< at-rest gap [m]
+  int pair = 0;   ///< building pair index p (buildings p and p+1)
+  int level = 0;  ///< the site's index within its pair, 0-based (aligned floors: floor level)
+  SitePoint left, right;  ///< the left and right building's points
+  /// A DOF of each side's building: its slab's floor DOF (a slab side), or the struck storey's
+  /// upper floor (a column side). The damped Sears path, which meets only slab sites, reads
+  /// the slabs' floors here.
+  int dof_left = 0, dof_right = 0;
+  double gap = 0.0;       ///< at-rest gap [m]
+  SiteGeometry geometry;  ///< kind, striking slab, struck floor or storey, xi
+  /// The struck columns' stiffness at the point [N/m], in series with the contact law
+  /// (column_point_stiffness); infinite at a slab site.
+  double column_stiffness = std::numeric_limits<double>::infinity();
+  /// Each side's apparent mass 1 / sum(w_k^2 / m_k) [kg] (a slab: its floor mass; a DOF
+  /// without mass, a fixed base or a massless foundation, adds nothing).
+  double mass_left = 0.0, mass_right = 0.0;
+  bool column() const { return geometry.kind == SiteKind::column; }
 };
 
 /// The storey below one floor DOF (storey j joins floor j-1, or the ground, to floor j). A
@@ -116,7 +157,21 @@ double shortest_period(const AssembledRow& a);
 /// (T_min / 20) is taken from it. shortest_period(a) when the ratios are not known.
 double step_period(const AssembledRow& a);
 
-/// Number of colliding levels of pair p (min floor count).
+/// A slab-to-slab site between floor DOFs dof_left and dof_right of a row built by hand (free
+/// bodies, tests): weight 1 each, the masses from a.inv_mass (set before).
+ContactSite floor_site(const AssembledRow& a, int pair, int level, int dof_left, int dof_right,
+                       double gap);
+
+/// The site in words for messages: "building A floor 3 against building B floor 3 (slab to
+/// slab)" or "... against building B storey 2 at xi 0.40 (slab to column)", names from `row`.
+std::string describe_site(const BuildingRow& row, const ContactSite& s);
+
+/// The contact sites of every pair in words, one line each (no newline): a pair whose floors
+/// all meet their namesakes slab to slab in one line ("pair 1 (A | B): floors 1-3 slab to
+/// slab"), otherwise one line per site, "pair 1 site 2: " + describe_site().
+std::vector<std::string> describe_sites(const BuildingRow& row);
+
+/// Number of contact sites of pair p (pair_sites(); aligned floors: the lower floor count).
 int colliding_levels(const BuildingRow& row, int pair);
 AssembledRow assemble(const BuildingRow& row);
 

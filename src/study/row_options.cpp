@@ -77,6 +77,15 @@ std::vector<OptionSpec> row_option_specs_without_laws() {
       {"building#.stiffnesses", "N/m", "", "storey stiffnesses, storey 1 first (list)"},
       {"building#.storey_heights", "m", "3.0",
        "storey heights for drift ratios (one value for all storeys, or a list)"},
+      {"building#.base_elevation", "m", "0",
+       "level of the base against the row's datum (a street on a slope); floors stand at it "
+       "plus the storey heights, and slabs meet what stands at their height"},
+      {"building#.slab_thickness", "m", "0.2",
+       "slab thickness, > 0: slabs within (t1 + t2) / 2 of a neighbour's floor meet it slab to "
+       "slab, others strike the neighbour's columns"},
+      {"building#.face_column_share", "-", "0.5",
+       "share of a storey's stiffness in the columns of the face a neighbour's slab can strike, "
+       "in (0, 1]"},
       {"building#.damping", "-", "0.05", "inherent damping ratio, in [0, 1)"},
       {"building#.damping_type", "", "rayleigh",
        "rayleigh (ratio on modes 1 and 2) or modal (ratio on every mode)"},
@@ -254,6 +263,20 @@ int consecutive_buildings(const Options& opt) {
   return static_cast<int>(n);
 }
 
+// Where the building's slabs stand (issue 36): its base's level, the slabs' thickness and the
+// share of a storey's stiffness in the face's columns.
+void read_elevations(const Options& opt, const std::string& pre, Building& bd) {
+  bd.base_elevation = opt.get_double(pre + "base_elevation");
+  if (!std::isfinite(bd.base_elevation))
+    throw opt.invalid(pre + "base_elevation", "valid: a finite level in m");
+  bd.slab_thickness = opt.get_double(pre + "slab_thickness");
+  if (!(bd.slab_thickness > 0.0 && std::isfinite(bd.slab_thickness)))
+    throw opt.invalid(pre + "slab_thickness", "valid: a finite thickness > 0 m");
+  bd.face_column_share = opt.get_double(pre + "face_column_share");
+  if (!(bd.face_column_share > 0.0 && bd.face_column_share <= 1.0))
+    throw opt.invalid(pre + "face_column_share", "valid: a share in (0, 1]");
+}
+
 }  // namespace
 
 BuildingRow row_from_options(const Options& opt) {
@@ -279,6 +302,7 @@ BuildingRow row_from_options(const Options& opt) {
         positive_list(opt, pre + "stiffnesses", masses.size(), "every storey stiffness");
     bd.storey_heights =
         positive_list(opt, pre + "storey_heights", masses.size(), "every storey height");
+    read_elevations(opt, pre, bd);
     bd.damping_ratio = opt.get_double(pre + "damping");
     if (!(bd.damping_ratio >= 0 && bd.damping_ratio < 1))
       throw opt.invalid(pre + "damping", "valid: a damping ratio in [0, 1)");
@@ -303,7 +327,8 @@ BuildingRow row_from_options(const Options& opt) {
     if (g.size() == 1) g.assign(levels, g[0]);
     if (g.size() != levels)
       throw opt.invalid(key, "expected one gap or " + std::to_string(levels) +
-                                 " (one per colliding floor), in m");
+                                 " (one per contact site, in the order pound simulate --json "
+                                 "lists them), in m");
     for (double x : g)
       if (!(x >= 0)) throw opt.invalid(key, "gaps must be >= 0 m");
     row.gaps.push_back(g);

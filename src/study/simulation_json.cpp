@@ -107,6 +107,26 @@ void write_buildings(JsonWriter& w, const SimulationRun& run, const BuildingRow&
   w.end_array();
 }
 
+// Where the slabs meet (issue 36): kind, the striking slab and what it strikes (1-based),
+// xi, the columns' stiffness (null at a slab site) and the struck point's apparent mass.
+void write_site_geometry(JsonWriter& w, const ContactSite& s) {
+  const SiteGeometry& g = s.geometry;
+  const bool column = g.kind == SiteKind::column;
+  if (!column) w.field("floor", g.slab_floor + 1);
+  w.field("kind", column ? "column" : "slab")
+      .field("slab_building", s.pair + g.slab_side + 1)
+      .field("slab_floor", g.slab_floor + 1)
+      .field("hit_building", s.pair + 1 - g.slab_side + 1)
+      .field(column ? "hit_storey" : "hit_floor", g.hit + 1)
+      .field("xi", g.xi)
+      .key("column_stiffness_N_per_m");
+  if (column)
+    w.value(s.column_stiffness);
+  else
+    w.null();
+  w.field("apparent_mass_kg", g.slab_side == 0 ? s.mass_right : s.mass_left);
+}
+
 }  // namespace
 
 std::string simulation_json(const BuildingRow& row, const SimulationRun& run) {
@@ -125,10 +145,9 @@ std::string simulation_json(const BuildingRow& row, const SimulationRun& run) {
   w.key("contacts").begin_array();
   for (std::size_t k = 0; k < s.sites.size(); ++k) {
     const auto& c = s.sites[k];
-    w.begin_object()
-        .field("pair", c.pair)
-        .field("floor", c.floor)
-        .field("impacts", c.impacts)
+    w.begin_object().field("pair", c.pair);
+    write_site_geometry(w, c.site);
+    w.field("impacts", c.impacts)
         .field("peak_force_N", c.peak_force)
         .field("peak_penetration_m", c.peak_penetration)
         .field("first_contact_s", c.impacts ? c.first_contact : -1.0);

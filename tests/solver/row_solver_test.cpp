@@ -208,7 +208,7 @@ TEST(RowSolver, PoundingConservesMomentumWithoutSpringsOrGround) {
   a.C = a.K = Eigen::MatrixXd::Zero(3, 3);
   a.inv_mass = a.M.diagonal().cwiseInverse();
   a.offset = {0, 1, 2};
-  a.sites = {ContactSite{0, 0, 0, 1, 0.001}, ContactSite{1, 0, 1, 2, 0.002}};
+  a.sites = {floor_site(a, 0, 0, 0, 1, 0.001), floor_site(a, 1, 0, 1, 2, 0.002)};
   for (const auto& m : contact_models()) {
     ContactParameters cp;
     cp.k = m.stiffness_unit == "N/m^1.5" ? 1e9 : 1e6;

@@ -192,7 +192,8 @@ namespace {
 TEST(RowOptions, ImkKeysReachTheStoreyParameters) {
   std::vector<std::string> args = kRow;
   args.insert(args.end(), {"--building1.hysteresis", "imk", "--building1.yield_shears", "2e4",
-                           "--building1.storey_heights", "3.5", "--building1.cap_strength_ratio",
+                           "--building1.storey_heights", "3.5", "--building2.storey_heights", "3.5",
+                           "--building3.storey_heights", "3.5", "--building1.cap_strength_ratio",
                            "1.1, 1.2, 1.3", "--building1.ultimate_drift_ratio", "0.15",
                            "--building1.energy_capacity", "80"});
   const Options o = parsed(args);
