@@ -120,7 +120,9 @@ void print_text(const CampaignData& c, const FragilityReport& r,
              "one stood";
     if (nonfinite)
       why += (why.empty() ? "" : "; ") + std::to_string(nonfinite) + " not finite" +
-             (k.edp == Edp::ductility ? ": the building has no yield_shears" : "");
+             (k.edp == Edp::ductility      ? ": the building has no yield_shears"
+              : k.edp == Edp::column_shear ? ": no column_shear_strength or no storey struck"
+                                           : "");
     std::printf("  (%s %s %s, %s: %zu analyses left out, %s)\n",
                 c.building_names[k.building].c_str(), to_string(k.edp),
                 limit_text(k.edp, k.limit).c_str(), k.pounding ? "pounding" : "no pounding",

@@ -16,6 +16,10 @@ BuildingCollapse of(const std::vector<BuildingCollapse>& c, int b) {
 double flag(const BuildingCollapse& c) {
   return c.collapsed ? 1.0 : 0.0;
 }
+double at(const std::vector<double>& v, int b) {
+  return static_cast<std::size_t>(b) < v.size() ? v[static_cast<std::size_t>(b)]
+                                                : std::numeric_limits<double>::quiet_NaN();
+}
 double time(const BuildingCollapse& c) {
   return c.collapsed ? c.time : std::numeric_limits<double>::quiet_NaN();
 }
@@ -39,6 +43,15 @@ const std::vector<BuildingArrayField>& building_array_fields() {
       {"collapse_time_free", "s",
        "time of the building's collapse without pounding (NaN: standing)", &O::collapse_time_free,
        [](const S& s, int b) { return time(of(s.collapse_free, b)); }},
+      {"column_shear_ratio_pounding", "-",
+       "largest shear demand over column_shear_strength of the building's storeys that a "
+       "neighbour's slab strikes, with pounding (NaN: no strength or no such storey; issue 36)",
+       &O::column_shear_ratio_pounding,
+       [](const S& s, int b) { return at(s.column_shear_ratio_pounding, b); }},
+      {"column_shear_ratio_free", "-",
+       "the same without pounding: the sway shear of the face's columns alone",
+       &O::column_shear_ratio_free,
+       [](const S& s, int b) { return at(s.column_shear_ratio_free, b); }},
   };
   return fields;
 }

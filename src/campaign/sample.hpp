@@ -56,6 +56,9 @@ struct SampleOutcome {
   /// Per building (building_arrays.hpp): collapsed (1) or standing (0) in each run, and when
   /// [s] (NaN while standing); NaN for a failed sample.
   std::vector<double> collapsed_pounding, collapsed_free;
+  /// Per building: the largest column-shear demand over strength of its struck storeys, with
+  /// and without pounding (issue 36) [-]; NaN: no strength, or no storey struck.
+  std::vector<double> column_shear_ratio_pounding, column_shear_ratio_free;
   std::vector<double> collapse_time_pounding, collapse_time_free;
   std::vector<double> peak_force;  ///< [N]
   /// Contact phases started in the pounding run, as doubles [-]: every phase, so > 0 exactly

@@ -32,6 +32,7 @@ constexpr EdpInfo kEdps[] = {
     {Edp::force, "force", "N", ""},
     {Edp::residual_drift, "residual_drift", "-", "residual_drift"},
     {Edp::ductility, "ductility", "-", "ductility"},
+    {Edp::column_shear, "column_shear", "-", ""},
 };
 
 const EdpInfo& info(Edp e) {
@@ -225,6 +226,11 @@ std::string dataset_of(Edp e, bool pounding) {
 
 double edp_value(const CampaignData& c, Edp e, bool pounding, std::size_t s, std::size_t b) {
   if (e == Edp::collapse) return c.collapsed(s, b, pounding) ? 1.0 : 0.0;
+  if (e == Edp::column_shear) {
+    const auto it = c.building_arrays.find(pounding ? "column_shear_ratio_pounding"
+                                                    : "column_shear_ratio_free");
+    return it == c.building_arrays.end() ? kNan : it->second[s * c.buildings + b];
+  }
   if (e != Edp::force) return c.floor_array(dataset_of(e, pounding)).max_over_floors(s, b);
   if (!pounding) return 0.0;
   double m = kNan;
@@ -251,6 +257,12 @@ std::vector<std::pair<Edp, std::vector<double>>> curve_limits(const CampaignData
                                                               const FragilitySettings& s) {
   std::vector<std::pair<Edp, std::vector<double>>> out;
   if (s.collapse && c.has_collapse()) out.push_back({Edp::collapse, {1.0}});
+  // Column shear (issue 36) where the study gives column_shear_strength and a slab strikes a
+  // column: one limit, a demand of 1 times the strength.
+  const auto shear = c.building_arrays.find("column_shear_ratio_pounding");
+  if (shear != c.building_arrays.end() && std::any_of(shear->second.begin(), shear->second.end(),
+                                                      [](double v) { return std::isfinite(v); }))
+    out.push_back({Edp::column_shear, {1.0}});
   out.push_back({Edp::drift, s.drift_limits});
   out.push_back({Edp::disp, s.disp_limits});
   out.push_back({Edp::accel, s.accel_limits});
@@ -273,6 +285,7 @@ char outcome(const CampaignData& c, Edp edp, double limit, bool pounding, std::s
   if (pounding && c.censored(row, b)) return kLeftOut;
   const double v = edp_value(c, edp, pounding, row, b);
   if (!std::isfinite(v)) return kLeftOut;
+  if (edp == Edp::column_shear) return v >= limit ? 1 : 0;  // a ratio of 1 or more fails
   return edp != Edp::collapse && v > limit ? 1 : 0;
 }
 
@@ -429,7 +442,7 @@ FragilityReport analyse_fragility(const CampaignData& c, const FragilitySettings
   // A file without an EDP's datasets (written before they existed) is an error only when
   // that EDP's curves are asked for.
   for (const auto& [edp, limits] : curve_limits(c, s))
-    if (!limits.empty() && edp != Edp::force && edp != Edp::collapse)
+    if (!limits.empty() && edp != Edp::force && edp != Edp::collapse && edp != Edp::column_shear)
       for (const bool pounding : {true, false}) c.floor_array(dataset_of(edp, pounding));
 
   // IM grid of the bands: log-spaced over [min / 2, 2 max] of the analysed intensities.

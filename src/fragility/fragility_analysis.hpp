@@ -22,7 +22,11 @@ enum class Edp {
   accel,           ///< peak absolute floor acceleration [m/s^2]
   force,           ///< peak pounding force on the building, over its pairs and levels [N]
   residual_drift,  ///< residual inter-storey drift ratio at the end of the run [-]
-  ductility        ///< storey ductility demand, peak drift / yield drift [-] (NaN: no Fy)
+  ductility,       ///< storey ductility demand, peak drift / yield drift [-] (NaN: no Fy)
+  /// Issue 36: the largest shear demand over column_shear_strength of the building's storeys a
+  /// neighbour's slab strikes [-] (NaN: no strength, or no storey struck); its one limit is 1,
+  /// reached at a ratio of 1 or more (the struck column fails in shear)
+  column_shear
 };
 const char* to_string(Edp e);  ///< "drift", "disp", "accel", "force", "residual_drift", ...
 const char* unit_of(Edp e);

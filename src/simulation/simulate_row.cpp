@@ -7,6 +7,30 @@
 
 namespace pound {
 
+namespace {
+
+// Site s's column shear with and without pounding, over its struck storey's strength, and each
+// building's largest ratio (issue 36).
+void column_shear_ratios(const BuildingRow& row, SiteResponse& s, const SiteResult& pounding,
+                         const SiteResult& free, RowSimulation& out) {
+  if (!s.site.column()) return;
+  s.column_shear_pounding = pounding.peak_column_shear;
+  s.column_shear_free = free.peak_column_shear;
+  const std::size_t b = static_cast<std::size_t>(s.pair + 1 - s.site.geometry.slab_side);
+  const std::vector<double>& vr = row.buildings[b].column_shear_strength;
+  if (vr.empty()) return;
+  const double strength = vr[static_cast<std::size_t>(s.site.geometry.hit)];
+  s.column_shear_ratio_pounding = s.column_shear_pounding / strength;
+  s.column_shear_ratio_free = s.column_shear_free / strength;
+  auto raise = [](double& r, double v) {
+    if (!(r >= v)) r = v;
+  };
+  raise(out.column_shear_ratio_pounding[b], s.column_shear_ratio_pounding);
+  raise(out.column_shear_ratio_free[b], s.column_shear_ratio_free);
+}
+
+}  // namespace
+
 RowSimulation summarize_runs(const BuildingRow& row, const RowGround& ground, double t_end,
                              RowResult free, RowResult pounding) {
   const AssembledRow a = assemble(row);
@@ -52,6 +76,9 @@ RowSimulation summarize_runs(const BuildingRow& row, const RowGround& ground, do
   }
   out.collapse_pounding = out.pounding.collapse;
   out.collapse_free = out.free.collapse;
+  out.column_shear_ratio_pounding.assign(row.buildings.size(),
+                                         std::numeric_limits<double>::quiet_NaN());
+  out.column_shear_ratio_free = out.column_shear_ratio_pounding;
   for (std::size_t k = 0; k < a.sites.size(); ++k) {
     const auto& sr = out.pounding.sites[k];
     SiteResponse s;
@@ -63,6 +90,7 @@ RowSimulation summarize_runs(const BuildingRow& row, const RowGround& ground, do
     s.peak_penetration = sr.peak_penetration;
     s.first_contact = sr.first_contact;
     s.approach_free = out.free.sites[k].peak_approach;
+    column_shear_ratios(row, s, out.pounding.sites[k], out.free.sites[k], out);
     out.sites.push_back(s);
   }
   for (std::size_t p = 0; p + 1 < row.buildings.size(); ++p)

@@ -47,6 +47,13 @@ struct SiteResponse {
   /// first contact a pounding run is the free run, so this is the smallest gap at this level
   /// that the motion would not close (SiteResult::peak_approach).
   double approach_free = 0.0;
+  /// Column sites (issue 36): the peak shear demand on the struck face's columns with and
+  /// without pounding (SiteResult::peak_column_shear) [N]; NaN at slab sites.
+  double column_shear_pounding = std::numeric_limits<double>::quiet_NaN();
+  double column_shear_free = std::numeric_limits<double>::quiet_NaN();
+  /// That demand over the struck storey's column_shear_strength [-]; NaN without one.
+  double column_shear_ratio_pounding = std::numeric_limits<double>::quiet_NaN();
+  double column_shear_ratio_free = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct RowSimulation {
@@ -60,6 +67,10 @@ struct RowSimulation {
   /// over the run [m] (issue 28; 0 on one motion), which the gap must take up besides the
   /// buildings' own motion.
   std::vector<double> ground_relative;
+  /// Per building: the largest column-shear ratio over its struck storeys with and without
+  /// pounding (SiteResponse::column_shear_ratio_*) [-]; NaN where it has no strength or none of
+  /// its storeys is struck (issue 36).
+  std::vector<double> column_shear_ratio_pounding, column_shear_ratio_free;
 };
 
 struct RowSimulationOptions {

@@ -20,6 +20,10 @@ struct SiteResult {
   /// between steps from the cubic Hermite interpolant, as the contact events are located).
   /// NaN in a run with contacts.
   double peak_approach = std::numeric_limits<double>::quiet_NaN();
+  /// Column sites (issue 36): the peak shear demand on the struck face's columns,
+  /// column_shear_demand() at the steps' ends [N]; in the free run the sway shear alone. NaN at
+  /// a slab site.
+  double peak_column_shear = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// Time histories, one entry per accepted step and per event.

@@ -32,6 +32,8 @@ RunPair solve_free_and_pounding(const RowProblem& p, const IntegratorSettings& s
   } else if (fs.fork_armed()) {  // no site came near touching: the runs are one
     out.pounding = out.free;
     out.pounding.sites.assign(p.row->sites.size(), SiteResult{});
+    for (std::size_t k = 0; k < out.pounding.sites.size(); ++k)  // no contact: the sway shear
+      out.pounding.sites[k].peak_column_shear = out.free.sites[k].peak_column_shear;
     out.pounding.steps_from_free = out.pounding.steps;
   } else {  // a site touching at the start
     out.pounding = RowRun(pounding, s).run();

@@ -33,7 +33,10 @@ class RunRecorder {
   /// afresh, and the steps so far are the free run's.
   void contacts_on() {
     contacts_ = true;
-    r_.sites.assign(ns_, SiteResult{});
+    std::vector<SiteResult> fresh(static_cast<std::size_t>(ns_));
+    for (int s = 0; s < ns_; ++s)  // the columns' shear so far is the pounding run's too
+      fresh[s].peak_column_shear = r_.sites[s].peak_column_shear;
+    r_.sites = fresh;
     r_.steps_from_free = r_.steps;
   }
   RowResult& result() { return r_; }
@@ -136,6 +139,11 @@ class RunRecorder {
   void force(int s, double f) { r_.sites[s].peak_force = std::max(r_.sites[s].peak_force, f); }
   void penetration(int s, double d) {
     r_.sites[s].peak_penetration = std::max(r_.sites[s].peak_penetration, d);
+  }
+  /// The shear demand v [N] on the struck columns of column site s at a step's end.
+  void column_shear(int s, double v) {
+    double& peak = r_.sites[s].peak_column_shear;
+    if (!(peak >= v)) peak = v;  // NaN (no value yet) or lower
   }
   /// The impulse j [N s] transmitted at site s in a step.
   void impulse(int s, double j) { r_.sites[s].impulse += j; }

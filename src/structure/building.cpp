@@ -74,6 +74,13 @@ void validate(const Building& b, const std::string& where) {
     throw InputError(where + ": slab_thickness must be a finite number > 0 m");
   if (!(b.face_column_share > 0.0 && b.face_column_share <= 1.0))
     throw InputError(where + ": face_column_share must be in (0, 1]");
+  if (!b.column_shear_strength.empty() && b.column_shear_strength.size() != n)
+    throw InputError(where + ": " + std::to_string(n) + " storeys but " +
+                     std::to_string(b.column_shear_strength.size()) +
+                     " column shear strengths; give one value or one per storey");
+  for (double v : b.column_shear_strength)
+    if (!(v > 0.0 && std::isfinite(v)))
+      throw InputError(where + ": column_shear_strength must be finite numbers > 0 N");
   find_storey_law(b.hysteresis, where);
   auto per_storey = [&](const std::vector<double>& v, const char* what) {
     if (!v.empty() && v.size() != n)

@@ -34,6 +34,9 @@ struct Building {
   /// The share of a storey's stiffness in the columns of the face a neighbour's slab can
   /// strike [-], in (0, 1] (0.5: two of four corner columns).
   double face_column_share = 0.5;
+  /// The shear strength of the struck face's columns together, per storey [N] (issue 36);
+  /// empty: none (no column-shear ratio is reported).
+  std::vector<double> column_shear_strength;
   double damping_ratio = 0.05;  ///< inherent damping ratio [-]
   DampingKind damping = DampingKind::rayleigh;
   /// Storey hysteresis (hysteresis/registry.hpp): "elastic", "bilinear", "bouc-wen" or "imk".

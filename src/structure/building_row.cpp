@@ -109,6 +109,10 @@ ContactSite make_site(const BuildingRow& row, const AssembledRow& a, int p, int 
     const Building& bd = row.buildings[hit_b];
     hit = column_point(bd, a, hit_b, g.hit, g.xi);
     s.column_stiffness = column_point_stiffness(bd.stiffnesses[g.hit], bd.face_column_share, g.xi);
+    s.struck_dof = a.offset[hit_b] + g.hit;
+    s.face_share = bd.face_column_share;
+    s.shape = column_shape(g.xi);
+    s.struck_sign = g.slab_side == 0 ? 1.0 : -1.0;
     for (int q = 0; q < hit.count; ++q)
       if (a.massless[hit.dof[q]])
         throw InputError(bd.name + ": a slab of " + row.buildings[slab_b].name +

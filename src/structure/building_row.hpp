@@ -7,7 +7,9 @@
 // (SitePoint) with its series stiffness and apparent masses: the solvers, the event stepper and
 // the recorder see sites, never their kind.
 #include <Eigen/Dense>
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <limits>
 #include <string>
 #include <vector>
@@ -65,8 +67,28 @@ struct ContactSite {
   /// Each side's apparent mass 1 / sum(w_k^2 / m_k) [kg] (a slab: its floor mass; a DOF
   /// without mass, a fixed base or a massless foundation, adds nothing).
   double mass_left = 0.0, mass_right = 0.0;
+  // Column sites: the struck storey, for its columns' shear (column_shear_demand).
+  int struck_dof = -1;      ///< the DOF of the struck storey's upper floor j (-1: a slab site)
+  double face_share = 0.0;  ///< phi, the struck face's share of the storey's stiffness [-]
+  double shape = 1.0;       ///< s = column_shape(xi) [-]
+  /// The contact force F >= 0 loads the struck building toward +x (the right building: +1) or
+  /// toward -x (the left one: -1).
+  double struck_sign = 1.0;
   bool column() const { return geometry.kind == SiteKind::column; }
 };
+
+/// The shear demand on the struck face's columns at a column site [N] (issue 36; physics.md
+/// section 5b): V_sway = phi V_j, the face's share of storey j's shear V_j (the storey law's
+/// force, signed with the drift u_j - u_{j-1}), and the load P = struck_sign F on the struck
+/// point (positive toward +x), which adds P (1 - s) below the point and -P s above it:
+///   demand = max(|V_sway + P (1 - s)|, |V_sway - P s|)
+/// (Karayannis & Favvata 2005: the struck column critical in shear). Without contact (F = 0)
+/// it is |V_sway|.
+inline double column_shear_demand(const ContactSite& s, double storey_shear, double force) {
+  const double v = s.face_share * storey_shear, p = s.struck_sign * force;
+  const double below = v + p * (1.0 - s.shape), above = v - p * s.shape;
+  return std::max(std::fabs(below), std::fabs(above));
+}
 
 /// The storey below one floor DOF (storey j joins floor j-1, or the ground, to floor j). A
 /// building on a flexible foundation (structure/building_on_base.hpp) has two DOFs more, its

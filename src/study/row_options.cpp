@@ -86,6 +86,9 @@ std::vector<OptionSpec> row_option_specs_without_laws() {
       {"building#.face_column_share", "-", "0.5",
        "share of a storey's stiffness in the columns of the face a neighbour's slab can strike, "
        "in (0, 1]"},
+      {"building#.column_shear_strength", "N", "",
+       "shear strength of the struck face's columns together (one value for all storeys, or a "
+       "list): the demand over it is the column_shear limit state"},
       {"building#.damping", "-", "0.05", "inherent damping ratio, in [0, 1)"},
       {"building#.damping_type", "", "rayleigh",
        "rayleigh (ratio on modes 1 and 2) or modal (ratio on every mode)"},
@@ -303,6 +306,9 @@ BuildingRow row_from_options(const Options& opt) {
     bd.storey_heights =
         positive_list(opt, pre + "storey_heights", masses.size(), "every storey height");
     read_elevations(opt, pre, bd);
+    if (opt.given(pre + "column_shear_strength"))
+      bd.column_shear_strength = positive_list(opt, pre + "column_shear_strength", masses.size(),
+                                               "every column shear strength");
     bd.damping_ratio = opt.get_double(pre + "damping");
     if (!(bd.damping_ratio >= 0 && bd.damping_ratio < 1))
       throw opt.invalid(pre + "damping", "valid: a damping ratio in [0, 1)");

@@ -1,6 +1,7 @@
 #include "study/simulation_json.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <string>
 #include <utility>
 
@@ -66,6 +67,13 @@ void write_buildings(JsonWriter& w, const SimulationRun& run, const BuildingRow&
     };
     const BuildingCollapse cp = collapse_of(s.collapse_pounding), cf = collapse_of(s.collapse_free);
     w.field("collapsed_pounding", cp.collapsed).field("collapsed_free", cf.collapsed);
+    // Issue 36: the largest column-shear demand over strength of its struck storeys (null:
+    // no column_shear_strength, or no storey struck).
+    auto at = [&](const std::vector<double>& v) {
+      return b < v.size() ? v[b] : std::numeric_limits<double>::quiet_NaN();
+    };
+    w.field("column_shear_ratio_pounding", at(s.column_shear_ratio_pounding))
+        .field("column_shear_ratio_free", at(s.column_shear_ratio_free));
     // {"pounding": value, "free": value}, null for a building standing in that run.
     auto per_run = [&](const char* key, auto value) {
       w.key(key).begin_object();
@@ -127,6 +135,15 @@ void write_site_geometry(JsonWriter& w, const ContactSite& s) {
   w.field("apparent_mass_kg", g.slab_side == 0 ? s.mass_right : s.mass_left);
 }
 
+// The struck columns' peak shear demand with and without pounding, and over their strength
+// (null at slab sites, and the ratios without column_shear_strength): JSON null for NaN.
+void write_column_shear(JsonWriter& w, const SiteResponse& c) {
+  w.field("peak_column_shear_N", c.column_shear_pounding)
+      .field("peak_column_shear_free_N", c.column_shear_free)
+      .field("column_shear_ratio", c.column_shear_ratio_pounding)
+      .field("column_shear_ratio_free", c.column_shear_ratio_free);
+}
+
 }  // namespace
 
 std::string simulation_json(const BuildingRow& row, const SimulationRun& run) {
@@ -147,6 +164,7 @@ std::string simulation_json(const BuildingRow& row, const SimulationRun& run) {
     const auto& c = s.sites[k];
     w.begin_object().field("pair", c.pair);
     write_site_geometry(w, c.site);
+    write_column_shear(w, c);
     w.field("impacts", c.impacts)
         .field("peak_force_N", c.peak_force)
         .field("peak_penetration_m", c.peak_penetration)
