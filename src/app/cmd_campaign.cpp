@@ -16,6 +16,7 @@
 #include "campaign/campaign_study.hpp"
 #include "campaign/mpi_campaign.hpp"
 #include "campaign/output_lock.hpp"
+#include "ground/coherency.hpp"
 #include "io/options.hpp"
 
 namespace pound::app {
@@ -244,6 +245,11 @@ void echo_start(const CampaignStudy& study, const Options& opt, int size) {
   else if (opt.given("sample-range"))
     std::fprintf(stderr, "campaign: samples [%ld, %ld) of %ld\n", study.range_lo, study.range_hi,
                  study.samples);
+  if (study.source == MotionSource::generated) {
+    const std::string note =
+        fitted_range_note(study.ground.coherency, smallest_separation(study.ground.positions));
+    if (!note.empty()) std::fprintf(stderr, "campaign: note: %s\n", note.c_str());
+  }
   std::fprintf(stderr, "campaign: resolved study:\n");
   const std::string& text = study.resolved;
   std::size_t p = 0;

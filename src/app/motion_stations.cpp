@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "app/motion_text_files.hpp"
+#include "ground/coherency.hpp"
 #include "io/atomic_file.hpp"
 #include "io/h5.hpp"
 #include "io/json.hpp"
@@ -274,6 +275,9 @@ void print_table(const StationSet& g, const StationSetRequest& rq, const std::st
 }  // namespace
 
 int run_station_set(const Options& o, const StationSetRequest& request, const std::string& dir) {
+  const std::string note = fitted_range_note(request.stations.coherency,
+                                             smallest_separation(request.stations.positions));
+  if (!note.empty()) std::fprintf(stderr, "pound motion generate: note: %s\n", note.c_str());
   const StationSet g = generate_station_set(request);
   const auto files = write_text_files(g, request, dir);
   write_motions_file(dir, g, request, o);

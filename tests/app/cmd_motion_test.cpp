@@ -232,6 +232,33 @@ TEST(MotionCommand, GenerateWithStationsWritesEveryStation) {
   EXPECT_NE(t.out.find("1-2        30.0"), std::string::npos) << t.out;
 }
 
+// Issue 37: stations closer than a model's fitted range (SMART-1: 100 m) get one note line on
+// stderr with the model's coherency at zero frequency there and the share of the displacement
+// it leaves independent (HV86 at 12 m: 0.9910134, sqrt(2 x 0.0089866) = 13.4 %, worked by hand
+// in tests/ground/coherency_test.cpp), and the command goes on. The Abrahamson models, fitted
+// on dense arrays, tend to 1 there: no note.
+TEST(MotionCommand, StationsBelowTheFittedRangeGetOneNote) {
+  const std::string gen =
+      "generate --spectrum ec8 --ground-type C --ag 0.3 --count 1 --duration 4 --seed 3 "
+      "--positions 0,12,40 --out '";
+  const CmdResult r = run(gen + (temp_dir() / "gen-note-hv").string() +
+                          "' --coherency harichandran-vanmarcke-1986");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string note =
+      "pound motion generate: note: coherency harichandran-vanmarcke-1986 was fitted at "
+      "separations of 100 m and more; at 12 m its coherency at zero frequency is 0.991, which "
+      "leaves sqrt(2 (1 - 0.991)) = 13.4 % of the ground displacement independent at the two "
+      "stations (abrahamson-2007-soil and -rock tend to 1 there)\n";
+  EXPECT_NE(r.err.find(note), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("note:"), r.err.rfind("note:")) << r.err;  // one line
+  for (const char* model : {"abrahamson-2007-soil", "luco-wong-1986"}) {
+    const CmdResult a =
+        run(gen + (temp_dir() / "gen-note-none").string() + "' --coherency " + model);
+    ASSERT_EQ(a.code, 0) << a.err;
+    EXPECT_EQ(a.err.find("note:"), std::string::npos) << model << ": " << a.err;
+  }
+}
+
 TEST(MotionCommand, BadStationInputIsOneLineExitTwoAndNoFile) {
   const fs::path dir = temp_dir() / "bad-stations";
   fs::remove_all(dir);
@@ -254,6 +281,15 @@ TEST(MotionCommand, BadStationInputIsOneLineExitTwoAndNoFile) {
                      "parameter f0");
   expect_input_error(st + "--coherency hv86", "--coherency: unknown coherency model 'hv86'");
   expect_input_error(st + "--coherency-parameters 1", "give --coherency MODEL too");
+  expect_input_error(st + "--coherency hv86",
+                     "valid: none, harichandran-vanmarcke-1986, luco-wong-1986, "
+                     "hao-oliveira-penzien-1989, abrahamson-2007-soil, abrahamson-2007-rock");
+  expect_input_error(st + "--coherency abrahamson-2007-soil --coherency-parameters 1,2",
+                     "--coherency-parameters: coherency abrahamson-2007-soil takes no parameters, "
+                     "not 2; valid: no parameters, or a model that takes them: "
+                     "harichandran-vanmarcke-1986, luco-wong-1986, hao-oliveira-penzien-1989");
+  expect_input_error(st + "--coherency abrahamson-2007-rock --coherency-parameters 0.4",
+                     "abrahamson-2007-rock takes no parameters, not 1");
   expect_input_error(gen + "--positions 0,20,10", "valid: strictly increasing");
   expect_input_error(gen + "--stations 3", "--stations = '3': give --stations N and --spacing D");
   expect_input_error(gen + "--spacing 10", "--spacing = '10': give --stations N and --spacing D");
