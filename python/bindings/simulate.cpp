@@ -50,6 +50,13 @@ py::dict histories_of(const Outcome& o) {
   h["dof_floor"] = to_int_array(o.layout.dof_floor);
   h["site_pair"] = to_int_array(o.layout.site_pair);
   h["site_floor"] = to_int_array(o.layout.site_floor);
+  // Issue 36: where each site's slabs meet, as the histories file's /row/site_*.
+  h["site_kind"] = to_int_array(o.layout.site_kind);
+  h["site_slab_building"] = to_int_array(o.layout.site_slab_building);
+  h["site_slab_floor"] = to_int_array(o.layout.site_slab_floor);
+  h["site_hit_building"] = to_int_array(o.layout.site_hit_building);
+  h["site_hit"] = to_int_array(o.layout.site_hit);
+  h["site_xi"] = to_array(o.layout.site_xi);
   motion["time"] = to_array(o.motion_time);
   motion["acceleration"] = to_array(o.motion_accel);
   h["motion"] = motion;

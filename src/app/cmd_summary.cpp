@@ -116,12 +116,34 @@ void print_collapse(const AmplificationTable& t, const std::vector<std::string>&
     }
 }
 
+// Issue 36: the share of samples whose struck columns failed in shear (ratio >= 1).
+void print_column_shear(const AmplificationTable& t, const std::vector<std::string>& names,
+                        const std::string& im) {
+  if (!t.has_column_shear) return;
+  std::printf(
+      "\nColumn shear: share of the samples (n, those with a column_shear_strength and a struck "
+      "storey) whose struck columns' shear demand reached their strength, with and without "
+      "pounding\n");
+  std::printf("  %-5s %9s %5s  %-10s %9s %9s\n", "group", (im + " [g]").c_str(), "n", "building",
+              "pounding", "free");
+  for (std::size_t g = 0; g < t.groups; ++g)
+    for (std::size_t b = 0; b < t.buildings; ++b) {
+      const std::size_t at = t.building_at(g, b);
+      if (t.column_shear_count[at] == 0) continue;
+      std::printf("  %-5zu %9s %5ld  %-10s %9s %9s\n", g + 1,
+                  fmt("%.4g", t.im[g] / kGravity).c_str(), t.column_shear_count[at],
+                  names[b].c_str(), fmt("%.3f", t.column_shear_failed_pounding[at]).c_str(),
+                  fmt("%.3f", t.column_shear_failed_free[at]).c_str());
+    }
+}
+
 // The tables of one table (every sample, or one contact model's).
 void print_tables(const AmplificationTable& t, const std::vector<std::string>& names,
                   const std::string& im, bool floors) {
   print_measures(t, names, im, floors);
   print_contacts(t, im);
   print_collapse(t, names, im);
+  print_column_shear(t, names, im);
   if (t.failed_total)
     std::printf("\n(%ld failed samples are counted in n and fail, not used)\n", t.failed_total);
 }
@@ -196,6 +218,16 @@ void json_groups(JsonWriter& w, const AmplificationTable& t) {
         w.field("collapsed_pounding", t.collapsed_pounding[at]);
         w.field("stopped_pounding", t.stopped_pounding.empty() ? NAN : t.stopped_pounding[at]);
         w.field("collapsed_free", t.collapsed_free[at]).end_object();
+      }
+      w.end_array();
+    }
+    if (t.has_column_shear) {  // issue 36
+      w.key("column_shear").begin_array();
+      for (std::size_t b = 0; b < t.buildings; ++b) {
+        const std::size_t at = t.building_at(g, b);
+        w.begin_object().field("building", long(b)).field("count", t.column_shear_count[at]);
+        w.field("failed_pounding", t.column_shear_failed_pounding[at]);
+        w.field("failed_free", t.column_shear_failed_free[at]).end_object();
       }
       w.end_array();
     }

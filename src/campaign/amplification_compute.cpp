@@ -265,6 +265,43 @@ void collapse_statistics(const Pass& p, AmplificationTable& t) {
     }
 }
 
+// The share of samples whose struck columns failed in shear (ratio >= 1), per group and
+// building, with and without pounding (issue 36); nothing for a file without a finite ratio.
+void column_shear_statistics(const Pass& p, AmplificationTable& t) {
+  t.has_column_shear = H5Lexists(p.file, "/response/column_shear_ratio_pounding", H5P_DEFAULT) > 0;
+  if (!t.has_column_shear) return;
+  const std::size_t B = t.buildings, S = t.groups * B;
+  const RowBlocks rp(p.file, "/response/column_shear_ratio_pounding", p.path),
+      rf(p.file, "/response/column_shear_ratio_free", p.path);
+  const std::vector<hsize_t> shape = {p.rows.rows(), B};
+  if (rp.dims() != shape || rf.dims() != shape)
+    throw InputError(p.path +
+                     ": /response/column_shear_ratio_pounding and _free must both have "
+                     "the shape [samples, buildings] of the peak_* datasets");
+  t.column_shear_count.assign(S, 0);
+  std::vector<long> with(S, 0), without(S, 0);
+  p.each_used_row(rp, rf, 0, B, [&](std::size_t k, const double* bp, const double* bf) {
+    for (std::size_t b = 0; b < B; ++b) {
+      if (!std::isfinite(bp[b]) || !std::isfinite(bf[b])) continue;
+      const std::size_t at = k * B + b;
+      ++t.column_shear_count[at];
+      with[at] += bp[b] >= 1.0;
+      without[at] += bf[b] >= 1.0;
+    }
+  });
+  // A study without strengths or without slab-to-column sites: no table (NaN ratios only).
+  t.has_column_shear = std::any_of(t.column_shear_count.begin(), t.column_shear_count.end(),
+                                   [](long c) { return c > 0; });
+  if (!t.has_column_shear) return;
+  t.column_shear_failed_pounding.assign(S, kNaN);
+  t.column_shear_failed_free.assign(S, kNaN);
+  for (std::size_t at = 0; at < S; ++at)
+    if (const double c = double(t.column_shear_count[at]); c > 0) {
+      t.column_shear_failed_pounding[at] = double(with[at]) / c;
+      t.column_shear_failed_free[at] = double(without[at]) / c;
+    }
+}
+
 // The table of the samples that `rows`' filter keeps, in the groups of `grouping`.
 AmplificationTable table_of(hid_t file, const std::string& path, SampleRows& rows,
                             const IntensityGrouping& grouping, const std::vector<double>& levels) {
@@ -288,6 +325,7 @@ AmplificationTable table_of(hid_t file, const std::string& path, SampleRows& row
   measure_statistics(p, t);
   contact_statistics(p, t);
   collapse_statistics(p, t);
+  column_shear_statistics(p, t);
   return t;
 }
 

@@ -63,8 +63,18 @@ void write_table(hid_t file, const std::string& root, const AmplificationTable& 
   write_doubles(file, root + "/contact/pounded_fraction", t.pounded_fraction, gpl, "-");
   write_doubles(file, root + "/contact/force_median", t.force_median, gpl, "N");
   write_doubles(file, root + "/contact/force_median_pounded", t.force_median_pounded, gpl, "N");
-  if (!t.has_collapse) return;
   const std::vector<hsize_t> gb = {G, t.buildings};
+  if (t.has_column_shear) {
+    write_longs(file, root + "/column_shear/count", t.column_shear_count, gb);
+    write_doubles(file, root + "/column_shear/failed_pounding", t.column_shear_failed_pounding, gb,
+                  "-");
+    write_doubles(file, root + "/column_shear/failed_free", t.column_shear_failed_free, gb, "-");
+    h5::attribute(file, root + "/column_shear", "definition",
+                  "share of the group's samples with a column-shear ratio (count) whose struck "
+                  "columns' shear demand reached their strength (/response/"
+                  "column_shear_ratio_pounding, _free >= 1), with and without pounding");
+  }
+  if (!t.has_collapse) return;
   write_longs(file, root + "/collapse/count", t.collapse_count, gb);
   write_doubles(file, root + "/collapse/collapsed_pounding", t.collapsed_pounding, gb, "-");
   write_doubles(file, root + "/collapse/collapsed_free", t.collapsed_free, gb, "-");
@@ -98,6 +108,7 @@ class TableReader {
     measures(t);
     contacts(t);
     collapse(t);
+    column_shear(t);
   }
 
  private:
@@ -189,6 +200,13 @@ class TableReader {
       throw bad(name + " is not of the shape [groups, " + std::to_string(t.buildings) +
                 "] (the buildings of /disp/count); " + kKind);
     return v;
+  }
+  void column_shear(AmplificationTable* t) {
+    t->has_column_shear = H5Lexists(file_, (root_ + "/column_shear").c_str(), H5P_DEFAULT) > 0;
+    if (!t->has_column_shear) return;
+    t->column_shear_count = as_longs(two_d("/column_shear/count", *t), "/column_shear/count");
+    t->column_shear_failed_pounding = two_d("/column_shear/failed_pounding", *t);
+    t->column_shear_failed_free = two_d("/column_shear/failed_free", *t);
   }
   void collapse(AmplificationTable* t) {
     t->has_collapse = H5Lexists(file_, (root_ + "/collapse").c_str(), H5P_DEFAULT) > 0;

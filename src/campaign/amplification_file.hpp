@@ -82,6 +82,12 @@ struct AmplificationTable {
   /// stood (the run stops at the first collapse of the row: its later fate is unknown); empty
   /// when read from a stored group written before it existed.
   std::vector<double> stopped_pounding;
+  /// Issue 36: the file has /response/column_shear_ratio_* (the arrays below).
+  bool has_column_shear = false;
+  std::vector<long> column_shear_count;  ///< [G, B] samples with a finite ratio in both runs
+  /// [G, B] [-] share whose struck columns' shear demand reached their strength (ratio >= 1),
+  /// with and without pounding.
+  std::vector<double> column_shear_failed_pounding, column_shear_failed_free;
   std::string model;  ///< "" for every sample, else the contact model of a per-model table
   /// Per contact model (the labels of /samples/model, in byte order), the same statistics over
   /// its samples in these groups; empty when the file has no /samples/model.

@@ -37,6 +37,12 @@ void write_histories(const std::string& path, const BuildingRow& row, const Grou
     h5::write(f.id(), "/row/dof_floor", l.dof_floor);
     h5::write(f.id(), "/row/site_pair", l.site_pair);
     h5::write(f.id(), "/row/site_floor", l.site_floor);
+    h5::write(f.id(), "/row/site_kind", l.site_kind);  // 0 slab to slab, 1 slab to column
+    h5::write(f.id(), "/row/site_slab_building", l.site_slab_building);
+    h5::write(f.id(), "/row/site_slab_floor", l.site_slab_floor);
+    h5::write(f.id(), "/row/site_hit_building", l.site_hit_building);
+    h5::write(f.id(), "/row/site_hit", l.site_hit);  // floor (slab) or storey (column)
+    h5::write(f.id(), "/row/site_xi", l.site_xi, l.site_xi.size(), 0, "-");
     write_run(f.id(), "/pounding", sim.pounding.history, l);
     write_run(f.id(), "/free", sim.free.history, l);
     std::vector<double> t(motion.accel.size());

@@ -19,6 +19,13 @@ HistoryLayout history_layout(const BuildingRow& row, const RowSimulation& sim) {
   for (const auto& s : sim.sites) {
     l.site_pair.push_back(s.pair);
     l.site_floor.push_back(s.floor);
+    const SiteGeometry& g = s.site.geometry;
+    l.site_kind.push_back(g.kind == SiteKind::column ? 1 : 0);
+    l.site_slab_building.push_back(s.pair + g.slab_side + 1);
+    l.site_slab_floor.push_back(g.slab_floor + 1);
+    l.site_hit_building.push_back(s.pair + 1 - g.slab_side + 1);
+    l.site_hit.push_back(g.hit + 1);
+    l.site_xi.push_back(g.xi);
   }
   return l;
 }

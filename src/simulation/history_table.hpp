@@ -19,7 +19,12 @@ struct HistoryLayout {
   std::vector<int> dof_building;  ///< 0-based building of each DOF column
   std::vector<int> dof_floor;     ///< 1-based floor of each DOF column
   std::vector<int> site_pair;     ///< 0-based pair of each site column
-  std::vector<int> site_floor;    ///< 1-based floor of each site column
+  std::vector<int> site_floor;    ///< 1-based site number within its pair (aligned: floor)
+  // Where each site's slabs meet (issue 36; the JSON's per-site fields): kind 0 slab to slab, 1
+  // slab to column; the striking slab's building and floor and the struck building (1-based);
+  // the struck floor (slab sites) or storey (column sites), 1-based; xi [-].
+  std::vector<int> site_kind, site_slab_building, site_slab_floor, site_hit_building, site_hit;
+  std::vector<double> site_xi;
   /// The assembled row's storey of each DOF (for the drifts; not written).
   std::vector<RowStorey> storeys;
   /// Per building the DOF of its base's sway and rotation, -1 on a fixed base (not written).

@@ -1,0 +1,61 @@
+// The column_shear limit state through the commands (issue 36): a campaign of the smoke study
+// with the right building 1.5 m up a slope (the left one's floor strikes its columns at mid
+// height) and a column shear strength; pound summary's shares against the campaign file's
+// ratios counted here, and pound fragility's column_shear curve.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <string>
+
+#include "../support/campaign_process.hpp"
+#include "../support/scratch_dir.hpp"
+#include "../support/shell.hpp"
+
+namespace {
+
+const std::string& dir() {
+  static const std::string d = pound::test::process_scratch_subdir("column_shear");
+  return d;
+}
+
+TEST(ColumnShearCommands, SummarySharesAndFragilityCurves) {
+  const std::string run = pound::test::make_smoke_campaign(
+      dir() + "/offset.h5", 40,
+      "--building2.base_elevation 1.5 --building2.column_shear_strength 300");
+  ASSERT_FALSE(::testing::Test::HasFailure());
+  const std::string summary = dir() + "/summary.json", frag = dir() + "/fragility.json";
+  ASSERT_EQ(pound::test::run_command(std::string(POUND_BINARY) + " summary --input " + run +
+                                     " --json > " + summary),
+            0);
+  ASSERT_EQ(pound::test::run_command(std::string(POUND_BINARY) + " fragility --input " + run +
+                                     " --json > " + frag),
+            0);
+  // Counted from /response here: building 2 (index 1) is struck, building 1 has no ratio.
+  std::ofstream(dir() + "/check.py")
+      << "import h5py, json, math, sys\n"
+         "f = h5py.File(sys.argv[1], 'r')\n"
+         "rp = f['response/column_shear_ratio_pounding'][()]\n"
+         "rf = f['response/column_shear_ratio_free'][()]\n"
+         "assert all(math.isnan(x) for x in rp[:, 0]), 'building 1 is never struck'\n"
+         "n = sum(1 for a, b in zip(rp[:, 1], rf[:, 1]) if math.isfinite(a) and math.isfinite(b))\n"
+         "wp = sum(1 for a in rp[:, 1] if a >= 1)\n"
+         "wf = sum(1 for a in rf[:, 1] if a >= 1)\n"
+         "assert n == 40, n\n"
+         "assert 0 < wp < 40, wp\n"
+         "s = json.load(open(sys.argv[2]))\n"
+         "cs = [c for g in s['groups'] for c in g['column_shear'] if c['building'] == 1]\n"
+         "assert sum(c['count'] for c in cs) == n\n"
+         "assert round(sum(c['count'] * c['failed_pounding'] for c in cs)) == wp\n"
+         "assert round(sum(c['count'] * c['failed_free'] for c in cs)) == wf\n"
+         "fr = json.load(open(sys.argv[3]))\n"
+         "cur = [c for c in fr['curves'] if c['edp'] == 'column_shear']\n"
+         "assert any(c['building'] == 1 and c['limit'] == 1 for c in cur), cur\n"
+         "print('ok', n, wp, wf)\n";
+  const std::string log = dir() + "/check.log";
+  EXPECT_EQ(pound::test::run_command("/usr/bin/python3 " + dir() + "/check.py " + run + " " +
+                                     summary + " " + frag + " > " + log + " 2>&1"),
+            0)
+      << pound::test::slurp(log);
+}
+
+}  // namespace
