@@ -73,6 +73,9 @@ SampleOutcome outcome(const CampaignStudy& st, long id) {
   o.collapsed_free = {1.0, std::nan("")};
   o.collapse_time_pounding = {id % 2 ? 3.25 + id : std::nan(""), std::nan("")};
   o.collapse_time_free = {2.5 + 0.125 * id, std::nan("")};
+  // The column-shear ratios (issue 36): NaN where a building is not struck.
+  o.column_shear_ratio_pounding = {std::nan(""), 0.75 + 0.5 * id};
+  o.column_shear_ratio_free = {std::nan(""), 0.5 + 0.0625 * id};
   o.peak_force.assign(pl, 1000.0 * id);
   o.impacts.assign(pl, 3.0);
   o.approach_free.assign(pl, 0.0125 + 0.001 * id);
@@ -83,11 +86,11 @@ SampleOutcome outcome(const CampaignStudy& st, long id) {
 TEST(Journal, RecordsRoundTripAndATornTailIsDropped) {
   const CampaignStudy st = tiny_study();
   const RecordLayout layout(st);
-  // im, scale, e, 12 per-floor arrays of 2 x 2, 4 per-building arrays of 2, peak force,
+  // im, scale, e, 12 per-floor arrays of 2 x 2, 6 per-building arrays of 2, peak force,
   // impacts and approach of 1 x 1, the relative ground displacement of 1 pair, wall, rank.
   EXPECT_EQ(floor_array_fields().size(), 12u);
-  EXPECT_EQ(building_array_fields().size(), 4u);
-  EXPECT_EQ(layout.values(), 2u + 1u + 12u * 2u * 2u + 4u * 2u + 3u * 1u * 1u + 1u + 2u);
+  EXPECT_EQ(building_array_fields().size(), 6u);
+  EXPECT_EQ(layout.values(), 2u + 1u + 12u * 2u * 2u + 6u * 2u + 3u * 1u * 1u + 1u + 2u);
   const std::string path = test::process_scratch_dir() / "journal";
   {
     JournalWriter w(path, st, false);
