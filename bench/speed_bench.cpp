@@ -577,6 +577,17 @@ int run(int argc, char** argv) {
                    "studies/fragility-default.ini", varying, {}, n, repeat, only, which);
     return 0;
   }
+  if (mode == "offset") {  // issue 36: slab-to-column sites against slab-to-slab ones
+    const long n = argc > 3 ? std::stol(argv[3]) : 30;
+    const int repeat = argc > 4 ? std::stoi(argv[4]) : 2;
+    const std::string only = argc > 5 && std::string(argv[5]) != "all" ? argv[5] : "";
+    compare_case(
+        "9. offset floors (six slab-to-column sites) against the same pair with aligned floors "
+        "(three slab-to-slab sites)",
+        src, "studies/offset-floors.ini", {}, {"--building2.base_elevation", "0"}, n, repeat, only,
+        "both");
+    return 0;
+  }
   if (argc > 2 && std::string(argv[2]) == "collapse")  // case 6 alone
     return collapse_case(src, std::vector<std::string>(argv + 3, argv + argc));
   if (argc > 2 && std::string(argv[2]) == "inelastic") {  // case 4 alone
@@ -743,7 +754,8 @@ int main(int argc, char** argv) {
         "usage: bench_speed [SOURCE [quick | lumped [check] | sample ID | inelastic [N] | samples "
         "[N [REPEAT [MODEL [spectral|none]]]] | collapse ... | ssi|svgm|svgm-apart|svgm-default [N "
         "[REPEAT "
-        "[MODEL|all [with|base]]]] | ch8 | fine-step | contact-steps]]\n(SOURCE: the source tree "
+        "[MODEL|all [with|base]]]] | offset [N [REPEAT [MODEL|all]]] | ch8 | fine-step | "
+        "contact-steps]]\n(SOURCE: the source tree "
         "whose studies/ are timed; the cases are described at the top of bench/speed_bench.cpp)\n");
     return 0;
   }
