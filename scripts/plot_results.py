@@ -343,7 +343,7 @@ def plot_risk(risk_path, out):
             if np.isfinite(lo) and np.isfinite(hi):
                 ax.axvspan(lo * 1000, hi * 1000, color="k", alpha=0.08, lw=0)
         for rule, gap, prob, c in zip(d["rules"], d["rule_gap"], d["rule_probability"],
-                                      ("tab:red", "tab:green", "tab:purple")):
+                                      ("tab:red", "tab:green", "tab:purple", "tab:orange")):
             ax.axvline(gap * 1000, color=c, lw=1.0, ls=":",
                        label=f"{rule} at {design_im:.3g} g: {gap * 1000:.0f} mm"
                              + (f", P = {prob:.3g}" if np.isfinite(prob) else ""))

@@ -124,6 +124,7 @@ void print_text(const CampaignData& c, const HazardCurve& h, const RiskReport& r
     }
     std::printf("        median free peak displacements by level [m]: %s | %s\n", ml.c_str(),
                 mr.c_str());
+    std::printf("        ec8 (EN 1998-1 4.4.2.7(3)): %s\n", describe(p.ec8_case));
   }
   for (const auto& p : r.pairs) {
     std::printf(

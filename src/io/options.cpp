@@ -148,15 +148,23 @@ void Options::parse(int argc, const char* const* argv) {
   }
   if (vm.count("config")) {
     config_path_ = vm["config"].as<std::string>();
-    for (const auto& e : read_ini(config_path_)) {
-      const auto* spec = find_spec(e.key);
-      if (!spec || spec->flag) {
-        throw InputError(e.file + ":" + std::to_string(e.line) + ": unknown key '" + e.key +
-                         "' for 'pound " + command_ + "'; valid keys: " + valid_keys_hint(e.key));
-      }
-      values_.emplace(e.key, Value{e.value, e.file, e.line});  // command line wins
-    }
+    add_entries(read_ini(config_path_));
   }
+}
+
+void Options::add_entries(const std::vector<IniEntry>& entries) {
+  for (const auto& e : entries) {
+    const auto* spec = find_spec(e.key);
+    if (!spec || spec->flag) {
+      throw InputError(e.file + ":" + std::to_string(e.line) + ": unknown key '" + e.key +
+                       "' for 'pound " + command_ + "'; valid keys: " + valid_keys_hint(e.key));
+    }
+    values_.emplace(e.key, Value{e.value, e.file, e.line});  // command line wins
+  }
+}
+
+void Options::parse_text(const std::string& text, const std::string& name) {
+  add_entries(parse_ini(text, name));
 }
 
 void Options::parse(const std::vector<std::string>& args) {

@@ -16,6 +16,8 @@
 
 namespace pound {
 
+struct IniEntry;  // io/ini.hpp
+
 struct OptionSpec {
   std::string key;            ///< dotted key; section "a" and key "b" in INI give "a.b"
   std::string unit;           ///< SI unit or "-" for dimensionless, "" for text and flags
@@ -33,6 +35,9 @@ class Options {
   void parse(int argc, const char* const* argv);
   /// The same from the arguments after the program name ({"--config", "study.ini", ...}).
   void parse(const std::vector<std::string>& args);
+  /// The keys of a study given as INI text (a study stored in a result file), as --config reads
+  /// a file; `name` stands for the file in messages. Throws InputError as parse() does.
+  void parse_text(const std::string& text, const std::string& name);
 
   bool help_requested() const { return help_; }
   std::string help_text() const;
@@ -93,6 +98,8 @@ class Options {
     int line = 0;
   };
   const OptionSpec* find_spec(const std::string& key) const;
+  /// Takes the entries of a study file; keys already given (the command line) win.
+  void add_entries(const std::vector<IniEntry>& entries);
   const Value* lookup(const std::string& key) const;
   /// Runs a parse; a failure gets the key's meaning and unit appended ("expected ...").
   template <class Parse>

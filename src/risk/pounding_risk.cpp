@@ -9,6 +9,7 @@
 #include "core/error.hpp"
 #include "motion/ground_motion.hpp"
 #include "risk/risk_integral.hpp"
+#include "risk/site_displacements.hpp"
 
 namespace pound {
 namespace {
@@ -297,9 +298,11 @@ void bootstrap_bands(const PairAnalysis& pa, const std::vector<double>& grid,
   pr.gap_band = percentile_interval(rep_gap, s.confidence);
 }
 
-// Code rules at the design intensity, from the median free-run peak displacements.
+// Code rules at the design intensity, from the median free-run peak displacements at each of
+// the pair's sites (sites: null where the study's floors are unknown).
 void code_rules(const PairAnalysis& pa, const CampaignData& c, const DesignPoint& design,
-                const std::vector<BuildingMode>& modes, PairRisk& pr) {
+                const std::vector<BuildingMode>& modes, const std::vector<SiteGeometry>* sites,
+                PairRisk& pr) {
   const std::size_t bl = pr.pair, br = pr.pair + 1;
   if (!design.in_range) {
     pr.rules_note = "the design intensity " + std::to_string(design.im / kGravity) +
@@ -313,12 +316,20 @@ void code_rules(const PairAnalysis& pa, const CampaignData& c, const DesignPoint
   pr.rho =
       cqc_correlation(modes[bl].period_s, modes[bl].damping, modes[br].period_s, modes[br].damping);
   const FloorArray& u = c.floor_array("peak_disp_free");
-  for (std::size_t l = 0; l < c.approach_free.floors && l < u.floors; ++l) {
-    const double ul = median_at(design.medians, design.im, bl, l);
-    const double ur = median_at(design.medians, design.im, br, l);
-    if (!std::isfinite(ul) || !std::isfinite(ur)) break;  // the lower building's roof
-    pr.median_left.push_back(ul);
-    pr.median_right.push_back(ur);
+  std::vector<double> floors_l, floors_r;  // the median at each floor
+  for (std::size_t f = 0; f < u.floors; ++f) {
+    floors_l.push_back(median_at(design.medians, design.im, bl, f));
+    floors_r.push_back(median_at(design.medians, design.im, br, f));
+  }
+  // EN 1998-1 4.4.2.7: the displacements at the level of each potential contact (issue 36);
+  // without the study's floors, floor l against floor l as before.
+  pr.ec8_case = sites ? ec8_case(*sites) : Ec8Case::floors_unknown;
+  for (const SiteGeometry& g :
+       sites ? *sites : same_index_sites(std::min(c.approach_free.floors, u.floors))) {
+    const SiteDisplacements d = site_displacements(g, floors_l, floors_r);
+    if (!std::isfinite(d.left) || !std::isfinite(d.right)) break;  // the lower building's roof
+    pr.median_left.push_back(d.left);
+    pr.median_right.push_back(d.right);
   }
   pr.rules_computed = !pr.median_left.empty();
   if (!pr.rules_computed) {
@@ -330,7 +341,8 @@ void code_rules(const PairAnalysis& pa, const CampaignData& c, const DesignPoint
     cr.rule = rule;
     cr.gap = -1.0;
     for (std::size_t l = 0; l < pr.median_left.size(); ++l) {
-      const double g = separation_gap(rule, pr.median_left[l], pr.median_right[l], pr.rho);
+      const double g =
+          separation_gap(rule, pr.median_left[l], pr.median_right[l], pr.rho, pr.ec8_case);
       if (g > cr.gap) cr.gap = g, cr.level = int(l + 1);
     }
     cr.estimate = pa.estimate(cr.gap);
@@ -343,7 +355,7 @@ void code_rules(const PairAnalysis& pa, const CampaignData& c, const DesignPoint
 PairRisk analyse_pair(const PairAnalysis& pa, std::size_t p, const CampaignData& c,
                       const ExceedanceDesign& d, const RiskSettings& s,
                       const BootstrapResampler& resampler, const DesignPoint& design,
-                      const std::vector<BuildingMode>& modes) {
+                      const std::vector<BuildingMode>& modes, const PairSites& sites) {
   PairRisk pr;
   pr.pair = p;
   const std::vector<double> grid = gap_grid(pa, s);
@@ -355,7 +367,7 @@ PairRisk analyse_pair(const PairAnalysis& pa, std::size_t p, const CampaignData&
   }
   pr.gap_for_target = pa.gap_for_target(grid, prob, {}, &pr.target_status);
   bootstrap_bands(pa, grid, resampler, s, pr);
-  code_rules(pa, c, design, modes, pr);
+  code_rules(pa, c, design, modes, p < sites.size() ? &sites[p] : nullptr, pr);
   return pr;
 }
 
@@ -434,7 +446,12 @@ void add_pair_notes(const PairRisk& pr, const PairAnalysis& pa, std::vector<std:
                     std::to_string(pr.gap_band.finite) + " of " +
                     std::to_string(pr.bootstrap_replicates) +
                     " bootstrap replicates in which the gap could be estimated");
-  if (!pr.rules_computed) notes.push_back(pair + "code rules not computed: " + pr.rules_note);
+  if (!pr.rules_computed)
+    notes.push_back(pair + "code rules not computed: " + pr.rules_note);
+  else if (pr.ec8_case == Ec8Case::floors_unknown)
+    notes.push_back(pair +
+                    "the study's floor elevations could not be read from the campaign file: "
+                    "the code rules pair floor l with floor l, and ec8 takes no reduction");
   if (std::isfinite(pr.gap_for_target)) {
     const GapEstimate at = pa.estimate(pr.gap_for_target);
     if (at.pounding > 0 && 2 * at.pounding_collapsed > at.pounding)
@@ -501,7 +518,8 @@ std::vector<CollapseRisk> collapse_risks(const std::vector<DamageRisk>& damage,
 }
 
 RiskReport analyse_risk(const CampaignData& c, const HazardCurve& h, const RiskSettings& s,
-                        const std::vector<BuildingMode>& modes, const FragilitySettings& limits) {
+                        const std::vector<BuildingMode>& modes, const PairSites& sites,
+                        const FragilitySettings& limits) {
   check_risk_inputs(c, s);
   RiskReport r;
   r.samples = c.samples;
@@ -534,8 +552,8 @@ RiskReport analyse_risk(const CampaignData& c, const HazardCurve& h, const RiskS
   const BootstrapResampler resampler(d, s.bootstrap);
   const std::size_t npairs = c.approach_free.buildings;
   for (std::size_t p = 0; p < npairs; ++p)
-    r.pairs.push_back(
-        analyse_pair(PairAnalysis(c, used, d, h, s, p), p, c, d, s, resampler, design, modes));
+    r.pairs.push_back(analyse_pair(PairAnalysis(c, used, d, h, s, p), p, c, d, s, resampler, design,
+                                   modes, sites));
   r.damage = damage_risks(c, h, limits, im_lo, im_hi);
   r.collapse = collapse_risks(r.damage, s, r.design_im_given ? r.design_im : 0.0);
 

@@ -7,7 +7,8 @@
 // fragility/lognormal_fit.hpp), and integrated over the site's hazard curve into the mean
 // annual frequency of pounding nu(g) (risk_integral.hpp); then the probability in T years,
 // the smallest gap whose probability is at most a target (with a bootstrap band:
-// fragility/bootstrap.hpp), the code rules' gaps (code_rules.hpp) and their probabilities,
+// fragility/bootstrap.hpp), the code rules' gaps (code_rules.hpp, at each contact site:
+// site_displacements.hpp) and their probabilities,
 // and the mean annual frequencies of the damage limits with and without pounding. Pure: data
 // in, numbers out.
 #include <string>
@@ -19,6 +20,7 @@
 #include "fragility/lognormal_fit.hpp"
 #include "risk/code_rules.hpp"
 #include "risk/hazard_curve.hpp"
+#include "structure/contact_geometry.hpp"
 
 namespace pound {
 
@@ -90,10 +92,14 @@ struct PairRisk {
   int bootstrap_replicates = 0;
   // Code rules at the design intensity.
   bool rules_computed = false;
-  std::string rules_note;                         ///< why not, when not computed
-  std::vector<double> median_left, median_right;  ///< per level: median free peak disp [m]
-  double rho = 0.0;                   ///< Der Kiureghian correlation of the first modes [-]
-  std::vector<CodeRuleResult> rules;  ///< abs, srss, ddc
+  std::string rules_note;  ///< why not, when not computed
+  /// Per level (the pair's contact site, 1-based in CodeRuleResult::level; aligned floors: the
+  /// floor), the median free peak displacement of each side's point there [m]
+  /// (risk/site_displacements.hpp).
+  std::vector<double> median_left, median_right;
+  double rho = 0.0;  ///< Der Kiureghian correlation of the first modes [-]
+  Ec8Case ec8_case = Ec8Case::floors_unknown;  ///< EN 1998-1 4.4.2.7(3), from the pair's sites
+  std::vector<CodeRuleResult> rules;           ///< abs, srss, ddc, ec8
 };
 
 /// A damage limit's mean annual frequency of exceedance with and without pounding.
@@ -147,9 +153,16 @@ struct RiskReport {
 std::vector<CollapseRisk> collapse_risks(const std::vector<DamageRisk>& damage,
                                          const RiskSettings& s, double design_im);
 
+/// Each adjacent pair's contact sites (structure/contact_geometry.hpp; risk/study_sites.hpp);
+/// empty where the study's floors could not be read.
+using PairSites = std::vector<std::vector<SiteGeometry>>;
+
 /// Throws InputError when the file has no /response/approach_free, no sample succeeded, the
-/// settings are out of range, or a given design intensity lies outside the campaign's.
+/// settings are out of range, or a given design intensity lies outside the campaign's. The code
+/// rules combine the displacements at each of a pair's `sites`; without them (sites shorter
+/// than the pairs) floor l against floor l, and ec8 takes no reduction (Ec8Case::floors_unknown).
 RiskReport analyse_risk(const CampaignData& c, const HazardCurve& h, const RiskSettings& s,
-                        const std::vector<BuildingMode>& modes, const FragilitySettings& limits);
+                        const std::vector<BuildingMode>& modes, const PairSites& sites,
+                        const FragilitySettings& limits);
 
 }  // namespace pound

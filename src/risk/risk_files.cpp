@@ -37,13 +37,14 @@ std::string gaps_csv(const RiskReport& r) {
 std::string rules_csv(const RiskReport& r) {
   std::string s =
       "pair,rule,gap_m,level,design_im_mps2,rho,pounding,status,theta_mps2,beta,maf_per_year,"
-      "probability\n";
+      "probability,ec8_case\n";
   for (const auto& p : r.pairs)
     for (const auto& k : p.rules)
       s += std::to_string(p.pair + 1) + "," + to_string(k.rule) + "," + csv_number(k.gap) + "," +
            std::to_string(k.level) + "," + csv_number(r.design_im) + "," + csv_number(p.rho) + "," +
            std::to_string(k.estimate.pounding) + "," + fit_fields(k.estimate.fit) + "," +
-           csv_number(k.estimate.maf) + "," + csv_number(k.estimate.probability) + "\n";
+           csv_number(k.estimate.maf) + "," + csv_number(k.estimate.probability) + "," +
+           (k.rule == SeparationRule::ec8 ? to_string(p.ec8_case) : "") + "\n";
   return s;
 }
 
@@ -165,6 +166,7 @@ void write_h5(const std::string& path, const CampaignData& c, const HazardCurve&
       h5::attribute(id, pg, "gap_band_hi_m", p.gap_band.hi);
       h5::attribute(id, pg, "gap_band_finite", double(p.gap_band.finite));
       h5::attribute(id, pg, "rho", p.rho);
+      h5::attribute(id, pg, "ec8_case", to_string(p.ec8_case));
       h5::attribute(id, pg, "rules_note", p.rules_note);
       std::vector<double> rg, rl, rp, rm;
       std::vector<std::string> names;

@@ -3,8 +3,8 @@
 // their own so that the campaign file is never touched (docs/risk.md, "Output"):
 //   risk_gaps.csv     per pair and gap: pounding samples, fit status, theta [m/s^2], beta,
 //                     nu [1/yr], probability in T years and its bootstrap band
-//   code_rules.csv    per pair and rule (abs, srss, ddc): gap [m], governing level, fit, nu,
-//                     probability, with the design intensity, the medians and rho
+//   code_rules.csv    per pair and rule (abs, srss, ddc, ec8): gap [m], governing level, fit,
+//                     nu, probability, with the design intensity, rho and ec8's case
 //   damage_maf.csv    per building, EDP and limit: nu with and without pounding and their ratio
 //   risk.h5           all of it, the hazard curve used (points and the interpolated and
 //                     extrapolated curve) and the observed pounding fractions per stripe

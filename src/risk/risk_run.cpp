@@ -10,6 +10,7 @@
 #include "io/output_folder.hpp"
 #include "motion/ground_motion.hpp"
 #include "risk/risk_files.hpp"
+#include "risk/study_sites.hpp"
 
 namespace pound {
 
@@ -72,7 +73,12 @@ RiskRun run_risk_analysis(const Options& opt, bool write_files) {
   } catch (const InputError&) {
     run.modes.clear();  // the code rules say they could not be computed
   }
-  run.report = analyse_risk(c, h, s, run.modes, study_fragility_limits(c));
+  try {
+    run.sites = study_pair_sites(c);
+  } catch (const InputError&) {
+    run.sites.clear();  // the code rules pair floor l with floor l and say so
+  }
+  run.report = analyse_risk(c, h, s, run.modes, run.sites, study_fragility_limits(c));
   if (!write_files) return run;
 
   const std::string dir = output_folder(opt, input, "risk");
@@ -147,6 +153,7 @@ std::string risk_json(const RiskRun& run) {
       w.null();
     w.field("gap_band_finite", long(p.gap_band.finite));
     w.field("rho", p.rho);
+    w.field("ec8_case", to_string(p.ec8_case));
     w.objects("code_rules", p.rules, [&](const CodeRuleResult& k) {
       w.field("rule", to_string(k.rule))
           .field("gap_m", k.gap)

@@ -25,6 +25,7 @@ struct RiskRun {
   HazardCurve hazard;
   RiskSettings settings;
   std::vector<BuildingMode> modes;  ///< first modes of the code rules (empty: not computed)
+  PairSites sites;                  ///< each pair's contact sites (empty: the study unread)
   RiskReport report;
   std::string dir;                 ///< the output folder ("" when no file was written)
   std::vector<std::string> files;  ///< the files written

@@ -86,6 +86,25 @@ TEST(Options, UnknownKeySuggestsTheDeclaredOne) {
   }
 }
 
+// A study stored in a result file (its resolved "key = value" lines) is read as a file is.
+TEST(Options, StudyTextIsReadAsAFileWithItsNameAndLines) {
+  Options o("campaign", "", specs());
+  o.parse_text("building1.masses = 1e5, 2e5\npair1.gap = 0.02\n", "run.h5 (stored study)");
+  EXPECT_EQ(o.get_doubles("building1.masses"), (std::vector<double>{1e5, 2e5}));
+  EXPECT_DOUBLE_EQ(o.get_double("pair1.gap"), 0.02);
+  EXPECT_DOUBLE_EQ(o.get_double("contact.e"), 0.65);  // a default
+  EXPECT_EQ(o.where("pair1.gap"), "run.h5 (stored study):2: key 'pair1.gap'");
+  Options bad("campaign", "", specs());
+  try {
+    bad.parse_text("pair1.gap = 0.02\npair1.gpa = 0.01\n", "run.h5 (stored study)");
+    FAIL() << "an unknown key was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("run.h5 (stored study):2: unknown key 'pair1.gpa'"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(Options, UnknownCommandLineKeyListsItsSection) {
   Options o("simulate", "", specs());
   try {

@@ -57,7 +57,7 @@ def test_risk_is_the_commands_json_and_writes_nothing_unless_asked(campaign, tmp
     assert without_files(py) == without_files(cli)
     assert py["years"] == 30 and abs(py["design_im"] - 0.5 * 9.80665) < 1e-12
     rules = py["pairs"][0]["code_rules"]
-    assert len(rules) == 3 and all(r["gap_m"] > 0 for r in rules)
+    assert len(rules) == 4 and all(r["gap_m"] > 0 for r in rules)
     assert py["files"] == [] and not (campaign.parent / "run-risk").exists()
     written = pound.risk(campaign, HAZARD, out=tmp_path / "py", design_im=0.5, replicates=100,
                          years=30)

@@ -41,5 +41,23 @@ TEST(CodeRules, AbsSrssAndDoubleDifference) {
   EXPECT_STREQ(to_string(SeparationRule::ddc), "ddc");
 }
 
+// EN 1998-1 4.4.2.7(3): 0.7 x SRSS where the floors coincide, the SRSS gap itself otherwise
+// (and where the floors are not known); rho plays no part.
+TEST(CodeRules, Ec8IsSrssReducedBySevenTenthsOnlyWhereTheFloorsCoincide) {
+  const double a = 0.03, b = 0.04;  // SRSS 0.05
+  EXPECT_NEAR(separation_gap(SeparationRule::ec8, a, b, 0.3, Ec8Case::floors_coincide), 0.035,
+              1e-15);
+  EXPECT_DOUBLE_EQ(separation_gap(SeparationRule::ec8, a, b, 0.3, Ec8Case::floors_offset), 0.05);
+  EXPECT_DOUBLE_EQ(separation_gap(SeparationRule::ec8, a, b, 0.9, Ec8Case::floors_unknown), 0.05);
+  EXPECT_DOUBLE_EQ(separation_gap(SeparationRule::ec8, a, b, 0.3), 0.05);  // no case: no cut
+  EXPECT_EQ(ec8_factor(Ec8Case::floors_coincide), 0.7);
+  EXPECT_EQ(ec8_factor(Ec8Case::floors_offset), 1.0);
+  EXPECT_STREQ(to_string(SeparationRule::ec8), "ec8");
+  EXPECT_STREQ(to_string(Ec8Case::floors_coincide), "floors_coincide");
+  EXPECT_STREQ(to_string(Ec8Case::floors_offset), "floors_offset");
+  EXPECT_STREQ(describe(Ec8Case::floors_coincide), "floors coincide: 0.7 x SRSS");
+  EXPECT_STREQ(describe(Ec8Case::floors_offset), "floors do not coincide: SRSS");
+}
+
 }  // namespace
 }  // namespace pound

@@ -15,6 +15,8 @@
 #include "core/error.hpp"
 #include "motion/ground_motion.hpp"
 #include "risk/risk_integral.hpp"
+#include "risk/site_displacements.hpp"
+#include "risk/study_sites.hpp"
 #include "sampling/normal.hpp"
 
 namespace pound {
@@ -98,6 +100,7 @@ RiskSettings settings() {
 }
 
 const std::vector<BuildingMode> kModes = {{0.53, 0.05}, {0.29, 0.05}};
+const PairSites kAligned = {same_index_sites(1)};  // floor 1 meets floor 1, slab to slab
 
 FragilitySettings drift_limit() {
   FragilitySettings f;
@@ -107,7 +110,7 @@ FragilitySettings drift_limit() {
 
 TEST(PoundingRisk, RecoversTheClosedFormFragilityAndMeanAnnualFrequencyAtEveryGap) {
   const CampaignData c = made_up_campaign();
-  const RiskReport r = analyse_risk(c, power_law(), settings(), kModes, drift_limit());
+  const RiskReport r = analyse_risk(c, power_law(), settings(), kModes, kAligned, drift_limit());
   ASSERT_EQ(r.pairs.size(), 1u);
   const PairRisk& p = r.pairs[0];
   ASSERT_EQ(p.grid.size(), 40u);
@@ -134,7 +137,7 @@ TEST(PoundingRisk, RecoversTheClosedFormFragilityAndMeanAnnualFrequencyAtEveryGa
 TEST(PoundingRisk, GapForTheTargetInvertsTheClosedFormWithinItsBand) {
   const CampaignData c = made_up_campaign();
   const RiskSettings s = settings();
-  const RiskReport r = analyse_risk(c, power_law(), s, kModes, drift_limit());
+  const RiskReport r = analyse_risk(c, power_law(), s, kModes, kAligned, drift_limit());
   const PairRisk& p = r.pairs[0];
   // nu(g*) = -ln(1 - P) / T: g* = c (k0 exp(k^2 beta^2 / 2) / nu*)^(1/k).
   const double nu_star = -std::log1p(-s.target_probability) / s.years;
@@ -157,7 +160,7 @@ TEST(PoundingRisk, GapForTheTargetInvertsTheClosedFormWithinItsBand) {
 TEST(PoundingRisk, CodeRulesFromTheMedianFreeDisplacementsAtTheDesignIntensity) {
   const CampaignData c = made_up_campaign();
   const RiskSettings s = settings();
-  const RiskReport r = analyse_risk(c, power_law(), s, kModes, drift_limit());
+  const RiskReport r = analyse_risk(c, power_law(), s, kModes, kAligned, drift_limit());
   const PairRisk& p = r.pairs[0];
   ASSERT_TRUE(p.rules_computed) << p.rules_note;
   // The medians of stripe 6, as the test computes them.
@@ -170,9 +173,10 @@ TEST(PoundingRisk, CodeRulesFromTheMedianFreeDisplacementsAtTheDesignIntensity) 
   EXPECT_DOUBLE_EQ(p.median_left[0], ml);
   EXPECT_DOUBLE_EQ(p.median_right[0], mr);
   EXPECT_DOUBLE_EQ(p.rho, cqc_correlation(0.53, 0.05, 0.29, 0.05));
-  ASSERT_EQ(p.rules.size(), 3u);
+  ASSERT_EQ(p.rules.size(), 4u);
+  EXPECT_EQ(p.ec8_case, Ec8Case::floors_coincide);
   for (const auto& k : p.rules) {
-    EXPECT_DOUBLE_EQ(k.gap, separation_gap(k.rule, ml, mr, p.rho)) << to_string(k.rule);
+    EXPECT_DOUBLE_EQ(k.gap, separation_gap(k.rule, ml, mr, p.rho, p.ec8_case)) << to_string(k.rule);
     EXPECT_EQ(k.level, 1);
     // Its probability is that of the fitted fragility at that gap.
     ASSERT_TRUE(k.estimate.fit.finite());
@@ -181,13 +185,28 @@ TEST(PoundingRisk, CodeRulesFromTheMedianFreeDisplacementsAtTheDesignIntensity) 
   EXPECT_GT(p.rules[0].gap, p.rules[1].gap);  // abs > srss > ddc (rho > 0)
   EXPECT_GT(p.rules[1].gap, p.rules[2].gap);
   EXPECT_LT(p.rules[0].estimate.probability, p.rules[2].estimate.probability);
+  EXPECT_EQ(p.rules[3].rule, SeparationRule::ec8);
+  EXPECT_DOUBLE_EQ(p.rules[3].gap, 0.7 * p.rules[1].gap);
+  EXPECT_GT(p.rules[3].estimate.probability, p.rules[1].estimate.probability);
+  // Without the study's floors: floor 1 against floor 1 as before, to the bit, and no reduction.
+  const RiskReport unread = analyse_risk(c, power_law(), s, kModes, {}, drift_limit());
+  const PairRisk& q = unread.pairs[0];
+  EXPECT_EQ(q.ec8_case, Ec8Case::floors_unknown);
+  ASSERT_EQ(q.rules.size(), 4u);
+  for (int k = 0; k < 3; ++k) EXPECT_EQ(q.rules[k].gap, p.rules[k].gap) << k;
+  EXPECT_EQ(q.rules[3].gap, q.rules[1].gap);
+  EXPECT_NE(std::find_if(unread.notes.begin(), unread.notes.end(),
+                         [](const std::string& n) {
+                           return n.find("floor elevations could not be read") != std::string::npos;
+                         }),
+            unread.notes.end());
 }
 
 TEST(PoundingRisk, DamageLimitRiskWithAndWithoutPounding) {
   // The drift with pounding is 1.25 times the free drift: theta falls by 1.25 and, with the
   // same beta, nu rises by 1.25^k on a power-law hazard.
   const RiskReport r =
-      analyse_risk(made_up_campaign(), power_law(), settings(), kModes, drift_limit());
+      analyse_risk(made_up_campaign(), power_law(), settings(), kModes, kAligned, drift_limit());
   ASSERT_EQ(r.damage.size(), 2u);  // two buildings, one drift limit
   for (const auto& d : r.damage) {
     EXPECT_EQ(d.edp, Edp::drift);
@@ -203,22 +222,22 @@ TEST(PoundingRisk, DefaultDesignIntensityAndBadInput) {
   RiskSettings s = settings();
   s.design_im = 0.0;  // the hazard's 475-year intensity: (k0 475)^(1/k) g
   s.bootstrap.replicates = 10;
-  const RiskReport r = analyse_risk(c, power_law(), s, kModes, drift_limit());
+  const RiskReport r = analyse_risk(c, power_law(), s, kModes, kAligned, drift_limit());
   EXPECT_FALSE(r.design_im_given);
   EXPECT_NEAR(r.design_im, std::pow(kK0 * 475.0, 1.0 / kSlope) * kGravity, 1e-9);
   // A given design intensity outside the stripes, a target outside (0, 1), no approach data.
   s.design_im = 2.0 * kGravity;
-  EXPECT_THROW(analyse_risk(c, power_law(), s, kModes, drift_limit()), InputError);
+  EXPECT_THROW(analyse_risk(c, power_law(), s, kModes, kAligned, drift_limit()), InputError);
   s.design_im = 0.0;
   for (double t : {0.0, 1.0, -0.1, std::nan("")}) {
     RiskSettings b = s;
     b.target_probability = t;
-    EXPECT_THROW(analyse_risk(c, power_law(), b, kModes, drift_limit()), InputError) << t;
+    EXPECT_THROW(analyse_risk(c, power_law(), b, kModes, kAligned, drift_limit()), InputError) << t;
   }
   CampaignData old = c;
   old.approach_free = FloorArray{};
   try {
-    analyse_risk(old, power_law(), s, kModes, drift_limit());
+    analyse_risk(old, power_law(), s, kModes, kAligned, drift_limit());
     ADD_FAILURE() << "a file without approach_free was analysed";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("approach_free"), std::string::npos) << e.what();
@@ -304,7 +323,7 @@ TEST(PoundingRisk, DamageLimitsCompareLikeWithLikeWhereANeighboursCollapseCensor
   limits.collapse = false;
   RiskSettings st = settings();
   st.bootstrap.replicates = 0;
-  const RiskReport r = analyse_risk(c, power_law(), st, kModes, limits);
+  const RiskReport r = analyse_risk(c, power_law(), st, kModes, kAligned, limits);
   const DamageRisk* d = nullptr;
   for (const auto& x : r.damage)
     if (x.building == 1 && x.edp == Edp::drift) d = &x;
@@ -326,6 +345,118 @@ TEST(PoundingRisk, DamageLimitsCompareLikeWithLikeWhereANeighboursCollapseCensor
       EXPECT_FALSE(x.same_analyses);
       EXPECT_EQ(x.maf_pounding, x.maf_pounding_kept);
     }
+}
+
+}  // namespace
+}  // namespace pound
+
+namespace pound {
+namespace {
+
+// The code rules where the floors do not align (issue 36): two 2-storey buildings on three
+// stripes of three samples. At the design stripe the median peak floor displacements are, by
+// construction, left {0.012, 0.024} m and right {0.006, 0.016} m.
+constexpr double kLeft[2][3] = {{0.010, 0.012, 0.014}, {0.020, 0.024, 0.030}};
+constexpr double kRight[2][3] = {{0.005, 0.006, 0.009}, {0.015, 0.016, 0.020}};
+
+CampaignData two_storey_campaign(const std::string& heights_left,
+                                 const std::string& heights_right) {
+  CampaignData c;
+  c.path = "two-storey.h5";
+  c.intensity_measure = "pga";
+  c.building_names = {"left", "right"};
+  c.buildings = 2;
+  c.study =
+      "building1.masses = 1e5, 1e5\nbuilding1.stiffnesses = 1e8, 1e8\n"
+      "building1.storey_heights = " +
+      heights_left +
+      "\nbuilding2.masses = 1e5, 1e5\nbuilding2.stiffnesses = 1e8, 1e8\n"
+      "building2.storey_heights = " +
+      heights_right + "\npair1.gap = 0.01\n";
+  const double factor[3] = {0.5, 1.0, 2.0};  // per stripe, 0.1, 0.2 and 0.4 g
+  for (double f : factor) c.levels.push_back(0.2 * f * kGravity);
+  const std::size_t n = 9;
+  c.samples = n;
+  FloorArray u = floor_array(n, 2, 2);
+  c.approach_free = floor_array(n, 1, 3);
+  for (std::size_t s = 0; s < n; ++s) {
+    const std::size_t j = s / 3, i = s % 3;
+    c.status.push_back(0);
+    c.im.push_back(c.levels[j]);
+    c.scale.push_back(1.0);
+    for (std::size_t fl = 0; fl < 2; ++fl) {
+      u.v[(s * 2 + 0) * 2 + fl] = factor[j] * kLeft[fl][i];
+      u.v[(s * 2 + 1) * 2 + fl] = factor[j] * kRight[fl][i];
+    }
+    for (std::size_t l = 0; l < 3; ++l) c.approach_free.v[s * 3 + l] = 0.01 * factor[j] * (i + 1);
+  }
+  c.floor_arrays.emplace("peak_disp_free", u);
+  c.floor_arrays.emplace("peak_disp_pounding", u);
+  return c;
+}
+
+RiskReport two_storey_risk(const CampaignData& c) {
+  RiskSettings s;
+  s.bootstrap.replicates = 0;
+  s.design_im = 0.2 * kGravity;  // the middle stripe
+  FragilitySettings none;
+  none.drift_limits.clear();
+  none.collapse = false;
+  return analyse_risk(c, power_law(), s, kModes, study_pair_sites(c), none);
+}
+
+double rule_gap(const PairRisk& p, SeparationRule r, int* level = nullptr) {
+  for (const auto& k : p.rules)
+    if (k.rule == r) {
+      if (level) *level = k.level;
+      return k.gap;
+    }
+  ADD_FAILURE() << "no rule " << to_string(r);
+  return 0.0;
+}
+
+TEST(PoundingRisk, Ec8IsSevenTenthsOfSrssWhereTheFloorsCoincide) {
+  // Equal storeys: floor l against floor l. SRSS per level: sqrt(0.012^2 + 0.006^2) =
+  // 0.0134164 and sqrt(0.024^2 + 0.016^2) = sqrt(0.000832) = 0.0288444 (level 2);
+  // ec8 = 0.7 x 0.0288444 = 0.0201911; abs 0.040.
+  const RiskReport r = two_storey_risk(two_storey_campaign("3, 3", "3, 3"));
+  const PairRisk& p = r.pairs[0];
+  ASSERT_TRUE(p.rules_computed) << p.rules_note;
+  EXPECT_EQ(p.ec8_case, Ec8Case::floors_coincide);
+  ASSERT_EQ(p.median_left.size(), 2u);
+  EXPECT_EQ(p.median_left[1], 0.024);
+  EXPECT_EQ(p.median_right[1], 0.016);
+  int level = 0;
+  EXPECT_NEAR(rule_gap(p, SeparationRule::srss, &level), 0.0288444, 1e-7);
+  EXPECT_EQ(level, 2);
+  EXPECT_NEAR(rule_gap(p, SeparationRule::ec8, &level), 0.0201911, 1e-7);
+  EXPECT_EQ(level, 2);
+  EXPECT_NEAR(rule_gap(p, SeparationRule::abs), 0.040, 1e-15);
+}
+
+TEST(PoundingRisk, Ec8IsSrssAtTheStruckPointsWhereTheFloorsAreOffset) {
+  // Left floors at 4 and 8 m, right at 2 and 6 m: three slab-to-column sites at xi 0.5 (s 0.5)
+  // (tests/risk/study_sites_test.cpp). Site 1: left storey 1's point 0.5 x 0 + 0.5 x 0.012 =
+  // 0.006 against right floor 1, 0.006. Site 2: left floor 1, 0.012, against right storey 2's
+  // point 0.5 x 0.006 + 0.5 x 0.016 = 0.011. Site 3: left storey 2's point 0.5 x 0.012 + 0.5 x
+  // 0.024 = 0.018 against right floor 2, 0.016. SRSS 0.0084853, sqrt(0.000265) = 0.0162788 and
+  // sqrt(0.00058) = 0.0240832 (site 3): ec8 = SRSS = 0.0240832, abs 0.034 (site 3).
+  const RiskReport r = two_storey_risk(two_storey_campaign("4, 4", "2, 4"));
+  const PairRisk& p = r.pairs[0];
+  ASSERT_TRUE(p.rules_computed) << p.rules_note;
+  EXPECT_EQ(p.ec8_case, Ec8Case::floors_offset);
+  const double left[] = {0.006, 0.012, 0.018}, right[] = {0.006, 0.011, 0.016};
+  ASSERT_EQ(p.median_left.size(), 3u);
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_NEAR(p.median_left[k], left[k], 1e-15) << k;
+    EXPECT_NEAR(p.median_right[k], right[k], 1e-15) << k;
+  }
+  int level = 0;
+  EXPECT_NEAR(rule_gap(p, SeparationRule::srss, &level), 0.0240832, 1e-7);
+  EXPECT_EQ(level, 3);
+  EXPECT_EQ(rule_gap(p, SeparationRule::ec8, &level), rule_gap(p, SeparationRule::srss));
+  EXPECT_EQ(level, 3);
+  EXPECT_NEAR(rule_gap(p, SeparationRule::abs), 0.034, 1e-15);
 }
 
 }  // namespace
