@@ -226,8 +226,10 @@ TEST(Crushing, ALaterImpactSeesTheWidenedGap) {
 // The chapter 8 pair under El Centro (as tests/solver/yielding_test.cpp's energy check), every
 // lumped law with a force history, a cap of 2 MN (the uncapped peaks are 4-9 MN): no force
 // above it, faces crushed, and the balance closes with the crushing work cap x sum c.
-RowSimulation chapter8(const std::string& model, double cap, bool energy = true) {
-  const BuildingRow row = test::chapter8_pair(0.01);
+RowSimulation chapter8(const std::string& model, double cap, double right_storey_height = 3.0) {
+  BuildingRow row = test::chapter8_pair(0.01);
+  row.buildings[1].storey_heights.assign(3, right_storey_height);
+  row.gaps = {std::vector<double>(colliding_levels(row, 0), 0.01)};  // one per site
   MotionFileSpec spec;
   spec.path = std::string(POUND_SOURCE_DIR) + "/motions/elcentro-1940-ns.dat";
   GroundMotion g = read_motion(spec);
@@ -239,7 +241,7 @@ RowSimulation chapter8(const std::string& model, double cap, bool energy = true)
   c.force_cap = cap;
   RowSimulationOptions o;
   o.extra_time = 2.0;
-  o.track_energy = energy;
+  o.track_energy = true;
   return simulate_row(row, g, c, IntegratorSettings{}, o);
 }
 
@@ -262,6 +264,28 @@ TEST(Crushing, TheChapter8PairCrushesAtTheCapAndItsBalanceCloses) {
     EXPECT_GT(e.input, 1e4);
     EXPECT_LT(std::fabs(e.residual()), 1e-5 * e.input)
         << info.name << ": input " << e.input << " J, residual " << e.residual() << " J";
+  }
+}
+
+// Slab-to-column sites (the 3-storey's floors at 3.6 m, 7.2 m, 10.8 m against the 5-storey's
+// at 3 m steps: six column sites): the cap bounds the force of the law in series with the
+// columns, and the balance closes with the crushing work.
+TEST(Crushing, ColumnSitesCrushAtTheCapAndTheirBalanceCloses) {
+  const double cap = 1e6;
+  for (const char* model : {"lve", "hc-hertz"}) {
+    const RowSimulation s = chapter8(model, cap, 3.6);
+    double crush = 0.0;
+    int columns = 0;
+    for (const auto& site : s.sites) {
+      columns += site.site.column();
+      EXPECT_LE(site.peak_force, cap) << model;
+      crush += site.crush;
+    }
+    EXPECT_EQ(columns, static_cast<int>(s.sites.size())) << model;
+    EXPECT_GT(crush, 0.0) << model;
+    const EnergyBalance& e = s.pounding.energy;
+    EXPECT_NEAR(e.crushing, cap * crush, 1e-12 * e.crushing) << model;
+    EXPECT_LT(std::fabs(e.residual()), 1e-5 * e.input) << model;
   }
 }
 
