@@ -31,6 +31,7 @@ RowRun::RowRun(const RowProblem& p, const IntegratorSettings& s)
   if (!p.laws.empty()) dyn_.set_force_cap(p.force_cap);
   step_a0_.assign(ExactSteps::ground_inputs(dyn_), 0.0);
   step_a1_ = step_a0_;
+  false_alarm_.assign(2 * ns_ + switches_.storey_switches(), 0);
   work_.resize(dyn_.layout().size);
 }
 
@@ -368,7 +369,18 @@ bool RowRun::advance_until(double t_end) {
       if (events) ev = find_event(y_, y1_, k1_, k7_, hs, theta);
     }
     if (ev >= 0) {
-      const Located l = locate(ev, theta, hs, en, trial_failed);
+      Located l = locate(ev, theta, hs, en, trial_failed);
+      // A crushing switch's crossing may be a false alarm (its interpolant's slopes come from
+      // finite differences, and nlve's force has an infinite slope at delta = 0): it must not
+      // hide a real switch later in the step, which would then be applied late. Look again
+      // without it (capped runs only: no other switch changes this path).
+      while (l == Located::none && !trial_failed && ev >= switches_.first_crush()) {
+        false_alarm_[ev] = 1;
+        ev = find_event(y_, y1_, k1_, k7_, hs, theta, &false_alarm_);
+        if (ev < 0) break;
+        l = locate(ev, theta, hs, en, false);
+      }
+      if (dyn_.capped()) std::fill(false_alarm_.begin(), false_alarm_.end(), 0);
       if (l == Located::retry) continue;
       if (l == Located::applied) {
         if (separated()) return false;

@@ -30,27 +30,23 @@ SwitchValue RowSwitches::storey_value(const RowDynamics& dyn, int k, const Eigen
 }
 
 // Site i's crushing switch (docs/contact-models.md, "Crushing faces"). Outside a crushing phase,
-// F / cap - 1 with F the law's force on delta - c (its rate dF/dt by a central difference along
-// the motion, F(delta + r h, r + a h) - F(delta - r h, r - a h) over 2 h, h a millionth of the
-// contact's time scale: the rate only shapes the interpolant and Newton's first tries; the
-// crossing is located on the values). In a phase, -ddelta: it ends where the faces start to
-// part (unloading). Closed contacts only.
+// F / cap - 1 with F the law's force on delta - c, and its rate dF/dt = F_delta ddelta + F_r
+// ddelta' from central differences of the law in each argument (steps of 1e-6 of |delta| plus
+// 1e-12 m and of 1e-6 of |ddelta| plus 1e-9 m/s: the rate only shapes the interpolant and
+// Newton's first tries; the crossing is located on the values). In a phase, -ddelta: it ends
+// where the faces start to part (unloading). Closed contacts only.
 SwitchValue RowSwitches::crush_value(const RowDynamics& dyn, int i, const Eigen::VectorXd& y,
                                      const Eigen::VectorXd& dy) const {
   if (!dyn.active[i]) return {-1.0, 0.0};
   const double r = dyn.penetration_rate(y, i);
   const double a = dyn.penetration_rate(dy, i);  // d(ddelta)/dt: dy holds the accelerations
   if (dyn.crushing[i]) return {-r, -a};
-  const double cap = dyn.force_cap(), d = dyn.penetration(y, i);
+  const double cap = dyn.force_cap(), d = dyn.penetration(y, i), v0 = dyn.v0[i];
   const ContactLaw& law = dyn.law(i);
-  const double g = law.force(d, r, dyn.v0[i]) / cap - 1.0;
-  double tau = r != 0.0 ? std::fabs(d / r) : 0.0;  // [s]
-  if (!(tau > 0.0) && a != 0.0) tau = std::fabs(r / a);
-  if (!(tau > 0.0) || !std::isfinite(tau)) return {g, 0.0};
-  const double h = 1e-6 * tau;
-  const double fp = law.force(d + r * h, r + a * h, dyn.v0[i]);
-  const double fm = law.force(d - r * h, r - a * h, dyn.v0[i]);
-  return {g, (fp - fm) / (2.0 * h * cap)};
+  const double hd = 1e-6 * std::fabs(d) + 1e-12, hr = 1e-6 * std::fabs(r) + 1e-9;  // [m], [m/s]
+  const double f_d = (law.force(d + hd, r, v0) - law.force(d - hd, r, v0)) / (2.0 * hd);
+  const double f_r = (law.force(d, r + hr, v0) - law.force(d, r - hr, v0)) / (2.0 * hr);
+  return {law.force(d, r, v0) / cap - 1.0, (f_d * r + f_r * a) / cap};
 }
 
 void RowSwitches::apply_crush(RowDynamics& dyn, int k, double t, const Eigen::VectorXd& y) {
@@ -98,7 +94,8 @@ __attribute__((always_inline)) inline double RowSwitches::first_crossing(const H
 
 int RowSwitches::find_event(const RowDynamics& dyn, const Eigen::VectorXd& y0,
                             const Eigen::VectorXd& y1, const Eigen::VectorXd& dy0,
-                            const Eigen::VectorXd& dy1, double h, double& theta) const {
+                            const Eigen::VectorXd& dy1, double h, double& theta,
+                            const std::vector<char>* ignore) const {
   const int n = row_.dofs();
   const bool pounding = dyn.pounding();
   int best = -1;
@@ -106,7 +103,8 @@ int RowSwitches::find_event(const RowDynamics& dyn, const Eigen::VectorXd& y0,
   const int m = (pounding ? ns_ : 0) + static_cast<int>(sw_.size()) + (dyn.capped() ? ns_ : 0);
   for (int j = 0; j < m; ++j) {
     const int k = pounding ? j : ns_ + j;
-    if (k >= first_crush() && !dyn.active[k - first_crush()]) continue;
+    if (k >= first_crush() && (!dyn.active[k - first_crush()] || (ignore && (*ignore)[k])))
+      continue;
     if (k >= ns_ && k < first_crush()) {
       const int dof = sw_[k - ns_].dof;
       if (has_safe_[dof]) {

@@ -49,9 +49,11 @@ class RowSwitches {
   }
   /// Earliest switch in the step y0 -> y1 of length h [s]: its id and an estimate of the
   /// fraction theta of the step where it happens; -1 when none.
+  /// `ignore` (null: none): per switch id, 1 where a switch is not to be reported (a crushing
+  /// switch whose crossing proved a false alarm in this step).
   int find_event(const RowDynamics& dyn, const Eigen::VectorXd& y0, const Eigen::VectorXd& y1,
-                 const Eigen::VectorXd& dy0, const Eigen::VectorXd& dy1, double h,
-                 double& theta) const;
+                 const Eigen::VectorXd& dy0, const Eigen::VectorXd& dy1, double h, double& theta,
+                 const std::vector<char>* ignore = nullptr) const;
 
   /// Applies storey switch k (k >= sites()) at state y: the law's new branch (the caller then
   /// updates what depends on it: RowRun::storey_changed); a chatter error names the storey.
