@@ -113,9 +113,10 @@ std::vector<OptionSpec> row_option_specs_without_laws() {
        "smallest approach velocity used by v0-scaled damping (Hertzdamp, Ye, Hunt-Crossley)"},
       {"contact.xi_relation", "", "exact",
        "MLVe damping-restitution relation: exact or published (Mahmoud & Jankowski 2011)"},
-      {"contact.force_cap", "N", "none",
-       "cap on the contact force, > 0: above it the face crushes (the force stays at the cap, a "
-       "permanent indentation grows and widens the gap); every lumped law but stereomechanical"},
+      {"contact.force_cap", "N", "",
+       "cap on the contact force, > 0 (default none): above it the face crushes (the force stays "
+       "at the cap, a permanent indentation grows and widens the gap); every lumped law but "
+       "stereomechanical"},
       {"motion.file", "", "", "ground-motion record (.AT2, one/two columns, or fixed width)"},
       {"motion.format", "", "automatic", "automatic, at2, columns or fixed-width"},
       {"motion.units", "", "",
