@@ -78,6 +78,15 @@ void print_table(const RowSimulation& s, const BuildingRow& row,
   for (const auto& c : s.sites)
     std::printf("%-6d %5d %8d %14.6g %16.6g %14.4f\n", c.pair + 1, c.floor, c.impacts, c.peak_force,
                 c.peak_penetration, c.first_contact);
+  bool crushed = false;  // crushing faces at contact.force_cap
+  for (const auto& c : s.sites) crushed = crushed || c.crush > 0.0;
+  if (crushed) {
+    std::printf(
+        "\n%-6s %5s %14s   (crushing faces: permanent indentation; their work, %.6g J, "
+        "is in the pounding run's balance)\n",
+        "pair", "floor", "crush[m]", s.pounding.energy.crushing);
+    for (const auto& c : s.sites) std::printf("%-6d %5d %14.6g\n", c.pair + 1, c.floor, c.crush);
+  }
   if (!phases.empty()) {
     std::printf(
         "\n%-6s %5s %20s %16s   (damped Sears: contact phases above 1 %% of the site's peak "

@@ -89,6 +89,7 @@ RowSimulation summarize_runs(const BuildingRow& row, const RowGround& ground, do
     s.peak_force = sr.peak_force;
     s.peak_penetration = sr.peak_penetration;
     s.first_contact = sr.first_contact;
+    s.crush = sr.crush;
     s.approach_free = out.free.sites[k].peak_approach;
     column_shear_ratios(row, s, out.pounding.sites[k], out.free.sites[k], out);
     out.sites.push_back(s);
@@ -108,6 +109,7 @@ RowSimulation simulate_row(const BuildingRow& row, const RowGround& ground,
   p.row = &a;
   opt.apply_to(p, ground);
   for (const auto& l : laws) p.laws.push_back(l.get());
+  p.force_cap = contact.force_cap;
   RunPair runs = solve_free_and_pounding(p, integ);  // without and with the contacts
   return summarize_runs(row, ground, p.t_end, std::move(runs.free), std::move(runs.pounding));
 }

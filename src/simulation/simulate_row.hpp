@@ -43,6 +43,9 @@ struct SiteResponse {
   double peak_force = 0.0;        ///< [N]
   double peak_penetration = 0.0;  ///< [m]
   double first_contact = -1.0;    ///< [s]
+  /// The face's permanent indentation at the end of the pounding run (crushing at
+  /// contact.force_cap; 0 without) [m] (SiteResult::crush).
+  double crush = 0.0;
   /// Peak relative approach u_L - u_R of the two facing floors in the FREE run [m]: before its
   /// first contact a pounding run is the free run, so this is the smallest gap at this level
   /// that the motion would not close (SiteResult::peak_approach).

@@ -17,6 +17,9 @@ RowDynamics::RowDynamics(const AssembledRow& row, const std::vector<RowStorey>& 
       forces_(row, storeys) {
   active.assign(ns_, false);
   v0.assign(ns_, 0.0);
+  crush.assign(ns_, 0.0);
+  crushing.assign(ns_, 0);
+  crush_law_penetration.assign(ns_, 0.0);
   storey.assign(n_, StoreyState{});
   layout_.dofs = n_;
   layout_.storey_offset.assign(n_, -1);
@@ -114,6 +117,18 @@ void RowDynamics::rhs(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy) {
     if (g < 0) continue;
     du[g] = y(g + 1);
     du[g + 1] = agc[c];
+  }
+}
+
+// The contact forces with crushing faces (docs/contact-models.md, "Crushing faces"): the cap
+// during a crushing phase; otherwise the law on the penetration less the indentation, never
+// above the cap (the phase starts where it reaches it: a switch of row_switches.hpp; the min
+// only guards a crossing that rises and falls back inside one step).
+void RowDynamics::capped_contact_forces(const Eigen::VectorXd& y) {
+  for (int i = 0; i < ns_; ++i) {
+    double f = 0.0;
+    if (active[i]) f = crushing[i] ? force_cap_ : std::min(law_force(y, i), force_cap_);
+    force_(i) = f;
   }
 }
 

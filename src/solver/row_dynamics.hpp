@@ -14,6 +14,7 @@
 // approach velocity) and each storey law's branch; solver/row_switches.hpp changes them at
 // switching events. Kernel only: no files, no printing.
 #include <Eigen/Dense>
+#include <limits>
 #include <vector>
 
 #include "contact/contact_law.hpp"
@@ -51,6 +52,24 @@ class RowDynamics {
   /// The contact laws, one per site (pounding), or none (the buildings vibrate independently).
   void set_contacts(const std::vector<const ContactLaw*>* laws) { laws_ = laws; }
   bool pounding() const { return laws_ != nullptr && !laws_->empty(); }
+  /// The crushing faces' cap on every site's contact force [N] (docs/contact-models.md,
+  /// "Crushing faces"); infinite: none (then nothing below about crushing ever acts).
+  void set_force_cap(double cap) { force_cap_ = cap; }
+  double force_cap() const { return force_cap_; }
+  bool capped() const { return pounding() && force_cap_ < kNoCap; }
+  /// Site i's contact law (pounding runs only).
+  const ContactLaw& law(int i) const { return *(*laws_)[i]; }
+  /// The law's own force at site i (before the cap) at y [N]: the law acting on the penetration
+  /// less the permanent indentation (penetration() subtracts it).
+  double law_force(const Eigen::VectorXd& y, int i) const {
+    return (*laws_)[i]->force(penetration(y, i), penetration_rate(y, i), v0[i]);
+  }
+  /// The permanent indentation of site i's face at y [m]: the committed crush[i] plus, during a
+  /// crushing phase, its growth since the phase began (c' = delta', so c - c_start = delta -
+  /// delta_start: the law's own penetration stays crush_law_penetration[i]).
+  double indentation(const Eigen::VectorXd& y, int i) const {
+    return crushing[i] ? crush[i] + (penetration(y, i) - crush_law_penetration[i]) : crush[i];
+  }
 
   const StateLayout& layout() const { return layout_; }
   bool linear() const { return linear_; }  ///< every storey linear elastic
@@ -73,6 +92,7 @@ class RowDynamics {
   void rhs(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy);
   /// The contact force per site at y [N] (zero where no contact is active).
   void contact_forces(const Eigen::VectorXd& y) {
+    if (force_cap_ < kNoCap) return capped_contact_forces(y);
     for (int i = 0; i < ns_; ++i) {
       double f = 0.0;
       if (active[i]) f = (*laws_)[i]->force(penetration(y, i), penetration_rate(y, i), v0[i]);
@@ -85,9 +105,11 @@ class RowDynamics {
   /// 5a and 5b) [m] and its rate, u_L and u_R the sides' points (SitePoint: a slab's floor, or
   /// the weighted floors of a struck column); the ground terms where the site's buildings stand
   /// on different channels.
+  /// With a force cap, the face's permanent indentation crush[i] widens the gap (less its
+  /// growth in a crushing phase: indentation()); without one crush[i] is 0 (x - 0 is x).
   double penetration(const Eigen::VectorXd& y, int i) const {
     const auto& s = row_.sites[i];
-    double d = s.left.of(y.data()) - s.right.of(y.data()) - s.gap;
+    double d = s.left.of(y.data()) - s.right.of(y.data()) - s.gap - crush[i];
     const auto& g = site_ground_[i];
     if (g.first >= 0) d += y(g.first) - y(g.second);
     return d;
@@ -160,6 +182,13 @@ class RowDynamics {
   std::vector<StoreyState> storey;  ///< per DOF: the discrete state of its storey law
   std::vector<char> active;         ///< per site: contact active
   std::vector<double> v0;           ///< per site: approach velocity at the contact's start [m/s]
+  // Crushing faces (a force cap; solver/row_switches.hpp starts and ends the phases):
+  std::vector<double> crush;   ///< per site: the committed permanent indentation c [m], >= 0
+  std::vector<char> crushing;  ///< per site: in a crushing phase (F = cap, c' = delta')
+  /// Per site: the law's own penetration delta - c held through the crushing phase [m] (the
+  /// penetration where the law's force reached the cap).
+  std::vector<double> crush_law_penetration;
+  static constexpr double kNoCap = std::numeric_limits<double>::infinity();
 
  private:
   // E' = [input, damping v^T C v, contact sum_s F_s delta'_s] [W], the input being the work
@@ -170,6 +199,7 @@ class RowDynamics {
   const double* massless_velocities(const Eigen::VectorXd& y);
   void massless_rates(double* dv);
   void set_ground_layout();
+  void capped_contact_forces(const Eigen::VectorXd& y);
 
   const AssembledRow& row_;
   const std::vector<RowStorey>& storeys_;
@@ -178,6 +208,7 @@ class RowDynamics {
   bool affine_ = false;
   StateLayout layout_;
   const std::vector<const ContactLaw*>* laws_ = nullptr;
+  double force_cap_ = kNoCap;                     // [N]
   FloorGround ground_;                            // the ground under floors and sites
   std::vector<std::pair<int, int>> site_ground_;  // per site: ug offsets of L and R, or -1
   mutable std::vector<double> mv_;                // per channel: sum m_i v_i (energy rates)

@@ -149,6 +149,10 @@ void RowRun::apply_event(int k, double t, Eigen::VectorXd& y) {
     any_contact_ = true;
     return;
   }
+  if (k >= switches_.first_crush()) {  // a crushing phase starts or ends
+    switches_.apply_crush(dyn_, k, t, y);
+    return;
+  }
   switches_.apply_storey(dyn_, k, t, y);
   storey_changed(switches_.storey_dof(k));
   const int dof = switches_.storey_dof(k);
@@ -157,6 +161,10 @@ void RowRun::apply_event(int k, double t, Eigen::VectorXd& y) {
 
 void RowRun::apply_contact_event(int i, double t, Eigen::VectorXd& y) {
   if (dyn_.active[i]) {
+    if (dyn_.crushing[i]) {  // (not expected: the faces part only after unloading)
+      dyn_.crush[i] = dyn_.indentation(y, i);
+      dyn_.crushing[i] = 0;
+    }
     dyn_.active[i] = false;
     rec_.contact_ended(i, t);
     return;

@@ -15,6 +15,9 @@ struct SiteResult {
   double impulse = 0.0;           ///< total impulse transmitted [N s]
   double first_contact = -1.0;    ///< time of the first contact [s], -1 when none
   double last_separation = -1.0;  ///< time of the last separation [s], -1 when none
+  /// The contact face's permanent indentation at the end (crushing at a force cap; 0 without)
+  /// [m]: the at-rest gap has widened by it.
+  double crush = 0.0;
   /// Largest relative approach u_L - u_R of the site's floors over a run WITHOUT contact laws
   /// (the free run) [m]: the smallest at-rest gap that this motion would not close (its peak
   /// between steps from the cubic Hermite interpolant, as the contact events are located).
@@ -40,12 +43,16 @@ struct History {
 /// work of the effective earthquake forces -M 1 ag on the floors' motion, kinetic and strain
 /// are the values at the end, and contact is the work the floors did on the contacts (what a
 /// contact dissipated, plus what is still stored in a closed contact or, for the damped Sears
-/// model, in the slabs' axial vibration at the end).
+/// model, in the slabs' axial vibration at the end). crushing is the work of the crushing
+/// faces at a force cap, cap x indentation per site (docs/contact-models.md), not in contact.
 struct EnergyBalance {
   double input = 0.0, kinetic = 0.0, strain = 0.0, damping = 0.0, hysteretic = 0.0, contact = 0.0;
-  /// input - (kinetic + strain + damping + hysteretic + contact): zero up to the integration
-  /// error [J].
-  double residual() const { return input - (kinetic + strain + damping + hysteretic + contact); }
+  double crushing = 0.0;
+  /// input - (kinetic + strain + damping + hysteretic + contact + crushing): zero up to the
+  /// integration error [J].
+  double residual() const {
+    return input - (kinetic + strain + damping + hysteretic + contact + crushing);
+  }
 };
 
 /// Why a building collapsed (issue 23).

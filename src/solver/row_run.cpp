@@ -28,8 +28,10 @@ RowRun::RowRun(const RowProblem& p, const IntegratorSettings& s)
   if (!p.laws.empty() && static_cast<int>(p.laws.size()) != ns_)
     throw std::logic_error("one contact law per site expected");
   dyn_.set_contacts(&p.laws);
+  if (!p.laws.empty()) dyn_.set_force_cap(p.force_cap);
   step_a0_.assign(ExactSteps::ground_inputs(dyn_), 0.0);
   step_a1_ = step_a0_;
+  false_alarm_.assign(2 * ns_ + switches_.storey_switches(), 0);
   work_.resize(dyn_.layout().size);
 }
 
@@ -38,6 +40,7 @@ RowRun::RowRun(const RowRun& free, const RowProblem& pounding) : RowRun(free) {
     throw std::logic_error("one contact law per site expected");
   p_ = &pounding;
   dyn_.set_contacts(&pounding.laws);
+  dyn_.set_force_cap(pounding.force_cap);
   fork_to_ = nullptr;
   fork_armed_ = false;
   fork_.reset();
@@ -276,6 +279,10 @@ EnergyBalance RowRun::energy_now() const {
   e.input = y_(at.energies);
   e.damping = y_(at.energies + 1);
   e.contact = y_(at.energies + 2);
+  if (dyn_.capped()) {  // the work F ddelta of the crushing phases is the crushing's, cap x c
+    for (int i = 0; i < ns_; ++i) e.crushing += dyn_.force_cap() * dyn_.indentation(y_, i);
+    e.contact -= e.crushing;
+  }
   return e;
 }
 
@@ -284,6 +291,8 @@ void RowRun::finish() {
   rec_.finish(t_, y_.head(n_), y_.segment(n_, n_));
   RowResult& r = rec_.result();
   for (int i = 0; i < ns_; ++i) r.sites[i].impulse = y_(at.impulses + i);
+  if (dyn_.capped())
+    for (int i = 0; i < ns_; ++i) r.sites[i].crush = dyn_.indentation(y_, i);
   dyn_.storey_energies(y_, r.hysteretic_energy);
   if (!track_) return;
   r.energy = rec_.final_energy(energy_now());
@@ -360,7 +369,18 @@ bool RowRun::advance_until(double t_end) {
       if (events) ev = find_event(y_, y1_, k1_, k7_, hs, theta);
     }
     if (ev >= 0) {
-      const Located l = locate(ev, theta, hs, en, trial_failed);
+      Located l = locate(ev, theta, hs, en, trial_failed);
+      // A crushing switch's crossing may be a false alarm (its interpolant's slopes come from
+      // finite differences, and nlve's force has an infinite slope at delta = 0): it must not
+      // hide a real switch later in the step, which would then be applied late. Look again
+      // without it (capped runs only: no other switch changes this path).
+      while (l == Located::none && !trial_failed && ev >= switches_.first_crush()) {
+        false_alarm_[ev] = 1;
+        ev = find_event(y_, y1_, k1_, k7_, hs, theta, &false_alarm_);
+        if (ev < 0) break;
+        l = locate(ev, theta, hs, en, false);
+      }
+      if (dyn_.capped()) std::fill(false_alarm_.begin(), false_alarm_.end(), 0);
       if (l == Located::retry) continue;
       if (l == Located::applied) {
         if (separated()) return false;

@@ -79,8 +79,9 @@ class RowRun {
   double error_norm(const Eigen::VectorXd& y0, const Eigen::VectorXd& y1,
                     const Eigen::VectorXd& err) const;
   int find_event(const Eigen::VectorXd& y0, const Eigen::VectorXd& y1, const Eigen::VectorXd& dy0,
-                 const Eigen::VectorXd& dy1, double h, double& theta) const {
-    return switches_.find_event(dyn_, y0, y1, dy0, dy1, h, theta);
+                 const Eigen::VectorXd& dy1, double h, double& theta,
+                 const std::vector<char>* ignore = nullptr) const {
+    return switches_.find_event(dyn_, y0, y1, dy0, dy1, h, theta, ignore);
   }
   SwitchValue switch_at(int k, const Eigen::VectorXd& y, const Eigen::VectorXd& dy) const {
     return switches_.value(dyn_, k, y, dy);
@@ -152,6 +153,9 @@ class RowRun {
   bool resumed_ = false;                   // resume() prepared the run
   std::vector<double> step_a0_, step_a1_;  // each channel's ag at an exact step's ends [m/s^2]
   Eigen::VectorXd y_, y1_, err_, k1_, k7_, ytry_, etry_, ktry_;
+  // Per switch id: a crushing switch whose crossing in the current step was a false alarm
+  // (advance_until; all 0 between steps).
+  std::vector<char> false_alarm_;
 };
 
 }  // namespace pound::detail

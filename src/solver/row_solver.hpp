@@ -29,6 +29,11 @@ struct RowProblem {
   const RowGround* ground = nullptr;
   /// One law per contact site; empty: no pounding (the buildings move independently).
   std::vector<const ContactLaw*> laws;
+  /// Crushing faces (issue 36; docs/contact-models.md): the cap on every site's contact force
+  /// [N], > 0. Where a law's force would pass it the face crushes: F stays at the cap and a
+  /// permanent indentation grows with the approach until unloading; the law then acts on the
+  /// penetration less the indentation. Infinite: no cap. Laws with a force history only.
+  double force_cap = std::numeric_limits<double>::infinity();
   Eigen::VectorXd u0, v0;  ///< initial state (empty: at rest) [m], [m/s]
   double t_end = 0.0;      ///< [s]
   bool record_history = false;

@@ -16,8 +16,8 @@ RowSwitches::RowSwitches(const AssembledRow& row, const std::vector<RowStorey>& 
 }
 
 void RowSwitches::reset() {
-  last_event_t_.assign(ns_ + sw_.size(), -1.0);
-  chatter_.assign(ns_ + sw_.size(), 0);
+  last_event_t_.assign(2 * ns_ + sw_.size(), -1.0);  // sites, storeys, crushing faces
+  chatter_.assign(2 * ns_ + sw_.size(), 0);
 }
 
 SwitchValue RowSwitches::storey_value(const RowDynamics& dyn, int k, const Eigen::VectorXd& y,
@@ -27,6 +27,38 @@ SwitchValue RowSwitches::storey_value(const RowDynamics& dyn, int k, const Eigen
   const int n = row_.dofs();
   return st.law->switch_value(w.local, st.p, dyn.storey[w.dof], dyn.drift(y, 0, w.dof),
                               dyn.drift(y, n, w.dof), dyn.drift(dy, n, w.dof));
+}
+
+// Site i's crushing switch (docs/contact-models.md, "Crushing faces"). Outside a crushing phase,
+// F / cap - 1 with F the law's force on delta - c, and its rate dF/dt = F_delta ddelta + F_r
+// ddelta' from central differences of the law in each argument (steps of 1e-6 of |delta| plus
+// 1e-12 m and of 1e-6 of |ddelta| plus 1e-9 m/s: the rate only shapes the interpolant and
+// Newton's first tries; the crossing is located on the values). In a phase, -ddelta: it ends
+// where the faces start to part (unloading). Closed contacts only.
+SwitchValue RowSwitches::crush_value(const RowDynamics& dyn, int i, const Eigen::VectorXd& y,
+                                     const Eigen::VectorXd& dy) const {
+  if (!dyn.active[i]) return {-1.0, 0.0};
+  const double r = dyn.penetration_rate(y, i);
+  const double a = dyn.penetration_rate(dy, i);  // d(ddelta)/dt: dy holds the accelerations
+  if (dyn.crushing[i]) return {-r, -a};
+  const double cap = dyn.force_cap(), d = dyn.penetration(y, i), v0 = dyn.v0[i];
+  const ContactLaw& law = dyn.law(i);
+  const double hd = 1e-6 * std::fabs(d) + 1e-12, hr = 1e-6 * std::fabs(r) + 1e-9;  // [m], [m/s]
+  const double f_d = (law.force(d + hd, r, v0) - law.force(d - hd, r, v0)) / (2.0 * hd);
+  const double f_r = (law.force(d, r + hr, v0) - law.force(d, r - hr, v0)) / (2.0 * hr);
+  return {law.force(d, r, v0) / cap - 1.0, (f_d * r + f_r * a) / cap};
+}
+
+void RowSwitches::apply_crush(RowDynamics& dyn, int k, double t, const Eigen::VectorXd& y) {
+  const int i = k - first_crush();
+  guard_chatter(k, t, [&] { return "crushing face of contact site " + std::to_string(i + 1); });
+  if (dyn.crushing[i]) {  // unloading: the indentation grown in the phase stays
+    dyn.crush[i] = dyn.indentation(y, i);
+    dyn.crushing[i] = 0;
+  } else {  // the law's force reached the cap: its own penetration is held from here
+    dyn.crush_law_penetration[i] = dyn.penetration(y, i);
+    dyn.crushing[i] = 1;
+  }
 }
 
 void RowSwitches::storey_changed(int dof, const StoreyState& s) {
@@ -62,15 +94,18 @@ __attribute__((always_inline)) inline double RowSwitches::first_crossing(const H
 
 int RowSwitches::find_event(const RowDynamics& dyn, const Eigen::VectorXd& y0,
                             const Eigen::VectorXd& y1, const Eigen::VectorXd& dy0,
-                            const Eigen::VectorXd& dy1, double h, double& theta) const {
+                            const Eigen::VectorXd& dy1, double h, double& theta,
+                            const std::vector<char>* ignore) const {
   const int n = row_.dofs();
   const bool pounding = dyn.pounding();
   int best = -1;
   theta = 2.0;
-  const int m = (pounding ? ns_ : 0) + static_cast<int>(sw_.size());
+  const int m = (pounding ? ns_ : 0) + static_cast<int>(sw_.size()) + (dyn.capped() ? ns_ : 0);
   for (int j = 0; j < m; ++j) {
     const int k = pounding ? j : ns_ + j;
-    if (k >= ns_) {
+    if (k >= first_crush() && (!dyn.active[k - first_crush()] || (ignore && (*ignore)[k])))
+      continue;
+    if (k >= ns_ && k < first_crush()) {
       const int dof = sw_[k - ns_].dof;
       if (has_safe_[dof]) {
         // Skip a storey whose drift stays inside its safe interval (shrunk by 1e-12 of its
@@ -101,8 +136,9 @@ int RowSwitches::find_event(const RowDynamics& dyn, const Eigen::VectorXd& y0,
 }
 
 void RowSwitches::throw_chatter(int k, double t, const std::string& what) const {
-  throw NumericalError(what + ": " + (k < ns_ ? "impacts" : "yield events") +
-                       " accumulate at t = " + std::to_string(t) + " s (chatter)" +
+  const char* kind = k < ns_ ? "impacts" : (k < first_crush() ? "yield events" : "crushing phases");
+  throw NumericalError(what + ": " + kind + " accumulate at t = " + std::to_string(t) +
+                       " s (chatter)" +
                        (k < ns_ ? "; use a force-based contact model" : std::string()));
 }
 

@@ -116,6 +116,10 @@ std::vector<OptionSpec> row_option_specs_without_laws() {
        "smallest approach velocity used by v0-scaled damping (Hertzdamp, Ye, Hunt-Crossley)"},
       {"contact.xi_relation", "", "exact",
        "MLVe damping-restitution relation: exact or published (Mahmoud & Jankowski 2011)"},
+      {"contact.force_cap", "N", "",
+       "cap on the contact force, > 0 (default none): above it the face crushes (the force stays "
+       "at the cap, a permanent indentation grows and widens the gap); every lumped law but "
+       "stereomechanical"},
       {"motion.file", "", "", "ground-motion record (.AT2, one/two columns, or fixed width)"},
       {"motion.format", "", "automatic", "automatic, at2, columns or fixed-width"},
       {"motion.units", "", "",
@@ -376,6 +380,16 @@ ContactSpec contact_from_options(const Options& opt, const BuildingRow& row,
   c.params.xi_relation = opt.get_string("contact.xi_relation");
   if (c.params.xi_relation != "exact" && c.params.xi_relation != "published")
     throw opt.invalid("contact.xi_relation", "valid: exact or published");
+  if (opt.given("contact.force_cap")) {
+    c.force_cap = opt.get_positive("contact.force_cap");
+    // Crushing needs a force history: the stereomechanical jump has none.
+    for (const auto& m : use.models)
+      if (!is_sears_model(m) &&
+          find_contact_model(m, opt.where("contact.model")).stiffness_unit.empty())
+        throw opt.invalid("contact.force_cap",
+                          "valid only with a model that has a force history; contact.model '" + m +
+                              "' is an instantaneous impact, with no force to cap");
+  }
   // The stiffness: of the first model of `use` that has one (the lumped models share k).
   const ContactModelInfo* needs_k = nullptr;
   for (const auto& m : use.models)

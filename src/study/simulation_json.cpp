@@ -168,7 +168,8 @@ std::string simulation_json(const BuildingRow& row, const SimulationRun& run) {
     w.field("impacts", c.impacts)
         .field("peak_force_N", c.peak_force)
         .field("peak_penetration_m", c.peak_penetration)
-        .field("first_contact_s", c.impacts ? c.first_contact : -1.0);
+        .field("first_contact_s", c.impacts ? c.first_contact : -1.0)
+        .field("crush_m", c.crush);
     if (k < phases.size())  // damped Sears: contact phases above 1 % of the site's peak force
       w.field("significant_impacts", phases[k].impacts)
           .field("first_impact_s", phases[k].first_impact_s);
@@ -204,6 +205,7 @@ std::string simulation_json(const BuildingRow& row, const SimulationRun& run) {
         .field("damping_J", e.damping)
         .field("hysteretic_J", e.hysteretic)
         .field("contact_J", e.contact)
+        .field("crushing_J", e.crushing)
         .field("residual_J", e.residual())
         .end_object();
   }

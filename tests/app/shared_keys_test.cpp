@@ -54,11 +54,17 @@ TEST(SharedKeys, ABadValueGetsTheSameLineFromSimulateAndCampaign) {
       {"building1.energy_exponent", "-1"},
       {"building1.ultimate_drift_ratio", "-0.2"},
       {"pair1.gap", "-0.01"},
+      {"contact.force_cap", "0"},
+      {"contact.force_cap", "-2e5"},
+      {"contact.force_cap", "abc"},
+      {"contact.model", "stereomechanical"},
   };
   for (const auto& [key, value] : bad) {
     SCOPED_TRACE(key + " = " + value);
     const ScratchDir dir("pound_shared_keys_");
-    const std::string flag = " --" + key + " '" + value + "'";
+    std::string flag = " --" + key + " '" + value + "'";
+    if (value == "stereomechanical")  // a cap with a model that has no force history
+      flag += " --contact.force_cap 1e5";
     const Outcome sim =
         run(dir, "simulate", "--config " + src + "/studies/ch6-sdof-pair.ini" + flag);
     const std::string out = dir / "run.h5";
