@@ -268,9 +268,11 @@ Eigen::VectorXd relative_model_damping(const Building& b) {
 }
 
 // The modal damping ratios against the relative model: on a fixed base (Rayleigh damping, 5 %
-// at its two anchor modes), with springs and dashpots, and for the soft-soil study's raft on
-// Wolf's cone (studies/ssi-soft-soil.ini's 5-storey building), whose shortest-period mode is
-// overdamped by the cone's radiation dashpots (about 5: C_x / (2 sqrt(K_x m0)) alone).
+// at its two anchor modes), with springs and dashpots, and for a raft on Wolf's cone (the 5-storey
+// building of studies/ssi-soft-soil.ini as it stood before issue 38: a 20 m square plan as the
+// equal-area disk, r = 11.3 m; the study now stands on Gazetas footings of the thesis' 20 m x 8 m
+// plan), whose shortest-period mode is overdamped by the cone's radiation dashpots (about 5:
+// C_x / (2 sqrt(K_x m0)) alone).
 TEST(BuildingOnBase, ModalDampingRatiosMatchTheRelativeModel) {
   Building three;
   three.masses = {1.2e5, 1.0e5, 0.7e5};
@@ -336,9 +338,10 @@ TEST(BuildingOnBase, ModalDampingRatiosMatchTheRelativeModel) {
 
 // The solvers' automatic step is a twentieth of the shortest period of a mode that oscillates
 // (step_period): on fixed bases every mode does, so it is the shortest period bit for bit; for
-// the soft-soil pair on cone rafts the overdamped raft modes (undamped periods of 0.01-0.03 s)
-// are left out, and what remains is the buildings' own highest storey modes, within 15 % of
-// the fixed-base buildings' shortest periods (the foundation lengthens them a little).
+// the soft-soil pair on cone rafts (the study's pair before issue 38, 20 m and 12 m square
+// plans) the overdamped raft modes (undamped periods of 0.01-0.03 s) are left out, and what
+// remains is the buildings' own highest storey modes, within 15 % of the fixed-base buildings'
+// shortest periods (the foundation lengthens them a little).
 TEST(BuildingOnBase, StepPeriodLeavesOutOverdampedModes) {
   BuildingRow row;
   row.buildings = {uniform_building(5, 48e3, 8.4e7), uniform_building(3, 29e3, 6.7e7)};
