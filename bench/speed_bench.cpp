@@ -434,7 +434,7 @@ void samples_case(const std::string& src, long samples, int repeat, const std::s
 // `baseline` (the other keys' draws are the same: every parameter has its own stream), per
 // contact model, process CPU time of SampleRunner::run (the motions' generation included) and
 // the same without one motion's generation (SimqkeGenerator, the uniform case's motion).
-//   7. ssi (issue 29): studies/ssi-soft-soil.ini on cone foundations against fixed bases;
+//   7. ssi (issue 29): studies/ssi-soft-soil.ini (Gazetas footings since issue 38; cones before) against fixed bases;
 //   8. svgm (issue 28): studies/svgm-identical-pair.ini on spatially varying ground (two
 //      coherent stations, wave passage) against one motion under both (which never pounds);
 //      svgm-apart: the same two, and the default pair as in svgm-default, with a 1 m gap on
@@ -554,7 +554,7 @@ int run(int argc, char** argv) {
     const std::string only = argc > 5 && std::string(argv[5]) != "all" ? argv[5] : "";
     const std::string which = argc > 6 ? argv[6] : "both";
     if (mode == "ssi")
-      compare_case("7. SSI (cone foundations) against fixed bases", src,
+      compare_case("7. SSI (Gazetas footings on soft soil) against fixed bases", src,
                    "studies/ssi-soft-soil.ini", {}, fixed, n, repeat, only, which);
     else if (mode == "svgm")
       compare_case("8. spatially varying ground against one motion under both", src,
