@@ -10,9 +10,17 @@
 
 namespace pound::sears::detail {
 
+namespace {
+// sum |w_k x_k| over the DOFs of a site's point [m] (a slab: |x| of its floor).
+double magnitude(const SitePoint& pt, const Eigen::VectorXd& x) {
+  double m = std::fabs(pt.weight[0] * x(pt.dof[0]));
+  for (int k = 1; k < pt.count; ++k) m += std::fabs(pt.weight[k] * x(pt.dof[k]));
+  return m;
+}
+}  // namespace
+
 void SearsRowRun::update_guards() {
-  for (int s = 0; s < ns; ++s)
-    guarded[s] = slabs.asleep(left_slab(s)) || slabs.asleep(right_slab(s));
+  for (int s = 0; s < ns; ++s) guarded[s] = site_asleep(s);
 }
 
 void SearsRowRun::fall_asleep() {  // at a point of the coarse grid, before fine steps
@@ -35,9 +43,11 @@ void SearsRowRun::predict_overlaps() {
   slabs.predict(begin, op);
   for (int s = 0; s < ns; ++s) {
     const auto& site = assembled.sites[s];
-    const double wl = slabs.predicted_right_upper(left_slab(s));
-    const double wr = slabs.predicted_left_lower(right_slab(s));
-    delta_pred(s) = u_hat(site.dof_left) - u_hat(site.dof_right) + wl - wr - site.gap + gd_next[s];
+    const int l = left_slab(s), r = right_slab(s);  // -1: a struck column point, no bar
+    const double wl = l >= 0 ? slabs.predicted_right_upper(l) : 0.0;
+    const double wr = r >= 0 ? slabs.predicted_left_lower(r) : 0.0;
+    delta_pred(s) = left_point(s).of(u_hat.data()) - right_point(s).of(u_hat.data()) + wl - wr -
+                    site.gap + gd_next[s];
   }
 }
 
@@ -47,17 +57,19 @@ bool SearsRowRun::guards_hold() {
   bool hold = true;
   for (int s = 0; s < ns; ++s) {
     if (!guarded[s]) continue;
-    const int kl = left_slab(s), kr = right_slab(s);
+    const int kl = left_slab(s), kr = right_slab(s);  // -1: a struck column point, no bar
     const auto& site = assembled.sites[s];
     const double bound_end = delta_pred(s) - ops[op].S.row(s).dot(F_next);
-    const double scale = std::fabs(u_hat(site.dof_left)) + std::fabs(u_hat(site.dof_right)) +
-                         std::fabs(site.gap) + std::fabs(slabs.asleep_faces(kl).right) +
-                         std::fabs(slabs.asleep_faces(kr).left) + slabs.asleep_bound(kl) +
-                         slabs.asleep_bound(kr);
+    double scale =
+        magnitude(left_point(s), u_hat) + magnitude(right_point(s), u_hat) + std::fabs(site.gap);
+    if (kl >= 0) scale += std::fabs(slabs.asleep_faces(kl).right);
+    if (kr >= 0) scale += std::fabs(slabs.asleep_faces(kr).left);
+    if (kl >= 0) scale += slabs.asleep_bound(kl);
+    if (kr >= 0) scale += slabs.asleep_bound(kr);
     if (bound_end < -kGuardRoundOff * scale) continue;
     hold = false;
-    if (slabs.asleep(kl)) slabs.wake(kl);
-    if (slabs.asleep(kr)) slabs.wake(kr);
+    if (kl >= 0 && slabs.asleep(kl)) slabs.wake(kl);
+    if (kr >= 0 && slabs.asleep(kr)) slabs.wake(kr);
   }
   if (!hold) {
     update_guards();
@@ -152,12 +164,13 @@ double SearsRowRun::step_error(long m) {
   const double h = m * dt;
   double w = 0.0;
   for (int s = 0; s < ns; ++s) {
-    // A site whose two slabs sleep keeps F = 0 by their bound over the whole coarse interval.
+    // A site whose slabs all sleep (both, or a column site's one) keeps F = 0 by their bound
+    // over the whole coarse interval.
     // A contact that starts or ends within the step, any other site without force (a contact
     // could start and end within a longer step unseen, as within a coarse step without its
     // bound; with one slab awake the guard is checked at the step's end only), or no previous
     // step: the fine step.
-    if (slabs.asleep(left_slab(s)) && slabs.asleep(right_slab(s))) continue;
+    if (site_all_asleep(s)) continue;
     const double f0 = F(s), f1 = F_next(s), fm = F_prev(s);
     if (f0 == 0.0 || f1 == 0.0 || !(h_prev > 0.0)) return kNoLongStep;
     // F[t_i-1, t_i, t_i+1] = F''/2; a quadratic departs from its chord over h by F'' h^2 / 8.

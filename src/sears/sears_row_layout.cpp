@@ -52,36 +52,58 @@ RowContactLayout make_layout(const BuildingRow& row, const AssembledRow& a,
   };
   for (std::size_t s = 0; s < a.sites.size(); ++s) {
     const ContactSite& site = a.sites[s];
-    if (site.column())
-      throw InputError("damped Sears model: " + describe_site(row, site) +
-                       " is slab to column, which the Sears path does not model yet (issue "
-                       "36); use a lumped contact model, or align the floors");
-    const int fl = floor_index(site.dof_left), fr = floor_index(site.dof_right);
-    L.floors[fl].site_right = static_cast<int>(s);  // the left building's floor: its x = l end
-    L.floors[fr].site_left = static_cast<int>(s);   // the right building's floor: its x = 0 end
+    const SiteGeometry& g = site.geometry;
+    // The bars: both slabs at a slab site; at a column site the striking slab only (its right
+    // end x = l when it belongs to the left building, its left end x = 0 otherwise).
+    const bool left_bar = !site.column() || g.slab_side == 0;
+    const bool right_bar = !site.column() || g.slab_side == 1;
+    const int fl = left_bar ? floor_index(site.dof_left) : -1;
+    const int fr = right_bar ? floor_index(site.dof_right) : -1;
+    auto claim = [&](int& end) {  // one site per slab end
+      if (end >= 0)
+        throw InputError("damped Sears model: " + describe_site(row, site) +
+                         " meets a slab end that another site already uses; storeys shorter "
+                         "than the slabs' thickness are not modelled");
+      end = static_cast<int>(s);
+    };
+    if (fl >= 0) claim(L.floors[fl].site_right);  // the left building's floor: its x = l end
+    if (fr >= 0) claim(L.floors[fr].site_left);   // the right building's floor: its x = 0 end
     L.site_left_floor.push_back(fl);
     L.site_right_floor.push_back(fr);
-    SlabContactLaw law;
-    law.kind = model.contact;
-    law.force_cap_N = model.force_cap_N;
-    if (model.contact == ContactKind::flat) {
-      if (!(model.D >= 1.0)) throw InputError("damped Sears model: D must be >= 1");
-      const Slab left = floor_slab(row, model, site.pair, site.geometry.slab_floor);
-      const Slab right = floor_slab(row, model, site.pair + 1, site.geometry.hit);
-      law.stiffness = flat_contact_stiffness(left, right, model.D);  // Th. 8.1-8.2
-    } else if (model.hertz_k > 0.0) {
-      law.stiffness = model.hertz_k;
-    } else {
-      // Th. 7.2 from the faces' radii and the two slabs' materials.
-      const auto& sl = model.slabs.at(site.pair);
-      const auto& sr = model.slabs.at(site.pair + 1);
-      law.stiffness = hertz_stiffness(sl.E_Pa, sl.poisson, model.hertz_radius_left, sr.E_Pa,
-                                      sr.poisson, model.hertz_radius_right);
-    }
-    validate(law);
-    L.laws.push_back(law);
+    L.laws.push_back(site_law(row, model, site));
   }
   return L;
+}
+
+SlabContactLaw site_law(const BuildingRow& row, const SearsRowModel& model,
+                        const ContactSite& site) {
+  const SiteGeometry& g = site.geometry;
+  SlabContactLaw law;
+  law.kind = model.contact;
+  law.force_cap_N = model.force_cap_N;
+  if (model.contact == ContactKind::flat) {
+    if (!(model.D >= 1.0)) throw InputError("damped Sears model: D must be >= 1");
+    if (!site.column()) {
+      const Slab left = floor_slab(row, model, site.pair, g.slab_floor);
+      const Slab right = floor_slab(row, model, site.pair + 1, g.hit);
+      law.stiffness = flat_contact_stiffness(left, right, model.D);  // Th. 8.1-8.2
+    } else {  // Th. 8.2 for the striking slab alone; the column replaces the struck bar
+      const Slab slab = floor_slab(row, model, site.pair + g.slab_side, g.slab_floor);
+      law.stiffness = slab_axial_stiffness(slab.E_Pa, slab.area_m2(), slab.length_m, model.D);
+    }
+  } else if (model.hertz_k > 0.0) {
+    law.stiffness = model.hertz_k;
+  } else {
+    // Th. 7.2 from the faces' radii and the two buildings' materials.
+    const auto& sl = model.slabs.at(site.pair);
+    const auto& sr = model.slabs.at(site.pair + 1);
+    law.stiffness = hertz_stiffness(sl.E_Pa, sl.poisson, model.hertz_radius_left, sr.E_Pa,
+                                    sr.poisson, model.hertz_radius_right);
+  }
+  // The struck columns in series (issue 36): delta = delta_c + F / k_col.
+  if (site.column()) law.series_compliance_m_per_N = 1.0 / site.column_stiffness;
+  validate(law);
+  return law;
 }
 
 void build_banks(RowContactLayout& L, const BuildingRow& row, const SearsRowModel& model,
@@ -97,13 +119,19 @@ Eigen::MatrixXd modal_compliance(const RowContactLayout& L, int level) {
   Eigen::MatrixXd S = Eigen::MatrixXd::Zero(ns, ns);
   for (int s = 0; s < ns; ++s) {
     const int fl = L.site_left_floor[s], fr = L.site_right_floor[s];
-    const auto flex_l = L.banks[fl].flexibility(level), flex_r = L.banks[fr].flexibility(level);
     // delta_s = w_right(left floor) - w_left(right floor); the left floor's right end carries
     // -F_s and its left end +F_t (t = its other site), the right floor's left end +F_s and its
-    // right end -F_t'.
-    S(s, s) += flex_l.same + flex_r.same;
-    if (L.floors[fl].site_left >= 0) S(s, L.floors[fl].site_left) -= flex_l.cross;
-    if (L.floors[fr].site_right >= 0) S(s, L.floors[fr].site_right) -= flex_r.cross;
+    // right end -F_t'. A column side (-1) has no bar: no modal part.
+    if (fl >= 0 && fr >= 0) {  // (the sum in the order of the slab sites before issue 36)
+      const auto flex_l = L.banks[fl].flexibility(level), flex_r = L.banks[fr].flexibility(level);
+      S(s, s) += flex_l.same + flex_r.same;
+    } else {
+      S(s, s) += L.banks[fl >= 0 ? fl : fr].flexibility(level).same;
+    }
+    if (fl >= 0 && L.floors[fl].site_left >= 0)
+      S(s, L.floors[fl].site_left) -= L.banks[fl].flexibility(level).cross;
+    if (fr >= 0 && L.floors[fr].site_right >= 0)
+      S(s, L.floors[fr].site_right) -= L.banks[fr].flexibility(level).cross;
   }
   return S;
 }

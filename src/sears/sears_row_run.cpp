@@ -62,10 +62,13 @@ SearsRowRun::SearsRowRun(const SearsRowProblem& p_in, const SearsRowModel& model
 
 // ops[m - 1] for steps of m = 1 .. longest fine steps through contacts (StepOperators).
 void SearsRowRun::build_operators() {
-  Eigen::MatrixXd Dsites = Eigen::MatrixXd::Zero(n, ns);  // columns e_L - e_R
+  // Columns e_L - e_R: the sides' points, F w_k on each of their DOFs (a slab: its floor, 1; a
+  // struck column point: its floors by the fixed-end reactions, docs/contact-geometry.md).
+  Eigen::MatrixXd Dsites = Eigen::MatrixXd::Zero(n, ns);
   for (int s = 0; s < ns; ++s) {
-    Dsites(assembled.sites[s].dof_left, s) = 1.0;
-    Dsites(assembled.sites[s].dof_right, s) = -1.0;
+    const SitePoint &l = left_point(s), &r = right_point(s);
+    for (int k = 0; k < l.count; ++k) Dsites(l.dof[k], s) += l.weight[k];
+    for (int k = 0; k < r.count; ++k) Dsites(r.dof[k], s) -= r.weight[k];
   }
   // A run without contacts at a row with contact sites never carries a force, so its steps
   // off the coarse grid (the end of the run) are fine ones: one length.
@@ -118,7 +121,7 @@ void SearsRowRun::initial_state() {
   for (auto* g : {&gd, &gv, &gd_next, &gv_next}) g->assign(ns, 0.0);
   ground_at(0.0, gd, gv);
   for (int s = 0; s < ns; ++s)
-    delta(s) = u(a.sites[s].dof_left) - u(a.sites[s].dof_right) - a.sites[s].gap + gd[s];
+    delta(s) = left_point(s).of(u.data()) - right_point(s).of(u.data()) - a.sites[s].gap + gd[s];
   out.dt_s = dt;
   out.coarse_dt_s = hc;
   rec.set_collapse(a.storeys, p.collapse_drift_ratio);
@@ -147,7 +150,7 @@ void SearsRowRun::initial_state() {
   }
   for (int s = 0; s < ns && !p.contacts; ++s) {
     free_approach[s] = approach_bound(s);
-    free_approach_rate[s] = v(a.sites[s].dof_left) - v(a.sites[s].dof_right) + gv[s];
+    free_approach_rate[s] = left_point(s).of(v.data()) - right_point(s).of(v.data()) + gv[s];
   }
 }
 
@@ -158,21 +161,27 @@ void SearsRowRun::loads(const Eigen::VectorXd& f, std::vector<EndLoads>& to) con
   }
 }
 
+// The faces: a slab's floor plus its internal displacement at the face (Th. 8.3); a struck
+// column point (no bar, issue 36) moves with its floors only.
 double SearsRowRun::overlap_now(int s) const {
   const auto& site = assembled.sites[s];
-  return u(site.dof_left) - u(site.dof_right) + slabs.disp(left_slab(s)).right -
-         slabs.disp(right_slab(s)).left - site.gap + gd[s];
+  const int l = left_slab(s), r = right_slab(s);
+  return left_point(s).of(u.data()) - right_point(s).of(u.data()) +
+         (l >= 0 ? slabs.disp(l).right : 0.0) - (r >= 0 ? slabs.disp(r).left : 0.0) - site.gap +
+         gd[s];
 }
 
 double SearsRowRun::approach_bound(int s) const {
-  const auto& site = assembled.sites[s];
-  return u(site.dof_left) - u(site.dof_right) + slabs.right_face_upper(left_slab(s)) -
-         slabs.left_face_lower(right_slab(s)) + gd[s];
+  const int l = left_slab(s), r = right_slab(s);
+  return left_point(s).of(u.data()) - right_point(s).of(u.data()) +
+         (l >= 0 ? slabs.right_face_upper(l) : 0.0) - (r >= 0 ? slabs.left_face_lower(r) : 0.0) +
+         gd[s];
 }
 
 void SearsRowRun::wake_site(int s) {
-  if (slabs.dormant(left_slab(s))) slabs.wake_dormant(left_slab(s));
-  if (slabs.dormant(right_slab(s))) slabs.wake_dormant(right_slab(s));
+  const int l = left_slab(s), r = right_slab(s);
+  if (l >= 0 && slabs.dormant(l)) slabs.wake_dormant(l);
+  if (r >= 0 && slabs.dormant(r)) slabs.wake_dormant(r);
   delta(s) = overlap_now(s);
 }
 
@@ -219,8 +228,7 @@ bool SearsRowRun::contact_free(double h) {
   // The building translation alone first (cheap); each site's bound is kept for the full test
   // below (waking a dormant slab changes the overlap, not the buildings' state).
   if (!holds([&](int s) {
-        const auto& site = assembled.sites[s];
-        site_approach[s] = bound.approach(site.dof_left, site.dof_right, v, gv[s], h);
+        site_approach[s] = bound.approach(left_point(s), right_point(s), v, gv[s], h);
         return kCoarseBoundSafety * site_approach[s] < -delta(s);
       }))
     return false;
@@ -235,7 +243,8 @@ bool SearsRowRun::contact_free(double h) {
     valid = true;
   }
   return holds([&](int s) {
-    const double b = site_approach[s] + mb[left_slab(s)] + mb[right_slab(s)];
+    const int l = left_slab(s), r = right_slab(s);
+    const double b = site_approach[s] + (l >= 0 ? mb[l] : 0.0) + (r >= 0 ? mb[r] : 0.0);
     return kCoarseBoundSafety * b < -delta(s);
   });
 }
@@ -253,7 +262,7 @@ __attribute__((always_inline)) inline void SearsRowRun::record_site(int s, bool 
     // the faces move with the floors: the approach is that of the floors, its peak between
     // the step's ends from their cubic Hermite interpolant (solver/hermite.hpp).
     const double ap = approach_bound(s);
-    const double rate = v(assembled.sites[s].dof_left) - v(assembled.sites[s].dof_right) + gv[s];
+    const double rate = left_point(s).of(v.data()) - right_point(s).of(v.data()) + gv[s];
     rec.approach_over_step(s, Hermite{free_approach[s], ap, h * free_approach_rate[s], h * rate});
     free_approach[s] = ap;
     free_approach_rate[s] = rate;
@@ -481,7 +490,8 @@ void SearsRowRun::finish() {
 // M (v_i+1 - v_i) = h (p - C v - f) averaged over the step's ends, so that the kinetic energy
 // changes by exactly the work of the averaged forces on the displacement increment):
 // input -du^T M 1 (ag_i + ag_i+1) / 2, damping h v_avg^T C v_avg, contact
-// sum_s (F_i + F_i+1) / 2 (du_L - du_R).
+// sum_s (F_i + F_i+1) / 2 (du_L - du_R), u_L and u_R the sites' points (SitePoint: the force
+// loads their DOFs with w_k F, so its work is F times the points' displacement increments).
 void SearsRowRun::add_energy(double h, double t_start, double t_next) {
   const AssembledRow& a = assembled;
   const int m = ground_inputs(ground);
@@ -504,9 +514,10 @@ void SearsRowRun::add_energy(double h, double t_start, double t_next) {
   e_damping += h * v_avg.dot(a.C * v_avg);
   if (storeys.tangent_damping()) e_damping += storeys.damper_work(u_prev, u);
   for (int k = 0; k < ns; ++k) {
-    const int l = a.sites[k].dof_left, rr = a.sites[k].dof_right;
+    const SitePoint &l = left_point(k), &r = right_point(k);
     e_contact += 0.5 * (F(k) + F_next(k)) *
-                 ((u(l) - u_prev(l)) - (u(rr) - u_prev(rr)) + (gd_next[k] - gd[k]));
+                 ((l.of(u.data()) - l.of(u_prev.data())) - (r.of(u.data()) - r.of(u_prev.data())) +
+                  (gd_next[k] - gd[k]));
   }
 }
 

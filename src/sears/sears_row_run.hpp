@@ -51,18 +51,32 @@ class SearsRowRun {
   void ground_at(double t, std::vector<double>& d, std::vector<double>& w) const {
     for (int s = 0; s < ns; ++s) ground.relative(s, t, d[s], w[s]);
   }
+  // The slabs of site s (index into layout.floors), -1 for a struck column point (issue 36).
   int left_slab(int s) const { return layout.site_left_floor[s]; }
   int right_slab(int s) const { return layout.site_right_floor[s]; }
-  // Overlap at the start of the step at site s (both slabs awake).
+  // Site s's sides as points of the floors (ContactSite::left, ::right; a slab: its floor).
+  const SitePoint& left_point(int s) const { return assembled.sites[s].left; }
+  const SitePoint& right_point(int s) const { return assembled.sites[s].right; }
+  // Overlap at the start of the step at site s (its slabs awake).
   double overlap_now(int s) const;
   // Approach u_L - u_R of the faces of site s (floors plus internal vibration); with a dormant
   // slab, its upper bound.
   double approach_bound(int s) const;
   double overlap_bound(int s) const { return approach_bound(s) - assembled.sites[s].gap; }
   bool site_dormant(int s) const {
-    return slabs.dormant(left_slab(s)) || slabs.dormant(right_slab(s));
+    const int l = left_slab(s), r = right_slab(s);
+    return (l >= 0 && slabs.dormant(l)) || (r >= 0 && slabs.dormant(r));
   }
-  void wake_site(int s);  // both slabs of site s awake, delta(s) exact
+  // Whether a slab of site s sleeps (a guarded site), and whether every slab of it does.
+  bool site_asleep(int s) const {
+    const int l = left_slab(s), r = right_slab(s);
+    return (l >= 0 && slabs.asleep(l)) || (r >= 0 && slabs.asleep(r));
+  }
+  bool site_all_asleep(int s) const {
+    const int l = left_slab(s), r = right_slab(s);
+    return (l < 0 || slabs.asleep(l)) && (r < 0 || slabs.asleep(r));
+  }
+  void wake_site(int s);  // the slabs of site s awake, delta(s) exact
   // Sleeping slabs (runs of fine steps).
   void update_guards();
   void fall_asleep();

@@ -31,8 +31,8 @@ StepLimits row_step_limits(const BuildingRow& row, double record_dt, const Sears
   for (const auto& f : L.floors)
     w_max = std::max(w_max, floor_slab(row, model, f.building, f.floor - 1).omega(model.modes));
   for (std::size_t s = 0; s < L.laws.size(); ++s) {
-    const double m1 = 1.0 / a.inv_mass(a.sites[s].dof_left),
-                 m2 = 1.0 / a.inv_mass(a.sites[s].dof_right);
+    // The sides' apparent masses (a slab: its floor's; a struck column point: 1 / sum w^2 / m).
+    const double m1 = a.sites[s].mass_left, m2 = a.sites[s].mass_right;
     t_c = std::min(t_c,
                    L.laws[s].lumped_duration(m1 * m2 / (m1 + m2), model.hertz_reference_velocity));
   }

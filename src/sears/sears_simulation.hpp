@@ -1,12 +1,15 @@
 #pragma once
 // Buildings in a row pounding through damped Sears contacts (thesis ch. 8; docs/sears.md).
 //
-// Every floor that can collide (a floor of a ContactSite) is an axial bar (Slab) whose
-// rigid-body mode is the building's own floor DOF (Th. 8.5) and whose N internal modes are
-// stepped by ModalBank (Th. 8.7); the other floors stay lumped. One step (Th. 8.8, made
-// implicit in the contact forces as for the free impact):
+// Every slab that can collide (a slab of a ContactSite: both of a slab-to-slab site, the
+// striking one of a slab-to-column site, issue 36) is an axial bar (Slab) whose rigid-body mode
+// is the building's own floor DOF (Th. 8.5) and whose N internal modes are stepped by ModalBank
+// (Th. 8.7); the other floors stay lumped, and a struck column point is a weighted point of its
+// floors (SitePoint) with the columns' k_col in series with the law (sears_row_layout.hpp). One
+// step (Th. 8.8, made implicit in the contact forces as for the free impact):
 //   1. the building DOFs by Newmark's average-acceleration method (as in the thesis): the
-//      end-of-step displacements are u_pred - G F, G = Khat^-1 [e_L - e_R per site];
+//      end-of-step displacements are u_pred - G F, G = Khat^-1 [e_L - e_R per site] (e_L, e_R
+//      the sides' points: w_k on their DOFs);
 //   2. the internal modes by the exact linear-force recurrence: end-of-step faces are
 //      predictions plus the modal step flexibility times F;
 //   3. the face overlaps are therefore delta = delta_pred - S F with S constant and symmetric

@@ -24,8 +24,13 @@ double SlabContactLaw::potential(double delta_m) const {
   return delta_m > d_cap ? e_el + force_cap_N * (delta_m - d_cap) : e_el;
 }
 
-double SlabContactLaw::solve_implicit(double delta_pred_m, double S) const {
+double SlabContactLaw::solve_implicit(double delta_pred_m, double S_step) const {
   if (!(delta_pred_m > 0.0)) return 0.0;
+  // A column in series (issue 36): delta_c + F / k_col + S F = delta_pred, so the column's
+  // compliance adds to the step's. For a Hertz law this is the scalar root of
+  // contact/column_series.hpp (SeriesHertz: delta_c + F(delta_c) / k_col = delta) with the
+  // step's compliance beside the column's; a flat law gets k k_col / (k + k_col).
+  const double S = series_compliance_m_per_N > 0.0 ? S_step + series_compliance_m_per_N : S_step;
   double f = 0.0;
   if (kind == ContactKind::flat) {
     f = stiffness * delta_pred_m / (1.0 + stiffness * S);
@@ -47,7 +52,10 @@ double SlabContactLaw::solve_implicit(double delta_pred_m, double S) const {
 }
 
 double SlabContactLaw::lumped_duration(double m_red, double v0) const {
-  if (kind == ContactKind::flat) return M_PI * std::sqrt(m_red / stiffness);
+  if (kind == ContactKind::flat) {
+    const double c = series_compliance_m_per_N;
+    return M_PI * std::sqrt(c > 0.0 ? m_red * (1.0 / stiffness + c) : m_red / stiffness);
+  }
   const double delta_max = std::pow(5.0 * m_red * v0 * v0 / (4.0 * stiffness), 0.4);
   return 2.9432 * delta_max / v0;
 }
@@ -56,6 +64,8 @@ void validate(const SlabContactLaw& law) {
   if (!(std::isfinite(law.stiffness) && law.stiffness > 0.0))
     throw InputError("contact stiffness must be finite and > 0");
   if (!(law.force_cap_N > 0.0)) throw InputError("force cap must be > 0 [N]");
+  if (!(law.series_compliance_m_per_N >= 0.0 && std::isfinite(law.series_compliance_m_per_N)))
+    throw InputError("column compliance must be finite and >= 0 [m/N]");
 }
 
 }  // namespace pound::sears

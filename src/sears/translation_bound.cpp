@@ -29,6 +29,8 @@ TranslationBound::TranslationBound(const AssembledRow& a, double ag_max)
       ag_max_(std::fabs(ag_max)) {
   const int n = a.dofs(), nb = static_cast<int>(a.offset.size());
   building_of_.assign(n, 0);
+  influence_.assign(n, 1.0);
+  for (int k = 0; k < n && a.influence.size() == n; ++k) influence_[k] = a.influence(k);
   dofs_.assign(nb, {});
   const int floors = a.floors > 0 ? a.floors : n;  // (a row built by hand has floors only)
   for (int b = 0; b < nb; ++b) {
@@ -176,17 +178,36 @@ void TranslationBound::set_state(const Eigen::VectorXd& u, const Eigen::VectorXd
   }
 }
 
+double TranslationBound::accel(int k, double h) const {
+  const int b = building_of_[k];
+  if (own_[b] && omega_g_[b] > 0.0) {  // P-Delta on yielding storeys: E' may grow
+    const double w = omega_g_[b], c = sqrt_mass_[b] * ag_max_ / w;
+    return G_own_(k) * ((sqrt2E_[b] + c) * std::exp(w * h) - c);
+  }
+  return (own_[b] ? G_own_(k) : G_(k)) * (sqrt2E_[b] + sqrt_mass_[b] * ag_max_ * h);
+}
+
 double TranslationBound::approach(int l, int r, const Eigen::VectorXd& v, double ground_rate,
                                   double h) const {
-  auto accel = [&](int k) {
-    const int b = building_of_[k];
-    if (own_[b] && omega_g_[b] > 0.0) {  // P-Delta on yielding storeys: E' may grow
-      const double w = omega_g_[b], c = sqrt_mass_[b] * ag_max_ / w;
-      return G_own_(k) * ((sqrt2E_[b] + c) * std::exp(w * h) - c);
+  return std::max(0.0, v(l) - v(r) + ground_rate) * h + 0.5 * h * h * (accel(l, h) + accel(r, h));
+}
+
+double TranslationBound::approach(const SitePoint& l, const SitePoint& r, const Eigen::VectorXd& v,
+                                  double ground_rate, double h) const {
+  // Per side sum |w_k| A_k and the ground's share |1 - sum w_k i_k| |ag|_max
+  // (translation_bound.hpp); a slab (one DOF, w = 1, i = 1) gives A_k and 0, as approach(int,
+  // int) does.
+  auto side = [&](const SitePoint& p) {
+    double a = std::fabs(p.weight[0]) * accel(p.dof[0], h);
+    double wi = p.weight[0] * influence_[p.dof[0]];
+    for (int k = 1; k < p.count; ++k) {
+      a += std::fabs(p.weight[k]) * accel(p.dof[k], h);
+      wi += p.weight[k] * influence_[p.dof[k]];
     }
-    return (own_[b] ? G_own_(k) : G_(k)) * (sqrt2E_[b] + sqrt_mass_[b] * ag_max_ * h);
+    return wi != 1.0 ? a + std::fabs(1.0 - wi) * ag_max_ : a;
   };
-  return std::max(0.0, v(l) - v(r) + ground_rate) * h + 0.5 * h * h * (accel(l) + accel(r));
+  const double rate = l.of(v.data()) - r.of(v.data()) + ground_rate;
+  return std::max(0.0, rate) * h + 0.5 * h * h * (side(l) + side(r));
 }
 
 }  // namespace pound::sears

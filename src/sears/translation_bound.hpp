@@ -14,6 +14,12 @@
 // (u_R'' + ag_R) (each building on its own ground, issue 28), and Taylor's theorem gives
 //     x(t + tau) - x(t) <= max(0, x'(t)) h + h^2/2 (A_L + A_R)
 // for 0 <= tau <= h, A_k the acceleration bound above at the largest energy in the step.
+// A side of a site is a point u = sum w_k u_k of its building's DOFs (SitePoint; a slab: its
+// floor, w = 1; a struck column point, issue 36: its two floors, or one floor and the ground on a
+// fixed base, and a rocking base's rotation). With the DOFs' ground influences i_k (1 for a
+// floor or a base's sway, 0 for its rotation), its absolute acceleration is sum w_k (u_k'' + i_k
+// ag) + (1 - sum w_k i_k) ag, so the bound takes sum |w_k| A_k + |1 - sum w_k i_k| |ag|_max per
+// side; a slab's second term is 0.
 // Yielding storeys (hysteresis/storey_law.hpp): with u^T K u / 2 replaced by the storeys'
 // recoverable energy U = sum U_j, both steps still hold, because every law keeps
 // dE_h/dt >= 0 (E_b can only grow by the ground's work) and V_j^2 <= 2 k0_j U_j, so that
@@ -57,6 +63,10 @@ class TranslationBound {
   /// be in different buildings.
   double approach(int dof_left, int dof_right, const Eigen::VectorXd& v, double ground_rate,
                   double h) const;
+  /// The same for the points of a contact site's sides (SitePoint, the two in different
+  /// buildings): x = sum w u over each side; a slab's point gives the bound above to the bit.
+  double approach(const SitePoint& left, const SitePoint& right, const Eigen::VectorXd& v,
+                  double ground_rate, double h) const;
   /// False for a row whose bound is not proved: a massless base (a foundation without mass or
   /// rotary inertia) with tangent-stiffness damping or P-Delta (translation_bound.cpp,
   /// massless_bounds); no step may rely on it then.
@@ -66,9 +76,10 @@ class TranslationBound {
   void massless_bounds(const AssembledRow& a, const std::vector<int>& massless,
                        const Eigen::MatrixXd& K0);
 
- public:
  private:
+  double accel(int k, double h) const;  // A_k over h [m/s^2]
   std::vector<int> building_of_;        // per DOF
+  std::vector<double> influence_;       // per DOF: its ground influence i_k [-]
   std::vector<std::vector<int>> dofs_;  // per building: its floors, then its base's DOFs
   bool valid_ = true;                   // no massless DOF (the proof needs M > 0)
   std::vector<double> sqrt_mass_;       // sqrt(m_b) per building [sqrt(kg)]

@@ -56,8 +56,8 @@ struct ContactSite {
   int level = 0;  ///< the site's index within its pair, 0-based (aligned floors: floor level)
   SitePoint left, right;  ///< the left and right building's points
   /// A DOF of each side's building: its slab's floor DOF (a slab side), or the struck storey's
-  /// upper floor (a column side). The damped Sears path, which meets only slab sites, reads
-  /// the slabs' floors here.
+  /// upper floor (a column side). The damped Sears path finds its bars' floors here (a column
+  /// side has no bar; sears/sears_row_layout.hpp).
   int dof_left = 0, dof_right = 0;
   double gap = 0.0;       ///< at-rest gap [m]
   SiteGeometry geometry;  ///< kind, striking slab, struck floor or storey, xi
