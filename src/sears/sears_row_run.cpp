@@ -430,6 +430,11 @@ SearsRowResult SearsRowRun::run() {
     const double* ag = ground.acc(t_next);
     record_sites(coarse, h, t_next);
     F = F_next;
+    for (int s = 0; s < ns; ++s) {  // the struck columns' shear (issue 36)
+      const ContactSite& site = assembled.sites[s];
+      if (site.struck_dof >= 0)
+        rec.column_shear(s, column_shear_demand(site, storeys.shear(u, site.struck_dof), F(s)));
+    }
     record_peaks(coarse, ag, t_next, h);
     if (failure_check) check_failures(t_next);
     if (rec.keeps_history()) {
