@@ -434,7 +434,8 @@ void samples_case(const std::string& src, long samples, int repeat, const std::s
 // `baseline` (the other keys' draws are the same: every parameter has its own stream), per
 // contact model, process CPU time of SampleRunner::run (the motions' generation included) and
 // the same without one motion's generation (SimqkeGenerator, the uniform case's motion).
-//   7. ssi (issue 29): studies/ssi-soft-soil.ini (Gazetas footings since issue 38; cones before) against fixed bases;
+//   7. ssi (issue 29): studies/ssi-soft-soil.ini (Gazetas footings since issue 38; cones before)
+//   against fixed bases;
 //   8. svgm (issue 28): studies/svgm-identical-pair.ini on spatially varying ground (two
 //      coherent stations, wave passage) against one motion under both (which never pounds);
 //      svgm-apart: the same two, and the default pair as in svgm-default, with a 1 m gap on
