@@ -20,6 +20,11 @@ struct IntegratorSettings {
   /// system on the grid of h_max (linear_step.hpp; docs/integration.md, "Exact steps");
   /// false: Dormand-Prince throughout.
   bool exact_free = true;
+  /// A stiff first-order root (issue 38; docs/integration.md, "Stiff first-order roots"): a
+  /// building's massless base DOFs are condensed to their quasi-static limit when every one's
+  /// relaxation rate K_ii / C_ii [1/s] times the row's shortest oscillating period T_min [s]
+  /// reaches this (relative error about 2 pi / this, 3e-5); infinity: never [-].
+  double stiff_root = 2e5;
 };
 
 }  // namespace pound

@@ -71,13 +71,14 @@ void RowDynamics::set_ground_layout() {
   layout_.size = next;
 }
 
-void RowDynamics::rhs(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy) {
-  contact_forces(y);
+void RowDynamics::rhs(double t, const Eigen::VectorXd& y_in, Eigen::VectorXd& dy) {
+  contact_forces(y_in);
   const double* a_g = ground_acc(t);
   dy.resize(layout_.size);
+  // Condensed base DOFs: their u_b solved, v_b = 0 until quasi_static_rates() (issue 38).
+  const Eigen::VectorXd& y = qs_.empty() ? y_in : quasi_static_state(y_in);
   const double* u = y.data();
   const double* v = u + n_;
-  const double* im = row_.inv_mass.data();
   double* du = dy.data();
   double* dv = du + n_;
   if (!massless_.empty()) v = massless_velocities(y);  // y's are stale there: see project()
@@ -89,19 +90,11 @@ void RowDynamics::rhs(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy) {
   else
     forces_.general(y, storey, layout_.storey_offset, a_g, dy.data(), v);
   if (!massless_.empty()) massless_rates(dv);
-  for (int i = 0; i < ns_; ++i) {
-    const double f = force_(i);
-    du[layout_.impulses + i] = f;
-    if (f == 0.0) continue;
-    const auto& site = row_.sites[i];  // w_k F on each DOF of a side (SitePoint)
-    for (int k = 0; k < site.left.count; ++k) {
-      const int d = site.left.dof[k];
-      dv[d] -= im[d] * (site.left.weight[k] * f);
-    }
-    for (int k = 0; k < site.right.count; ++k) {
-      const int d = site.right.dof[k];
-      dv[d] += im[d] * (site.right.weight[k] * f);
-    }
+  add_contact_forces(du, dv);
+  if (!qs_.empty()) {
+    double* vw = (v == veff_.data()) ? veff_.data() : yq_.data() + n_;
+    quasi_static_rates(a_g, vw, dy);
+    v = vw;
   }
   if (any_held_)
     for (int i = 0; i < n_; ++i)
@@ -117,10 +110,30 @@ void RowDynamics::rhs(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy) {
   }
 }
 
+// The impulses' rates and the contact forces of contact_force() on the sites' DOFs.
+void RowDynamics::add_contact_forces(double* du, double* dv) const {
+  const double* im = row_.inv_mass.data();
+  for (int i = 0; i < ns_; ++i) {
+    const double f = force_(i);
+    du[layout_.impulses + i] = f;
+    if (f == 0.0) continue;
+    const auto& site = row_.sites[i];  // w_k F on each DOF of a side (SitePoint)
+    for (int k = 0; k < site.left.count; ++k) {
+      const int d = site.left.dof[k];
+      dv[d] -= im[d] * (site.left.weight[k] * f);
+    }
+    for (int k = 0; k < site.right.count; ++k) {
+      const int d = site.right.dof[k];
+      dv[d] += im[d] * (site.right.weight[k] * f);
+    }
+  }
+}
+
 void RowDynamics::storey_changed(int) {
   if (affine_) forces_.set_lines(storey);
   if (forces_.tangent_damping()) forces_.set_tangent_damping(storey);
   if (!massless_.empty()) factor_massless();
+  if (!qs_.empty()) factor_quasi_static();
 }
 
 // Massless base DOFs (a flexible foundation without mass or rotary inertia; issue 29): their
@@ -169,6 +182,122 @@ void RowDynamics::massless_rates(double* dv) {
   }
   vb_.noalias() = massless_S_ * rb_;
   for (int k = 0; k < m; ++k) dv[massless_[k]] = vb_(k);
+}
+
+int RowDynamics::condense_stiff_roots(double rate_times_period, double t_min) {
+  if (massless_.empty() || !qs_.empty() || !(t_min > 0.0) || !std::isfinite(t_min)) return 0;
+  const double rate = rate_times_period / t_min;  // [1/s]
+  if (!std::isfinite(rate)) return 0;
+  std::vector<char> stiff(n_, 0);
+  for (int b : massless_) {
+    double c = 0.0, k = 0.0;
+    forces_.row_entries(b, 0, [&](int j, double cj, double kj) {
+      if (j == b) c = cj, k = kj;
+    });
+    stiff[b] = k >= rate * c;
+  }
+  std::vector<char> condensed(n_, 0);
+  for (std::size_t bi = 0; bi < row_.sway.size(); ++bi) {
+    bool all = true, any = false;
+    for (int d : {row_.sway[bi], row_.rot[bi]})
+      if (d >= 0 && row_.inv_mass(d) == 0.0) any = true, all = all && stiff[d];
+    if (!(any && all)) continue;
+    for (int d : {row_.sway[bi], row_.rot[bi]})
+      if (d >= 0 && row_.inv_mass(d) == 0.0) condensed[d] = 1;
+  }
+  std::vector<int> first_order;
+  for (int b : massless_) (condensed[b] ? qs_ : first_order).push_back(b);
+  if (qs_.empty()) return 0;
+  massless_ = first_order;
+  if (!massless_.empty()) {
+    rb_.setZero(static_cast<int>(massless_.size()));
+    vb_ = rb_;
+    factor_massless();
+  }
+  qs_mark_ = condensed;
+  yq_.setZero(layout_.size);
+  rq_.setZero(static_cast<int>(qs_.size()));
+  vq_ = rq_;
+  factor_quasi_static();
+  return static_cast<int>(qs_.size());
+}
+
+// K_bb over the condensed DOFs (the tangent lines' for piecewise-linear storeys, the initial
+// stiffness otherwise), and Q = K_bb - C_ba M_a^-1 C_ab (C symmetric), for v_b.
+void RowDynamics::factor_quasi_static() {
+  const int m = static_cast<int>(qs_.size());
+  const int kind = affine_ ? 1 : 0;
+  std::vector<int> slot(n_, -1);
+  for (int k = 0; k < m; ++k) slot[qs_[k]] = k;
+  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(m, m), Ca = Eigen::MatrixXd::Zero(m, n_);
+  for (int k = 0; k < m; ++k)
+    forces_.row_entries(qs_[k], kind, [&](int j, double c, double kj) {
+      if (slot[j] >= 0)
+        K(k, slot[j]) = kj;
+      else if (row_.inv_mass(j) != 0.0)
+        Ca(k, j) = c;
+    });
+  qs_kinv_ = K.inverse();
+  qs_qinv_ = (K - Ca * row_.inv_mass.asDiagonal() * Ca.transpose()).inverse();
+}
+
+// y with the condensed DOFs' displacements solving K_b u + C_ba v_a + off_b = 0 (the base rows
+// without C_bb v_b): one Newton step from y's (exact for linear and piecewise-linear storeys),
+// chord iterations on K_bb for other laws; their velocities 0 (set by quasi_static_rates).
+const Eigen::VectorXd& RowDynamics::quasi_static_state(const Eigen::VectorXd& y) {
+  yq_ = y;
+  double* u = yq_.data();
+  double* v = u + n_;
+  for (int b : qs_) v[b] = 0.0;
+  const int kind = linear_ ? 0 : (affine_ ? 1 : 2);
+  const int m = static_cast<int>(qs_.size());
+  for (int it = 0; it < (kind == 2 ? 50 : 1); ++it) {
+    for (int k = 0; k < m; ++k)
+      rq_(k) = forces_.raw_force(qs_[k], u, v, kind, storey, u, layout_.storey_offset);
+    vq_.noalias() = qs_kinv_ * rq_;
+    double change = 0.0, size = 0.0;
+    for (int k = 0; k < m; ++k) {
+      u[qs_[k]] -= vq_(k);
+      change = std::max(change, std::fabs(vq_(k)));
+      size = std::max(size, std::fabs(u[qs_[k]]));
+    }
+    if (change <= 1e-14 * size) break;
+  }
+  return yq_;
+}
+
+// After the other DOFs' accelerations dv (with v_b = 0): v_b from the constraint's derivative,
+// (K_bb - C_ba M_a^-1 C_ab) v_b = -(K_ba v_a + C_ba dv_a), into v and y's copy, and dv_a
+// corrected by -M_a^-1 C_ab v_b (linear and piecewise-linear storeys: exact; other laws: their
+// forces evaluated again with v_b). The condensed DOFs' rates: du_b = v_b, dv_b = 0.
+void RowDynamics::quasi_static_rates(const double* a_g, double* v, Eigen::VectorXd& dy) {
+  double* du = dy.data();
+  double* dv = du + n_;
+  const int m = static_cast<int>(qs_.size());
+  const int kind = affine_ ? 1 : 0;
+  const std::vector<char>& is_qs = qs_mark_;
+  for (int k = 0; k < m; ++k) {
+    double r = 0.0;
+    forces_.row_entries(qs_[k], kind, [&](int j, double c, double kj) {
+      if (is_qs[j]) return;
+      r += kj * v[j];
+      if (row_.inv_mass(j) != 0.0) r += c * dv[j];
+    });
+    rq_(k) = -r;
+  }
+  vq_.noalias() = qs_qinv_ * rq_;
+  for (int k = 0; k < m; ++k) v[qs_[k]] = yq_(n_ + qs_[k]) = vq_(k);
+  if (linear_ || affine_) {
+    for (int k = 0; k < m; ++k)
+      forces_.row_entries(qs_[k], kind, [&](int j, double c, double) {
+        if (row_.inv_mass(j) != 0.0) dv[j] -= row_.inv_mass(j) * c * vq_(k);
+      });
+  } else {
+    forces_.general(yq_, storey, layout_.storey_offset, a_g, du, v);
+    if (!massless_.empty()) massless_rates(dv);
+    add_contact_forces(du, dv);
+  }
+  for (int k = 0; k < m; ++k) du[qs_[k]] = vq_(k), dv[qs_[k]] = 0.0;
 }
 
 void RowDynamics::damping_matrix(Eigen::MatrixXd& C) const {

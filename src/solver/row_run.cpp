@@ -91,8 +91,12 @@ void RowRun::set_step_limits() {
   if (s_.h_max <= 0 && rec_dt_ > 0) h_max_ = std::min(h_max_, rec_dt_);
   const bool h_max_known = std::isfinite(h_max_);
   if (!h_max_known) h_max_ = std::max(p_->t_end, 1e-6);
+  // A massless base whose dashpots relax faster than any step could follow is condensed to its
+  // quasi-static limit (RowDynamics::condense_stiff_roots; the exact steps' propagators do not
+  // know it: Dormand-Prince steps the row, at the buildings' own rates).
+  if (!dyn_.massless().empty()) dyn_.condense_stiff_roots(s_.stiff_root, tmin_period);
   if (s_.exact_free && !fixed_ && !track_ && h_max_known && (dyn_.linear() || dyn_.affine()) &&
-      dyn_.layout().storey_states == 0)
+      dyn_.layout().storey_states == 0 && dyn_.quasi_static().empty())
     exact_.enable(row_, h_max_, rec_dt_, p_->exact_cache);
   if (fixed_ && !(s_.dt > 0)) throw InputError("fixed-step integration needs dt > 0");
   h_ = fixed_ ? s_.dt : std::min(h_max_, 1e-4);
