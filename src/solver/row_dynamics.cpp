@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+
+#include "structure/building_on_base.hpp"
 
 namespace pound {
 
@@ -76,7 +79,7 @@ void RowDynamics::rhs(double t, const Eigen::VectorXd& y_in, Eigen::VectorXd& dy
   const double* a_g = ground_acc(t);
   dy.resize(layout_.size);
   // Condensed base DOFs: their u_b solved, v_b = 0 until quasi_static_rates() (issue 38).
-  const Eigen::VectorXd& y = qs_.empty() ? y_in : quasi_static_state(y_in);
+  const Eigen::VectorXd& y = qs_.empty() ? y_in : quasi_static_state(y_in, a_g);
   const double* u = y.data();
   const double* v = u + n_;
   double* du = dy.data();
@@ -184,30 +187,83 @@ void RowDynamics::massless_rates(double* dv) {
   for (int k = 0; k < m; ++k) dv[massless_[k]] = vb_(k);
 }
 
-int RowDynamics::condense_stiff_roots(double rate_times_period, double t_min) {
-  if (massless_.empty() || !qs_.empty() || !(t_min > 0.0) || !std::isfinite(t_min)) return 0;
-  const double rate = rate_times_period / t_min;  // [1/s]
-  if (!std::isfinite(rate)) return 0;
-  std::vector<char> stiff(n_, 0);
-  for (int b : massless_) {
-    double c = 0.0, k = 0.0;
-    forces_.row_entries(b, 0, [&](int j, double cj, double kj) {
-      if (j == b) c = cj, k = kj;
-    });
-    stiff[b] = k >= rate * c;
-  }
-  std::vector<char> condensed(n_, 0);
-  for (std::size_t bi = 0; bi < row_.sway.size(); ++bi) {
+namespace {
+
+// Whether the slowest root of m x'' + c x' + k x = 0 is stiff against a period T [s]: its
+// condensation's relative error, 2 pi / (root T) for a real root (k / c without mass, the slow
+// root 2 k / (c + sqrt(c^2 - 4 m k)) when overdamped) and (2 pi / (root T))^2 for an oscillating
+// one (root sqrt(k / m), whose inertia the condensation leaves out), at most 2 pi / threshold.
+bool stiff_root(double m, double c, double k, double T, double threshold) {
+  const double disc = c * c - 4.0 * m * k;
+  if (m == 0.0) return k / c * T >= threshold;
+  if (disc > 0.0) return 2.0 * k / (c + std::sqrt(disc)) * T >= threshold;
+  const double x = std::sqrt(k / m) * T;
+  return x * x / (2.0 * M_PI) >= threshold;
+}
+
+}  // namespace
+
+// The shortest period of an oscillating mode (damping ratio below 1; step_period) of the row
+// with the DOFs marked in `drop` massless [s].
+double RowDynamics::period_without(const std::vector<char>& drop) const {
+  Eigen::MatrixXd M = row_.M;
+  for (int i = 0; i < n_; ++i)
+    if (drop[i]) M(i, i) = 0.0;
+  const ModalProperties m = modal_properties(M, row_.K, row_.C);
+  double t = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < m.periods.size(); ++i)
+    if (m.periods(i) > 0.0 && std::isfinite(m.periods(i)) && !(m.damping_ratios(i) >= 1.0))
+      t = std::min(t, m.periods(i));
+  return t;
+}
+
+double RowDynamics::condense_stiff_roots(double rate_times_period, double t_min) {
+  if (!qs_.empty() || !std::isfinite(rate_times_period)) return t_min;
+  const int nb = static_cast<int>(row_.sway.size());
+  std::vector<double> mass(n_, 0.0), damping(n_, 0.0), spring(n_, 0.0);  // per base DOF, SI
+  std::vector<char> base(n_, 0), candidate(nb, 0);
+  bool massive = false;
+  for (int bi = 0; bi < nb; ++bi) {
     bool all = true, any = false;
+    const double t1 = bi < static_cast<int>(row_.periods.size()) && row_.periods[bi].size() > 0
+                          ? row_.periods[bi](0)
+                          : t_min;
+    for (int d : {row_.sway[bi], row_.rot[bi]}) {
+      if (d < 0) continue;
+      double c = 0.0, k = 0.0;
+      forces_.row_entries(d, 0, [&](int j, double cj, double kj) {
+        if (j == d) c = cj, k = kj;
+      });
+      mass[d] = row_.inv_mass(d) == 0.0 ? 0.0 : 1.0 / row_.inv_mass(d);
+      damping[d] = c, spring[d] = k;
+      // (the condensed row's shortest period lies below the longest, t1: a cheap first test)
+      any = true;
+      all = all && stiff_root(mass[d], c, k, std::max(t1, t_min), rate_times_period);
+    }
+    candidate[bi] = any && all;
     for (int d : {row_.sway[bi], row_.rot[bi]})
-      if (d >= 0 && row_.inv_mass(d) == 0.0) any = true, all = all && stiff[d];
-    if (!(any && all)) continue;
-    for (int d : {row_.sway[bi], row_.rot[bi]})
-      if (d >= 0 && row_.inv_mass(d) == 0.0) condensed[d] = 1;
+      if (d >= 0 && candidate[bi]) base[d] = 1, massive = massive || row_.inv_mass(d) != 0.0;
   }
+  if (std::none_of(candidate.begin(), candidate.end(), [](char c) { return c != 0; })) return t_min;
+  // The periods the condensed row steps at: those of the row with its candidate bases massless.
+  const double t_cond = massive ? period_without(base) : t_min;
+  if (!(t_cond > 0.0) || !std::isfinite(t_cond)) return t_min;
+  std::vector<char> condensed(n_, 0);
+  bool any_mass = false;
+  for (int bi = 0; bi < nb; ++bi) {
+    bool all = candidate[bi] != 0;
+    for (int d : {row_.sway[bi], row_.rot[bi]})
+      if (d >= 0)
+        all = all && stiff_root(mass[d], damping[d], spring[d], t_cond, rate_times_period);
+    for (int d : {row_.sway[bi], row_.rot[bi]})
+      if (d >= 0 && all) condensed[d] = 1, any_mass = any_mass || row_.inv_mass(d) != 0.0;
+  }
+  for (int d = 0; d < n_; ++d)
+    if (condensed[d]) qs_.push_back(d);
+  if (qs_.empty()) return t_min;
   std::vector<int> first_order;
-  for (int b : massless_) (condensed[b] ? qs_ : first_order).push_back(b);
-  if (qs_.empty()) return 0;
+  for (int b : massless_)
+    if (!condensed[b]) first_order.push_back(b);
   massless_ = first_order;
   if (!massless_.empty()) {
     rb_.setZero(static_cast<int>(massless_.size()));
@@ -219,7 +275,7 @@ int RowDynamics::condense_stiff_roots(double rate_times_period, double t_min) {
   rq_.setZero(static_cast<int>(qs_.size()));
   vq_ = rq_;
   factor_quasi_static();
-  return static_cast<int>(qs_.size());
+  return any_mass ? period_without(condensed) : t_min;
 }
 
 // K_bb over the condensed DOFs (the tangent lines' for piecewise-linear storeys, the initial
@@ -238,13 +294,19 @@ void RowDynamics::factor_quasi_static() {
         Ca(k, j) = c;
     });
   qs_kinv_ = K.inverse();
+  qs_ground_.resize(m);  // m_b times the earthquake's influence on b [kg]
+  for (int k = 0; k < m; ++k) {
+    const int b = qs_[k];
+    qs_ground_(k) = row_.inv_mass(b) == 0.0 ? 0.0 : row_.influence(b) / row_.inv_mass(b);
+  }
   qs_qinv_ = (K - Ca * row_.inv_mass.asDiagonal() * Ca.transpose()).inverse();
 }
 
 // y with the condensed DOFs' displacements solving K_b u + C_ba v_a + off_b = 0 (the base rows
 // without C_bb v_b): one Newton step from y's (exact for linear and piecewise-linear storeys),
 // chord iterations on K_bb for other laws; their velocities 0 (set by quasi_static_rates).
-const Eigen::VectorXd& RowDynamics::quasi_static_state(const Eigen::VectorXd& y) {
+const Eigen::VectorXd& RowDynamics::quasi_static_state(const Eigen::VectorXd& y,
+                                                       const double* a_g) {
   yq_ = y;
   double* u = yq_.data();
   double* v = u + n_;
@@ -253,7 +315,8 @@ const Eigen::VectorXd& RowDynamics::quasi_static_state(const Eigen::VectorXd& y)
   const int m = static_cast<int>(qs_.size());
   for (int it = 0; it < (kind == 2 ? 50 : 1); ++it) {
     for (int k = 0; k < m; ++k)
-      rq_(k) = forces_.raw_force(qs_[k], u, v, kind, storey, u, layout_.storey_offset);
+      rq_(k) = forces_.raw_force(qs_[k], u, v, kind, storey, u, layout_.storey_offset) +
+               qs_ground_(k) * a_g[qs_[k]];
     vq_.noalias() = qs_kinv_ * rq_;
     double change = 0.0, size = 0.0;
     for (int k = 0; k < m; ++k) {
