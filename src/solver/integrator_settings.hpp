@@ -20,6 +20,12 @@ struct IntegratorSettings {
   /// system on the grid of h_max (linear_step.hpp; docs/integration.md, "Exact steps");
   /// false: Dormand-Prince throughout.
   bool exact_free = true;
+  /// A stiff first-order root (issue 38; docs/integration.md, "Stiff first-order roots"): a
+  /// building's massless base DOFs are condensed to their quasi-static limit when every one's
+  /// relaxation rate K_ii / C_ii [1/s] times the row's shortest oscillating period T_min [s]
+  /// reaches this (the base's relative error at most about 2 pi / this, 6e-4, the floors' that
+  /// times the base's share of their response); infinity: never [-].
+  double stiff_root = 1e4;
 };
 
 }  // namespace pound

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+
+#include "structure/building_on_base.hpp"
 
 namespace pound {
 
@@ -74,13 +77,14 @@ void RowDynamics::set_ground_layout() {
   layout_.size = next;
 }
 
-void RowDynamics::rhs(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy) {
-  contact_forces(y);
+void RowDynamics::rhs(double t, const Eigen::VectorXd& y_in, Eigen::VectorXd& dy) {
+  contact_forces(y_in);
   const double* a_g = ground_acc(t);
   dy.resize(layout_.size);
+  // Condensed base DOFs: their u_b solved, v_b = 0 until quasi_static_rates() (issue 38).
+  const Eigen::VectorXd& y = qs_.empty() ? y_in : quasi_static_state(y_in, a_g);
   const double* u = y.data();
   const double* v = u + n_;
-  const double* im = row_.inv_mass.data();
   double* du = dy.data();
   double* dv = du + n_;
   if (!massless_.empty()) v = massless_velocities(y);  // y's are stale there: see project()
@@ -92,19 +96,11 @@ void RowDynamics::rhs(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy) {
   else
     forces_.general(y, storey, layout_.storey_offset, a_g, dy.data(), v);
   if (!massless_.empty()) massless_rates(dv);
-  for (int i = 0; i < ns_; ++i) {
-    const double f = force_(i);
-    du[layout_.impulses + i] = f;
-    if (f == 0.0) continue;
-    const auto& site = row_.sites[i];  // w_k F on each DOF of a side (SitePoint)
-    for (int k = 0; k < site.left.count; ++k) {
-      const int d = site.left.dof[k];
-      dv[d] -= im[d] * (site.left.weight[k] * f);
-    }
-    for (int k = 0; k < site.right.count; ++k) {
-      const int d = site.right.dof[k];
-      dv[d] += im[d] * (site.right.weight[k] * f);
-    }
+  add_contact_forces(du, dv);
+  if (!qs_.empty()) {
+    double* vw = (v == veff_.data()) ? veff_.data() : yq_.data() + n_;
+    quasi_static_rates(a_g, vw, dy);
+    v = vw;
   }
   if (any_held_)
     for (int i = 0; i < n_; ++i)
@@ -132,10 +128,30 @@ void RowDynamics::capped_contact_forces(const Eigen::VectorXd& y) {
   }
 }
 
+// The impulses' rates and the contact forces of contact_force() on the sites' DOFs.
+void RowDynamics::add_contact_forces(double* du, double* dv) const {
+  const double* im = row_.inv_mass.data();
+  for (int i = 0; i < ns_; ++i) {
+    const double f = force_(i);
+    du[layout_.impulses + i] = f;
+    if (f == 0.0) continue;
+    const auto& site = row_.sites[i];  // w_k F on each DOF of a side (SitePoint)
+    for (int k = 0; k < site.left.count; ++k) {
+      const int d = site.left.dof[k];
+      dv[d] -= im[d] * (site.left.weight[k] * f);
+    }
+    for (int k = 0; k < site.right.count; ++k) {
+      const int d = site.right.dof[k];
+      dv[d] += im[d] * (site.right.weight[k] * f);
+    }
+  }
+}
+
 void RowDynamics::storey_changed(int) {
   if (affine_) forces_.set_lines(storey);
   if (forces_.tangent_damping()) forces_.set_tangent_damping(storey);
   if (!massless_.empty()) factor_massless();
+  if (!qs_.empty()) factor_quasi_static();
 }
 
 // Massless base DOFs (a flexible foundation without mass or rotary inertia; issue 29): their
@@ -184,6 +200,182 @@ void RowDynamics::massless_rates(double* dv) {
   }
   vb_.noalias() = massless_S_ * rb_;
   for (int k = 0; k < m; ++k) dv[massless_[k]] = vb_(k);
+}
+
+namespace {
+
+// Whether the slowest root of m x'' + c x' + k x = 0 is stiff against a period T [s]: its
+// condensation's relative error, 2 pi / (root T) for a real root (k / c without mass, the slow
+// root 2 k / (c + sqrt(c^2 - 4 m k)) when overdamped) and (2 pi / (root T))^2 for an oscillating
+// one (root sqrt(k / m), whose inertia the condensation leaves out), at most 2 pi / threshold.
+bool stiff_root(double m, double c, double k, double T, double threshold) {
+  const double disc = c * c - 4.0 * m * k;
+  if (m == 0.0) return k / c * T >= threshold;
+  if (disc > 0.0) return 2.0 * k / (c + std::sqrt(disc)) * T >= threshold;
+  const double x = std::sqrt(k / m) * T;
+  return x * x / (2.0 * M_PI) >= threshold;
+}
+
+}  // namespace
+
+// The shortest period of an oscillating mode (damping ratio below 1; step_period) of the row
+// with the DOFs marked in `drop` massless [s].
+double RowDynamics::period_without(const std::vector<char>& drop) const {
+  Eigen::MatrixXd M = row_.M;
+  for (int i = 0; i < n_; ++i)
+    if (drop[i]) M(i, i) = 0.0;
+  const ModalProperties m = modal_properties(M, row_.K, row_.C);
+  double t = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < m.periods.size(); ++i)
+    if (m.periods(i) > 0.0 && std::isfinite(m.periods(i)) && !(m.damping_ratios(i) >= 1.0))
+      t = std::min(t, m.periods(i));
+  return t;
+}
+
+double RowDynamics::condense_stiff_roots(double rate_times_period, double t_min) {
+  if (!qs_.empty() || !std::isfinite(rate_times_period)) return t_min;
+  const int nb = static_cast<int>(row_.sway.size());
+  std::vector<double> mass(n_, 0.0), damping(n_, 0.0), spring(n_, 0.0);  // per base DOF, SI
+  std::vector<char> base(n_, 0), candidate(nb, 0);
+  bool massive = false;
+  for (int bi = 0; bi < nb; ++bi) {
+    bool all = true, any = false;
+    const double t1 = bi < static_cast<int>(row_.periods.size()) && row_.periods[bi].size() > 0
+                          ? row_.periods[bi](0)
+                          : t_min;
+    for (int d : {row_.sway[bi], row_.rot[bi]}) {
+      if (d < 0) continue;
+      double c = 0.0, k = 0.0;
+      forces_.row_entries(d, 0, [&](int j, double cj, double kj) {
+        if (j == d) c = cj, k = kj;
+      });
+      mass[d] = row_.inv_mass(d) == 0.0 ? 0.0 : 1.0 / row_.inv_mass(d);
+      damping[d] = c, spring[d] = k;
+      // (the condensed row's shortest period lies below the longest, t1: a cheap first test)
+      any = true;
+      all = all && stiff_root(mass[d], c, k, std::max(t1, t_min), rate_times_period);
+    }
+    candidate[bi] = any && all;
+    for (int d : {row_.sway[bi], row_.rot[bi]})
+      if (d >= 0 && candidate[bi]) base[d] = 1, massive = massive || row_.inv_mass(d) != 0.0;
+  }
+  if (std::none_of(candidate.begin(), candidate.end(), [](char c) { return c != 0; })) return t_min;
+  // The periods the condensed row steps at: those of the row with its candidate bases massless.
+  const double t_cond = massive ? period_without(base) : t_min;
+  if (!(t_cond > 0.0) || !std::isfinite(t_cond)) return t_min;
+  std::vector<char> condensed(n_, 0);
+  bool any_mass = false;
+  for (int bi = 0; bi < nb; ++bi) {
+    bool all = candidate[bi] != 0;
+    for (int d : {row_.sway[bi], row_.rot[bi]})
+      if (d >= 0)
+        all = all && stiff_root(mass[d], damping[d], spring[d], t_cond, rate_times_period);
+    for (int d : {row_.sway[bi], row_.rot[bi]})
+      if (d >= 0 && all) condensed[d] = 1, any_mass = any_mass || row_.inv_mass(d) != 0.0;
+  }
+  for (int d = 0; d < n_; ++d)
+    if (condensed[d]) qs_.push_back(d);
+  if (qs_.empty()) return t_min;
+  std::vector<int> first_order;
+  for (int b : massless_)
+    if (!condensed[b]) first_order.push_back(b);
+  massless_ = first_order;
+  if (!massless_.empty()) {
+    rb_.setZero(static_cast<int>(massless_.size()));
+    vb_ = rb_;
+    factor_massless();
+  }
+  qs_mark_ = condensed;
+  yq_.setZero(layout_.size);
+  rq_.setZero(static_cast<int>(qs_.size()));
+  vq_ = rq_;
+  factor_quasi_static();
+  return any_mass ? period_without(condensed) : t_min;
+}
+
+// K_bb over the condensed DOFs (the tangent lines' for piecewise-linear storeys, the initial
+// stiffness otherwise), and Q = K_bb - C_ba M_a^-1 C_ab (C symmetric), for v_b.
+void RowDynamics::factor_quasi_static() {
+  const int m = static_cast<int>(qs_.size());
+  const int kind = affine_ ? 1 : 0;
+  std::vector<int> slot(n_, -1);
+  for (int k = 0; k < m; ++k) slot[qs_[k]] = k;
+  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(m, m), Ca = Eigen::MatrixXd::Zero(m, n_);
+  for (int k = 0; k < m; ++k)
+    forces_.row_entries(qs_[k], kind, [&](int j, double c, double kj) {
+      if (slot[j] >= 0)
+        K(k, slot[j]) = kj;
+      else if (row_.inv_mass(j) != 0.0)
+        Ca(k, j) = c;
+    });
+  qs_kinv_ = K.inverse();
+  qs_ground_.resize(m);  // m_b times the earthquake's influence on b [kg]
+  for (int k = 0; k < m; ++k) {
+    const int b = qs_[k];
+    qs_ground_(k) = row_.inv_mass(b) == 0.0 ? 0.0 : row_.influence(b) / row_.inv_mass(b);
+  }
+  qs_qinv_ = (K - Ca * row_.inv_mass.asDiagonal() * Ca.transpose()).inverse();
+}
+
+// y with the condensed DOFs' displacements solving K_b u + C_ba v_a + off_b = 0 (the base rows
+// without C_bb v_b): one Newton step from y's (exact for linear and piecewise-linear storeys),
+// chord iterations on K_bb for other laws; their velocities 0 (set by quasi_static_rates).
+const Eigen::VectorXd& RowDynamics::quasi_static_state(const Eigen::VectorXd& y,
+                                                       const double* a_g) {
+  yq_ = y;
+  double* u = yq_.data();
+  double* v = u + n_;
+  for (int b : qs_) v[b] = 0.0;
+  const int kind = linear_ ? 0 : (affine_ ? 1 : 2);
+  const int m = static_cast<int>(qs_.size());
+  for (int it = 0; it < (kind == 2 ? 50 : 1); ++it) {
+    for (int k = 0; k < m; ++k)
+      rq_(k) = forces_.raw_force(qs_[k], u, v, kind, storey, u, layout_.storey_offset) +
+               qs_ground_(k) * a_g[qs_[k]];
+    vq_.noalias() = qs_kinv_ * rq_;
+    double change = 0.0, size = 0.0;
+    for (int k = 0; k < m; ++k) {
+      u[qs_[k]] -= vq_(k);
+      change = std::max(change, std::fabs(vq_(k)));
+      size = std::max(size, std::fabs(u[qs_[k]]));
+    }
+    if (change <= 1e-14 * size) break;
+  }
+  return yq_;
+}
+
+// After the other DOFs' accelerations dv (with v_b = 0): v_b from the constraint's derivative,
+// (K_bb - C_ba M_a^-1 C_ab) v_b = -(K_ba v_a + C_ba dv_a), into v and y's copy, and dv_a
+// corrected by -M_a^-1 C_ab v_b (linear and piecewise-linear storeys: exact; other laws: their
+// forces evaluated again with v_b). The condensed DOFs' rates: du_b = v_b, dv_b = 0.
+void RowDynamics::quasi_static_rates(const double* a_g, double* v, Eigen::VectorXd& dy) {
+  double* du = dy.data();
+  double* dv = du + n_;
+  const int m = static_cast<int>(qs_.size());
+  const int kind = affine_ ? 1 : 0;
+  const std::vector<char>& is_qs = qs_mark_;
+  for (int k = 0; k < m; ++k) {
+    double r = 0.0;
+    forces_.row_entries(qs_[k], kind, [&](int j, double c, double kj) {
+      if (is_qs[j]) return;
+      r += kj * v[j];
+      if (row_.inv_mass(j) != 0.0) r += c * dv[j];
+    });
+    rq_(k) = -r;
+  }
+  vq_.noalias() = qs_qinv_ * rq_;
+  for (int k = 0; k < m; ++k) v[qs_[k]] = yq_(n_ + qs_[k]) = vq_(k);
+  if (linear_ || affine_) {
+    for (int k = 0; k < m; ++k)
+      forces_.row_entries(qs_[k], kind, [&](int j, double c, double) {
+        if (row_.inv_mass(j) != 0.0) dv[j] -= row_.inv_mass(j) * c * vq_(k);
+      });
+  } else {
+    forces_.general(yq_, storey, layout_.storey_offset, a_g, du, v);
+    if (!massless_.empty()) massless_rates(dv);
+    add_contact_forces(du, dv);
+  }
+  for (int k = 0; k < m; ++k) du[qs_[k]] = vq_(k), dv[qs_[k]] = 0.0;
 }
 
 void RowDynamics::damping_matrix(Eigen::MatrixXd& C) const {

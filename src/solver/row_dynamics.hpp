@@ -162,8 +162,24 @@ class RowDynamics {
   /// that drifts' rates, peaks and energies read the right ones. No-op without such DOFs.
   void project(Eigen::VectorXd& y, const Eigen::VectorXd& dy) const {
     for (int b : massless_) y(n_ + b) = dy(b);
+    for (int b : qs_) y(b) = yq_(b), y(n_ + b) = yq_(n_ + b);  // rhs()'s last state, y's
   }
   const std::vector<int>& massless() const { return massless_; }
+  /// A stiff root of a foundation (issue 38; docs/ssi.md, docs/integration.md): the base DOFs
+  /// of each building whose slowest roots (alone on their spring, dashpot and mass: K_ii / C_ii
+  /// without mass, sqrt(K_ii / M_ii) underdamped, the slow real root overdamped) [1/s] all reach
+  /// `rate_times_period` / T (T [s] the shortest oscillating period of the row with those bases
+  /// massless; t_min, the row's, when they are already) are condensed to their quasi-static
+  /// limit: their own inertia and damping forces M_bb a_b + C_bb v_b are dropped from their rows,
+  /// so that K_b u + C_ba v_a + off_b + M_bb ag_b = 0 gives u_b from the others (a singular
+  /// perturbation, Kokotovic, Khalil & O'Reilly 1986, ch. 1; relative error O(omega / root),
+  /// omega the row's frequencies), and its time derivative K_bb v_b + K_ba v_a + C_ba a_a = 0
+  /// (the ground term's derivative left out) gives v_b. They leave massless(). rhs() then solves
+  /// them at every state (y's entries there are only the starting guess; project() writes them
+  /// back); their displacements' rates are v_b and their velocities' 0. Returns the shortest
+  /// oscillating period of the row so condensed [s] (t_min unless a base with mass was).
+  double condense_stiff_roots(double rate_times_period, double t_min);
+  const std::vector<int>& quasi_static() const { return qs_; }
   const Eigen::VectorXd& inv_mass() const { return row_.inv_mass; }
   /// S = C_bb^-1 over the massless DOFs (their order in massless()) [m/(N s)].
   const Eigen::MatrixXd& massless_inverse() const { return massless_S_; }
@@ -200,6 +216,11 @@ class RowDynamics {
   void massless_rates(double* dv);
   void set_ground_layout();
   void capped_contact_forces(const Eigen::VectorXd& y);
+  void add_contact_forces(double* du, double* dv) const;
+  void factor_quasi_static();
+  const Eigen::VectorXd& quasi_static_state(const Eigen::VectorXd& y, const double* a_g);
+  double period_without(const std::vector<char>& drop) const;
+  void quasi_static_rates(const double* a_g, double* v, Eigen::VectorXd& dy);
 
   const AssembledRow& row_;
   const std::vector<RowStorey>& storeys_;
@@ -215,6 +236,12 @@ class RowDynamics {
   std::vector<int> massless_;                     // DOFs without mass (a flexible foundation's)
   Eigen::MatrixXd massless_S_;                    // C_bb^-1 over them
   Eigen::VectorXd veff_, rb_, vb_;  // scratch: velocities with theirs, their forces, rates
+  std::vector<int> qs_;             // massless DOFs condensed quasi-statically (issue 38)
+  std::vector<char> qs_mark_;       // per DOF: one of them
+  Eigen::MatrixXd qs_kinv_;         // K_bb^-1 over them [m/N]
+  Eigen::MatrixXd qs_qinv_;         // (K_bb - C_ba M_a^-1 C_ab)^-1 over them [m/N]
+  Eigen::VectorXd yq_, rq_, vq_;    // y with their u_b, v_b; their residual forces; rates
+  Eigen::VectorXd qs_ground_;       // their masses times the earthquake's influence [kg]
   std::vector<char> held_;          // per DOF: held still (hold)
   bool any_held_ = false;
   Eigen::VectorXd force_;            // contact force per site [N]

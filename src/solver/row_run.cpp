@@ -87,15 +87,21 @@ double RowRun::error_norm(const Eigen::VectorXd& y0, const Eigen::VectorXd& y1,
 // sample.
 void RowRun::set_step_limits() {
   // T_min of the modes that oscillate (an overdamped raft's mode needs no T / 20 steps: its
-  // roots are real; structure/building_row.hpp step_period).
-  const double tmin_period = step_period(row_);
+  // roots are real; structure/building_row.hpp step_period). A base whose roots are faster than
+  // any step could follow is condensed to its quasi-static limit (issue 38;
+  // RowDynamics::condense_stiff_roots; the exact steps' propagators do not know it:
+  // Dormand-Prince steps the row, at the buildings' own rates).
+  double tmin_period = step_period(row_);
+  if (std::any_of(row_.sway.begin(), row_.sway.end(), [](int d) { return d >= 0; }) ||
+      std::any_of(row_.rot.begin(), row_.rot.end(), [](int d) { return d >= 0; }))
+    tmin_period = dyn_.condense_stiff_roots(s_.stiff_root, tmin_period);
   h_max_ = s_.h_max > 0 ? s_.h_max : tmin_period / 20.0;
   rec_dt_ = p_->ground ? p_->ground->dt() : 0.0;
   if (s_.h_max <= 0 && rec_dt_ > 0) h_max_ = std::min(h_max_, rec_dt_);
   const bool h_max_known = std::isfinite(h_max_);
   if (!h_max_known) h_max_ = std::max(p_->t_end, 1e-6);
   if (s_.exact_free && !fixed_ && !track_ && h_max_known && (dyn_.linear() || dyn_.affine()) &&
-      dyn_.layout().storey_states == 0)
+      dyn_.layout().storey_states == 0 && dyn_.quasi_static().empty())
     exact_.enable(row_, h_max_, rec_dt_, p_->exact_cache);
   if (fixed_ && !(s_.dt > 0)) throw InputError("fixed-step integration needs dt > 0");
   h_ = fixed_ ? s_.dt : std::min(h_max_, 1e-4);
