@@ -10,8 +10,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 samples=()
 if [ "${1:-}" = "--samples" ]; then samples=(--samples "$2"); fi
-# Each stage prints its wall time; the build makes the program alone (the tests, the Python
-# module and the benchmarks are built by scripts/test.sh, which runs them).
+# Each stage prints its wall time; the build makes the program and the Python module the
+# figures use (the tests and the benchmarks are built by scripts/test.sh, which runs them).
 t_stage=$(date +%s)
 stage_done() {
   local now
@@ -23,8 +23,8 @@ bash scripts/install-deps.sh
 stage_done "packages"
 cmake --preset release >/dev/null
 stage_done "configure"
-cmake --build --preset release -j "$(nproc)" --target pound
-stage_done "build (pound)"
+cmake --build --preset release -j "$(nproc)" --target pound _engine
+stage_done "build (pound and its Python module)"
 out=results/default
 mkdir -p "$out"
 mpi=(mpirun -np 2)

@@ -57,6 +57,9 @@ py::dict histories_of(const Outcome& o) {
   h["site_hit_building"] = to_int_array(o.layout.site_hit_building);
   h["site_hit"] = to_int_array(o.layout.site_hit);
   h["site_xi"] = to_array(o.layout.site_xi);
+  h["site_peak_column_shear"] = to_array(o.layout.site_peak_column_shear);
+  h["site_peak_column_shear_free"] = to_array(o.layout.site_peak_column_shear_free);
+  h["site_crush"] = to_array(o.layout.site_crush);
   motion["time"] = to_array(o.motion_time);
   motion["acceleration"] = to_array(o.motion_accel);
   h["motion"] = motion;

@@ -70,10 +70,10 @@ RecordLayout::RecordLayout(const CampaignStudy& st)
       levels(st.max_levels()) {}
 
 std::size_t RecordLayout::values() const {
-  // im, scale, parameters, the floor arrays, the building arrays, 3 contact arrays, the pairs'
+  // im, scale, parameters, the floor arrays, the building arrays, 5 contact arrays, the pairs'
   // relative ground displacement, wall seconds, rank
   return 2 + parameters + floor_array_fields().size() * buildings * floors +
-         building_array_fields().size() * buildings + 3 * pairs * levels + pairs + 2;
+         building_array_fields().size() * buildings + 5 * pairs * levels + pairs + 2;
 }
 
 std::size_t RecordLayout::record_bytes() const {
@@ -100,7 +100,8 @@ std::vector<char> encode_record(const SampleOutcome& o, const RecordLayout& l) {
     for (double x : o.*a.member) put(b, x);
   for (const auto& a : building_array_fields())
     for (double x : o.*a.member) put(b, x);
-  for (const auto* v : {&o.peak_force, &o.impacts, &o.approach_free})
+  for (const auto* v :
+       {&o.peak_force, &o.impacts, &o.approach_free, &o.peak_column_shear, &o.crush})
     for (double x : *v) put(b, x);
   for (double x : o.ground_relative) put(b, x);
   put(b, o.wall_seconds);
@@ -143,7 +144,7 @@ bool decode_record(const char* bytes, const RecordLayout& l, SampleOutcome& o) {
     v.resize(static_cast<std::size_t>(l.buildings));
     for (auto& x : v) x = get<double>(p);
   }
-  for (auto* v : {&o.peak_force, &o.impacts, &o.approach_free}) {
+  for (auto* v : {&o.peak_force, &o.impacts, &o.approach_free, &o.peak_column_shear, &o.crush}) {
     v->resize(pl);
     for (auto& x : *v) x = get<double>(p);
   }

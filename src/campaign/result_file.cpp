@@ -124,6 +124,9 @@ void write_result_file(const std::string& path, const CampaignStudy& st,
     RowDataset force(fid, "/response/peak_force", n, np, nl, H5T_NATIVE_DOUBLE, "N");
     RowDataset impacts(fid, "/response/impacts", n, np, nl, H5T_NATIVE_DOUBLE, "-");
     RowDataset approach(fid, "/response/approach_free", n, np, nl, H5T_NATIVE_DOUBLE, "m");
+    RowDataset column_shear(fid, "/response/peak_column_shear", n, np, nl, H5T_NATIVE_DOUBLE,
+                            "N");
+    RowDataset crush(fid, "/response/crush", n, np, nl, H5T_NATIVE_DOUBLE, "m");
     RowDataset ground_relative(fid, "/response/ground_relative", n, np, 0, H5T_NATIVE_DOUBLE, "m");
     RowDataset rank(fid, "/run/rank", n, 0, 0, H5T_NATIVE_INT);
     RowDataset wall(fid, "/run/wall_seconds", n, 0, 0, H5T_NATIVE_DOUBLE, "s");
@@ -159,6 +162,8 @@ void write_result_file(const std::string& path, const CampaignStudy& st,
       force.write(r, o.peak_force.data());
       impacts.write(r, o.impacts.data());
       approach.write(r, o.approach_free.data());
+      column_shear.write(r, o.peak_column_shear.data());
+      crush.write(r, o.crush.data());
       ground_relative.write(r, o.ground_relative.data());
       rank.write(r, &o.rank);
       wall.write(r, &o.wall_seconds);

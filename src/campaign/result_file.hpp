@@ -33,6 +33,12 @@
 //                                      peak of u_L - u_R of the facing floors in the free run:
 //                                      the smallest gap at that level the motion would not
 //                                      close (a pair pounds at gap g when any level exceeds g)
+//   /response/peak_column_shear [N, pairs, levels]                           N
+//                                      the struck columns' peak shear demand in the pounding
+//                                      run at a slab-to-column site (NaN at a slab site; issue 36)
+//   /response/crush [N, pairs, levels]                                       m
+//                                      the face's permanent indentation at the end of the
+//                                      pounding run (contact.force_cap; 0 without)
 //   (NaN where a building has fewer floors, a pair fewer levels, or the sample failed)
 //   /run/rank [N], /run/wall_seconds [N]   bookkeeping that differs between runs
 // Root attributes: study (resolved text), engine_version, git_revision, seed, samples,

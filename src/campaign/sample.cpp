@@ -96,6 +96,8 @@ SampleOutcome SampleRunner::run(const SampleDraw& d) {
   out.peak_force.assign(static_cast<std::size_t>(np * nl), kNaN);
   out.impacts.assign(static_cast<std::size_t>(np * nl), kNaN);
   out.approach_free.assign(static_cast<std::size_t>(np * nl), kNaN);
+  out.peak_column_shear.assign(static_cast<std::size_t>(np * nl), kNaN);
+  out.crush.assign(static_cast<std::size_t>(np * nl), kNaN);
   out.ground_relative.assign(static_cast<std::size_t>(np), kNaN);
   try {
     // The sample's building row, contact and Sears model.
@@ -155,6 +157,8 @@ SampleOutcome SampleRunner::run(const SampleDraw& d) {
       out.peak_force[i] = s.peak_force;
       out.impacts[i] = s.impacts;
       out.approach_free[i] = s.approach_free;
+      out.peak_column_shear[i] = s.column_shear_pounding;
+      out.crush[i] = s.crush;
       if (!std::isfinite(s.approach_free))
         throw NumericalError("non-finite approach of the free run");
     }
@@ -170,7 +174,8 @@ SampleOutcome SampleRunner::run(const SampleDraw& d) {
     for (const auto& a : floor_array_fields()) (out.*a.member).assign((out.*a.member).size(), kNaN);
     for (const auto& a : building_array_fields())
       (out.*a.member).assign((out.*a.member).size(), kNaN);
-    for (auto* v : {&out.peak_force, &out.impacts, &out.approach_free, &out.ground_relative})
+    for (auto* v : {&out.peak_force, &out.impacts, &out.approach_free, &out.peak_column_shear,
+                    &out.crush, &out.ground_relative})
       v->assign(v->size(), kNaN);
   }
   out.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -68,6 +68,10 @@ struct SampleOutcome {
   /// Peak relative approach u_L - u_R of the facing floors in the free run [m]
   /// (SiteResponse::approach_free): the smallest gap at that level this motion would not close.
   std::vector<double> approach_free;
+  /// Per site (issue 36): the peak shear demand on the struck columns in the pounding run [N]
+  /// (SiteResponse::column_shear_pounding; NaN at slab sites) and the face's permanent
+  /// indentation at its end [m] (SiteResponse::crush; 0 without contact.force_cap).
+  std::vector<double> peak_column_shear, crush;
   /// Per pair: the peak relative ground displacement of its two buildings over the run [m]
   /// (RowSimulation::ground_relative; 0 on one motion).
   std::vector<double> ground_relative;

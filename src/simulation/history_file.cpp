@@ -43,6 +43,11 @@ void write_histories(const std::string& path, const BuildingRow& row, const Grou
     h5::write(f.id(), "/row/site_hit_building", l.site_hit_building);
     h5::write(f.id(), "/row/site_hit", l.site_hit);  // floor (slab) or storey (column)
     h5::write(f.id(), "/row/site_xi", l.site_xi, l.site_xi.size(), 0, "-");
+    const std::size_t ns = l.site_xi.size();
+    h5::write(f.id(), "/row/site_peak_column_shear", l.site_peak_column_shear, ns, 0, "N");
+    h5::write(f.id(), "/row/site_peak_column_shear_free", l.site_peak_column_shear_free, ns, 0,
+              "N");
+    h5::write(f.id(), "/row/site_crush", l.site_crush, ns, 0, "m");
     write_run(f.id(), "/pounding", sim.pounding.history, l);
     write_run(f.id(), "/free", sim.free.history, l);
     std::vector<double> t(motion.accel.size());

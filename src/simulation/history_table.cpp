@@ -26,6 +26,9 @@ HistoryLayout history_layout(const BuildingRow& row, const RowSimulation& sim) {
     l.site_hit_building.push_back(s.pair + 1 - g.slab_side + 1);
     l.site_hit.push_back(g.hit + 1);
     l.site_xi.push_back(g.xi);
+    l.site_peak_column_shear.push_back(s.column_shear_pounding);
+    l.site_peak_column_shear_free.push_back(s.column_shear_free);
+    l.site_crush.push_back(s.crush);
   }
   return l;
 }

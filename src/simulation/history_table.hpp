@@ -25,6 +25,9 @@ struct HistoryLayout {
   // the struck floor (slab sites) or storey (column sites), 1-based; xi [-].
   std::vector<int> site_kind, site_slab_building, site_slab_floor, site_hit_building, site_hit;
   std::vector<double> site_xi;
+  /// Per site: the struck columns' peak shear demand with and without pounding [N] (NaN at slab
+  /// sites) and the face's permanent indentation at the end of the pounding run [m] (issue 36).
+  std::vector<double> site_peak_column_shear, site_peak_column_shear_free, site_crush;
   /// The assembled row's storey of each DOF (for the drifts; not written).
   std::vector<RowStorey> storeys;
   /// Per building the DOF of its base's sway and rotation, -1 on a fixed base (not written).

@@ -79,6 +79,8 @@ SampleOutcome outcome(const CampaignStudy& st, long id) {
   o.peak_force.assign(pl, 1000.0 * id);
   o.impacts.assign(pl, 3.0);
   o.approach_free.assign(pl, 0.0125 + 0.001 * id);
+  o.peak_column_shear.assign(pl, std::nan(""));  // a slab site
+  o.crush.assign(pl, 1e-4 * id);
   o.ground_relative.assign(1, 0.0025 * id);  // one pair
   return o;
 }
@@ -87,10 +89,11 @@ TEST(Journal, RecordsRoundTripAndATornTailIsDropped) {
   const CampaignStudy st = tiny_study();
   const RecordLayout layout(st);
   // im, scale, e, 12 per-floor arrays of 2 x 2, 6 per-building arrays of 2, peak force,
-  // impacts and approach of 1 x 1, the relative ground displacement of 1 pair, wall, rank.
+  // impacts, approach, column shear and crush of 1 x 1, the relative ground displacement of 1
+  // pair, wall, rank.
   EXPECT_EQ(floor_array_fields().size(), 12u);
   EXPECT_EQ(building_array_fields().size(), 6u);
-  EXPECT_EQ(layout.values(), 2u + 1u + 12u * 2u * 2u + 6u * 2u + 3u * 1u * 1u + 1u + 2u);
+  EXPECT_EQ(layout.values(), 2u + 1u + 12u * 2u * 2u + 6u * 2u + 5u * 1u * 1u + 1u + 2u);
   const std::string path = test::process_scratch_dir() / "journal";
   {
     JournalWriter w(path, st, false);
@@ -112,6 +115,8 @@ TEST(Journal, RecordsRoundTripAndATornTailIsDropped) {
   EXPECT_EQ(got[1].peak_force[0], 1000.0);
   EXPECT_EQ(got[2].approach_free[0], 0.0125 + 0.002);
   EXPECT_EQ(got[2].ground_relative[0], 0.0025 * 2);
+  EXPECT_EQ(got[2].crush[0], 1e-4 * 2);
+  EXPECT_TRUE(std::isnan(got[2].peak_column_shear[0]));
   EXPECT_TRUE(std::isnan(got[1].disp_pounding[1]));
   // Every per-floor array comes back bit for bit (NaN, -0 and denormals included).
   for (long id : {0L, 1L, 2L}) {

@@ -21,7 +21,7 @@
 
 namespace pound::test {
 
-/// The small study of the campaign tests: an SDOF pair, 632 journal bytes a sample.
+/// The small study of the campaign tests: an SDOF pair, 648 journal bytes a sample.
 inline const std::string kSmokeStudy =
     std::string(POUND_SOURCE_DIR) + "/studies/campaign-smoke.ini";
 
