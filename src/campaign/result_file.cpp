@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <cstdio>
+#include <iterator>
+#include <memory>
 #include <vector>
 
 #include "campaign/amplification_file.hpp"
@@ -91,6 +93,24 @@ class RowDataset {
 
 }  // namespace
 
+namespace {
+
+// The per-site arrays [samples, pairs, levels] of a sample's outcome (result_file.hpp).
+struct SiteArray {
+  const char* name;  // under /response
+  const char* unit;
+  std::vector<double> SampleOutcome::*member;
+};
+const SiteArray kSiteArrays[] = {
+    {"peak_force", "N", &SampleOutcome::peak_force},
+    {"impacts", "-", &SampleOutcome::impacts},
+    {"approach_free", "m", &SampleOutcome::approach_free},
+    {"peak_column_shear", "N", &SampleOutcome::peak_column_shear},
+    {"crush", "m", &SampleOutcome::crush},
+};
+
+}  // namespace
+
 void write_result_file(const std::string& path, const CampaignStudy& st,
                        const std::string& journal_path, const RunInfo& info) {
   // Rows: the samples of this run's range, sample id = range_lo + row.
@@ -121,12 +141,10 @@ void write_result_file(const std::string& path, const CampaignStudy& st,
     for (const auto& a : bfields)
       per_building.push_back(std::make_unique<RowDataset>(fid, std::string("/response/") + a.name,
                                                           n, nb, 0, H5T_NATIVE_DOUBLE, a.unit));
-    RowDataset force(fid, "/response/peak_force", n, np, nl, H5T_NATIVE_DOUBLE, "N");
-    RowDataset impacts(fid, "/response/impacts", n, np, nl, H5T_NATIVE_DOUBLE, "-");
-    RowDataset approach(fid, "/response/approach_free", n, np, nl, H5T_NATIVE_DOUBLE, "m");
-    RowDataset column_shear(fid, "/response/peak_column_shear", n, np, nl, H5T_NATIVE_DOUBLE,
-                            "N");
-    RowDataset crush(fid, "/response/crush", n, np, nl, H5T_NATIVE_DOUBLE, "m");
+    std::vector<std::unique_ptr<RowDataset>> per_site;
+    for (const SiteArray& a : kSiteArrays)
+      per_site.push_back(std::make_unique<RowDataset>(fid, std::string("/response/") + a.name, n,
+                                                      np, nl, H5T_NATIVE_DOUBLE, a.unit));
     RowDataset ground_relative(fid, "/response/ground_relative", n, np, 0, H5T_NATIVE_DOUBLE, "m");
     RowDataset rank(fid, "/run/rank", n, 0, 0, H5T_NATIVE_INT);
     RowDataset wall(fid, "/run/wall_seconds", n, 0, 0, H5T_NATIVE_DOUBLE, "s");
@@ -159,11 +177,8 @@ void write_result_file(const std::string& path, const CampaignStudy& st,
         floors[i]->write(r, (o.*fields[i].member).data());
       for (std::size_t i = 0; i < bfields.size(); ++i)
         per_building[i]->write(r, (o.*bfields[i].member).data());
-      force.write(r, o.peak_force.data());
-      impacts.write(r, o.impacts.data());
-      approach.write(r, o.approach_free.data());
-      column_shear.write(r, o.peak_column_shear.data());
-      crush.write(r, o.crush.data());
+      for (std::size_t i = 0; i < std::size(kSiteArrays); ++i)
+        per_site[i]->write(r, (o.*kSiteArrays[i].member).data());
       ground_relative.write(r, o.ground_relative.data());
       rank.write(r, &o.rank);
       wall.write(r, &o.wall_seconds);

@@ -101,6 +101,8 @@ SampleOutcome canned(const CampaignStudy& st, long id) {
   o.peak_force.assign(pl, 1.0);
   o.impacts.assign(pl, 1.0);
   o.approach_free.assign(pl, 0.0);
+  o.peak_column_shear.assign(pl, 0.0);
+  o.crush.assign(pl, 0.0);
   o.ground_relative.assign(st.pairs(), 0.0);
   return o;
 }
