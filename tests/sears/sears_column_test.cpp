@@ -25,19 +25,7 @@
 namespace pound::sears {
 namespace {
 
-// Left: 2 storeys of 3 m (1e5 kg floors, 4e7 N/m storeys); right: 2 of 3.5 m (0.8e5 kg,
-// 8e7 N/m), both on fixed bases. Sites by elevation: L's floor 1 (3 m) on R's storey 1 at
-// xi = 6/7 (its lower end is R's base: the ground takes the share 1 - s), R's floor 1 (3.5 m)
-// on L's storey 2 at xi = 1/6, L's floor 2 (6 m) on R's storey 2 at xi = 5/7.
-BuildingRow offset_pair(double gap, double damping) {
-  BuildingRow row;
-  Building l = test::uniform_building(2, 1.0e5, 4.0e7, damping);
-  Building r = test::uniform_building(2, 0.8e5, 8.0e7, damping);
-  r.storey_heights.assign(2, 3.5);
-  row.buildings = {l, r};
-  row.gaps = {{gap, gap, gap}};
-  return row;
-}
+using test::offset_pair;  // support/buildings.hpp
 
 // The sites of offset_pair as the test writes them: each side's (DOF, weight) list, with the
 // shear building's sway shape s = 3 xi^2 - 2 xi^3 and k_col = phi k_j / (4 xi^3 (1 - xi)^3)
@@ -257,13 +245,7 @@ TEST(SearsColumn, StiffShortBarsGiveTheLumpedColumnSite) {
   // pulse with 2 mm gaps: the same impacts, peak floor displacements within 2e-4 and peak forces
   // within 5e-3 (measured: 4e-5 and 2.5e-3; the bars' compliance and the two integrators'
   // errors, Newmark at the fine step against the lumped solver's adaptive one).
-  GroundMotion g;
-  g.name = "pulse";
-  g.dt = 0.005;
-  for (int i = 0; i <= 600; ++i) {
-    const double t = i * g.dt;
-    g.accel.push_back(t < 0.5 ? 4.0 * std::sin(2 * M_PI * t / 0.5) : 0.0);
-  }
+  const GroundMotion g = test::sine_pulse();
   const BuildingRow row = offset_pair(0.002, 0.0);
   SearsRowModel model;
   model.slabs = {{1.0, 30e9, 2500.0, 0.2}, {std::sqrt(0.8), 30e9, 2500.0, 0.2}};

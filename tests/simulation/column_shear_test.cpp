@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "../support/buildings.hpp"
+#include "../support/ground_motions.hpp"
 #include "simulation/simulate_row.hpp"
 #include "structure/building_row.hpp"
 
@@ -26,33 +27,17 @@ TEST(ColumnShear, TheDemandAddsTheImpactLoadToTheSwayShear) {
   EXPECT_DOUBLE_EQ(column_shear_demand(s, -2e5, 0.0), 1e5);  // no contact: |V_sway|
 }
 
-GroundMotion pulse() {  // one cycle of a 0.5 s sine, 4 m/s^2, then rest until 3 s
-  GroundMotion g;
-  g.name = "pulse";
-  g.dt = 0.005;
-  for (int i = 0; i <= 600; ++i) {
-    const double t = i * g.dt;
-    g.accel.push_back(t < 0.5 ? 4.0 * std::sin(2 * M_PI * t / 0.5) : 0.0);
-  }
-  return g;
-}
-
 TEST(ColumnShear, TheFreeRunCarriesTheSwayShearAndTheRatiosFollowTheStrength) {
   // Left: 2 storeys of 3 m; right: 2 of 3.5 m (sites: L floor 1 on R storey 1, R floor 1 on L
   // storey 2, L floor 2 on R storey 2).
-  BuildingRow row;
-  Building l = test::uniform_building(2, 1.0e5, 4.0e7, 0.05);
-  Building r = test::uniform_building(2, 0.8e5, 8.0e7, 0.05);
-  r.storey_heights.assign(2, 3.5);
-  r.face_column_share = 0.25;
-  r.column_shear_strength = {4e5, 3e5};
-  row.buildings = {l, r};
-  row.gaps = {{0.002, 0.002, 0.002}};
+  BuildingRow row = test::offset_pair(0.002, 0.05);
+  row.buildings[1].face_column_share = 0.25;
+  row.buildings[1].column_shear_strength = {4e5, 3e5};
   ContactSpec spec;
   spec.model = "hc-linear";
   spec.params.k = 1e9;
   spec.params.e = 0.6;
-  const RowSimulation s = simulate_row(row, pulse(), spec, IntegratorSettings{});
+  const RowSimulation s = simulate_row(row, test::sine_pulse(), spec, IntegratorSettings{});
   ASSERT_EQ(s.sites.size(), 3u);
   // Site 0 strikes R's storey 1: without contact its columns carry phi k d of the storey's
   // drift, sampled at the steps' ends, so at most phi k times the storey's peak drift and

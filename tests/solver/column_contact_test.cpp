@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "../support/buildings.hpp"
+#include "../support/ground_motions.hpp"
 #include "contact/registry.hpp"
 #include "simulation/contact_spec.hpp"
 #include "simulation/simulate_row.hpp"
@@ -17,18 +18,7 @@
 namespace pound {
 namespace {
 
-// Left: 2 storeys of 3 m; right: 2 of 3.5 m. Sites (by elevation): L's floor 1 (3 m) on R's
-// storey 1 at xi = 6/7, R's floor 1 (3.5 m) on L's storey 2 at xi = 1/6, L's floor 2 (6 m) on
-// R's storey 2 at xi = 5/7; R's roof (7 m) stands above L's.
-BuildingRow offset_pair(double gap, double xi_damping) {
-  BuildingRow row;
-  Building l = test::uniform_building(2, 1.0e5, 4.0e7, xi_damping);
-  Building r = test::uniform_building(2, 0.8e5, 8.0e7, xi_damping);
-  r.storey_heights.assign(2, 3.5);
-  row.buildings = {l, r};
-  row.gaps = {{gap, gap, gap}};
-  return row;
-}
+using test::offset_pair;  // support/buildings.hpp
 
 TEST(ColumnContact, ASiteKeepsTheMomentumAndLoadsTheFloorsByTheReactions) {
   const BuildingRow row = offset_pair(0.0, 0.05);
@@ -133,13 +123,7 @@ Reference integrate(const GroundMotion& g, double gap, double k, double t_end, d
 }
 
 TEST(ColumnContact, AnOffsetRowAgreesWithAnIndependentIntegration) {
-  GroundMotion g;  // one cycle of a 0.5 s sine, 4 m/s^2, then rest until 3 s
-  g.name = "pulse";
-  g.dt = 0.005;
-  for (int i = 0; i <= 600; ++i) {
-    const double t = i * g.dt;
-    g.accel.push_back(t < 0.5 ? 4.0 * std::sin(2 * M_PI * t / 0.5) : 0.0);
-  }
+  const GroundMotion g = test::sine_pulse();  // one cycle of a 0.5 s sine, then rest
   const double gap = 0.002, k = 1e9;
   ContactSpec spec;
   spec.model = "lve";

@@ -27,6 +27,20 @@ inline BuildingRow chapter8_pair(double gap) {
   return row;
 }
 
+/// The offset pair of the slab-to-column tests (issue 36): left 2 storeys of 3 m (1e5 kg floors,
+/// 4e7 N/m storeys), right 2 of 3.5 m (0.8e5 kg, 8e7 N/m), fixed bases, damping ratio xi. Sites
+/// by elevation: L's floor 1 (3 m) on R's storey 1 at xi = 6/7, R's floor 1 (3.5 m) on L's
+/// storey 2 at xi = 1/6, L's floor 2 (6 m) on R's storey 2 at xi = 5/7; gap [m] at each.
+inline BuildingRow offset_pair(double gap, double xi) {
+  BuildingRow row;
+  Building l = uniform_building(2, 1.0e5, 4.0e7, xi);
+  Building r = uniform_building(2, 0.8e5, 8.0e7, xi);
+  r.storey_heights.assign(2, 3.5);
+  row.buildings = {l, r};
+  row.gaps = {{gap, gap, gap}};
+  return row;
+}
+
 /// A base on springs and dashpots (docs/ssi.md): sway and rocking stiffness kx [N/m], kr
 /// [N m/rad], their dashpots cx [N s/m], cr [N m s/rad], the raft's mass m0 [kg] and rotary
 /// inertia i0 [kg m^2].

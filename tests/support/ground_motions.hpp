@@ -16,4 +16,17 @@ inline GroundMotion sine_motion(double amplitude, double frequency_hz, double dt
   return g;
 }
 
+/// One cycle of a 0.5 s sine of 4 m/s^2, then rest until 3 s, sampled at 5 ms: the pulse of the
+/// slab-to-column tests (issue 36).
+inline GroundMotion sine_pulse() {
+  GroundMotion g;
+  g.name = "pulse";
+  g.dt = 0.005;
+  for (int i = 0; i <= 600; ++i) {
+    const double t = i * g.dt;
+    g.accel.push_back(t < 0.5 ? 4.0 * std::sin(2 * M_PI * t / 0.5) : 0.0);
+  }
+  return g;
+}
+
 }  // namespace pound::test
