@@ -50,17 +50,9 @@ BuildingRow soft_pair(const std::string& law, int mass, double gap, bool heavy) 
   return row;
 }
 
-// The first 6 s of El Centro NS and 1 s of free vibration.
+// The first 6 s of El Centro NS and 1 s of free vibration, hc-linear contacts.
 RowSimulation run(const BuildingRow& row, const IntegratorSettings& integ, bool energy) {
-  const GroundMotion g = test::elcentro_first(301);
-  ContactSpec c;
-  c.model = "hc-linear";
-  c.params.k = 50 * 8.4e7;
-  c.params.e = 0.6;
-  RowSimulationOptions o;
-  o.extra_time = 1.0;
-  o.track_energy = energy;
-  return simulate_row(row, g, c, integ, o);
+  return test::elcentro_hc_run(row, integ, energy);
 }
 
 // The same events (contacts and yield kinks), peak displacements (floors and bases' sway and

@@ -40,15 +40,7 @@ BuildingRow pair(const std::string& law, bool flexible, double kx, double kr, do
 
 // The first 6 s of El Centro NS and 1 s of free vibration, hc-linear contacts.
 RowSimulation run(const BuildingRow& row, const IntegratorSettings& integ, bool energy) {
-  const GroundMotion g = test::elcentro_first(301);
-  ContactSpec c;
-  c.model = "hc-linear";
-  c.params.k = 50 * 8.4e7;
-  c.params.e = 0.6;
-  RowSimulationOptions o;
-  o.extra_time = 1.0;
-  o.track_energy = energy;
-  return simulate_row(row, g, c, integ, o);
+  return test::elcentro_hc_run(row, integ, energy);
 }
 
 // The largest relative difference of the floors' peak displacements and drifts.

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "motion/motion_reader.hpp"
+#include "simulation/simulate_row.hpp"
 
 #ifndef POUND_SOURCE_DIR
 #error "reference_inputs.hpp needs POUND_SOURCE_DIR, the source tree's path"
@@ -33,6 +34,20 @@ inline double hunt_crossley_a(double e) {
     (g(mid) < 0 ? lo : hi) = mid;
   }
   return 0.5 * (lo + hi);
+}
+
+/// The chapter 8 row under the first 6 s of El Centro NS (elcentro_first(301)) and 1 s of free
+/// vibration, hc-linear contacts (k = 50 x 8.4e7 N/m, e = 0.6): the foundation tests' run.
+inline RowSimulation elcentro_hc_run(const BuildingRow& row, const IntegratorSettings& integ,
+                                     bool energy) {
+  ContactSpec c;
+  c.model = "hc-linear";
+  c.params.k = 50 * 8.4e7;
+  c.params.e = 0.6;
+  RowSimulationOptions o;
+  o.extra_time = 1.0;
+  o.track_energy = energy;
+  return simulate_row(row, elcentro_first(301), c, integ, o);
 }
 
 }  // namespace pound::test
