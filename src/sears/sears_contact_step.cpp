@@ -42,12 +42,11 @@ void SearsRowRun::finish_sleep() {  // at the next point of the coarse grid
 void SearsRowRun::predict_overlaps() {
   slabs.predict(begin, op);
   for (int s = 0; s < ns; ++s) {
-    const auto& site = assembled.sites[s];
     const int l = left_slab(s), r = right_slab(s);  // -1: a struck column point, no bar
     const double wl = l >= 0 ? slabs.predicted_right_upper(l) : 0.0;
     const double wr = r >= 0 ? slabs.predicted_left_lower(r) : 0.0;
     delta_pred(s) = left_point(s).of(u_hat.data()) - right_point(s).of(u_hat.data()) + wl - wr -
-                    site.gap + gd_next[s];
+                    gap(s) + gd_next[s];
   }
 }
 
@@ -58,10 +57,9 @@ bool SearsRowRun::guards_hold() {
   for (int s = 0; s < ns; ++s) {
     if (!guarded[s]) continue;
     const int kl = left_slab(s), kr = right_slab(s);  // -1: a struck column point, no bar
-    const auto& site = assembled.sites[s];
     const double bound_end = delta_pred(s) - ops[op].S.row(s).dot(F_next);
     double scale =
-        magnitude(left_point(s), u_hat) + magnitude(right_point(s), u_hat) + std::fabs(site.gap);
+        magnitude(left_point(s), u_hat) + magnitude(right_point(s), u_hat) + std::fabs(gap(s));
     if (kl >= 0) scale += std::fabs(slabs.asleep_faces(kl).right);
     if (kr >= 0) scale += std::fabs(slabs.asleep_faces(kr).left);
     if (kl >= 0) scale += slabs.asleep_bound(kl);

@@ -52,6 +52,20 @@ StepLimits sears_impact_step_limits(const SearsImpactSpec& spec) {
                      spec.contact.lumped_duration(reduced_mass(spec), spec.v0_m_s));
 }
 
+namespace {
+// The peak accelerations of the contact faces and centres (rigid + internal, Th. 7.5) under the
+// contact force F [N] on bar 1's right end (-F) and bar 2's left end (+F).
+void record_accelerations(SearsImpactOutcome& out, double F, double m1, double m2,
+                          const ModalBank& bank1, const ModalBank& bank2) {
+  const SectionValues a1 = bank1.acceleration(EndLoads{0.0, -F});
+  const SectionValues a2 = bank2.acceleration(EndLoads{F, 0.0});
+  out.peak_face_accel1 = std::max(out.peak_face_accel1, std::fabs(-F / m1 + a1.right));
+  out.peak_face_accel2 = std::max(out.peak_face_accel2, std::fabs(F / m2 + a2.left));
+  out.peak_centre_accel1 = std::max(out.peak_centre_accel1, std::fabs(-F / m1 + a1.centre));
+  out.peak_centre_accel2 = std::max(out.peak_centre_accel2, std::fabs(F / m2 + a2.centre));
+}
+}  // namespace
+
 SearsImpactOutcome run_sears_impact(const SearsImpactSpec& spec) {
   const StepLimits limits = sears_impact_step_limits(spec);
   const double dt = choose_step(limits, spec.dt_s);
@@ -93,7 +107,7 @@ SearsImpactOutcome run_sears_impact(const SearsImpactSpec& spec) {
     if (implicit) {
       // End-of-step overlap with zero end-of-step force, then solve F = law(pred - S F).
       const double pred = body1.predict(-F, dt) + bank1.predict(begin1).right -
-                          body2.predict(F, dt) - bank2.predict(begin2).left;
+                          body2.predict(F, dt) - bank2.predict(begin2).left - out.crush_m;
       F_next = law.solve_implicit(pred, compliance);
       bank1.step(begin1, EndLoads{0.0, -F_next});
       bank2.step(begin2, EndLoads{F_next, 0.0});
@@ -109,9 +123,16 @@ SearsImpactOutcome run_sears_impact(const SearsImpactSpec& spec) {
       F_next = 0.0;  // computed from the new overlap below
     }
     t += dt;
-    const double delta_next =
-        body1.x + bank1.displacement().right - body2.x - bank2.displacement().left;
+    // The overlap from the gap widened by the faces' indentation (crushing at the cap).
+    double delta_next =
+        body1.x + bank1.displacement().right - body2.x - bank2.displacement().left - out.crush_m;
     if (!implicit) F_next = law.force(delta_next);
+    const double dc = law.crush_increment(delta_next, F_next);  // 0 without a cap
+    if (dc > 0.0) {
+      out.crush_m += dc;
+      delta_next -= dc;
+      out.crushing_J += law.force_cap_N * dc;
+    }
 
     // Contact phases; separation time by linear interpolation of the overlap.
     if (in_contact && !(delta_next > 0.0)) {
@@ -128,18 +149,10 @@ SearsImpactOutcome run_sears_impact(const SearsImpactSpec& spec) {
     F = F_next;
     delta = delta_next;
     r.peak_force_N = std::max(r.peak_force_N, F);
-    r.max_penetration_m = std::max(r.max_penetration_m, delta);
+    r.max_penetration_m = std::max(r.max_penetration_m, delta + out.crush_m);
     if (spec.record_history) out.history.push_back(SearsImpactSample{t, F, delta});
 
-    // Accelerations of the contact faces and centres (rigid + internal, Th. 7.5).
-    const SectionValues a1 = bank1.acceleration(EndLoads{0.0, -F});
-    const SectionValues a2 = bank2.acceleration(EndLoads{F, 0.0});
-    out.peak_face_accel1 = std::max(out.peak_face_accel1, std::fabs(-F / body1.mass + a1.right));
-    out.peak_face_accel2 = std::max(out.peak_face_accel2, std::fabs(F / body2.mass + a2.left));
-    out.peak_centre_accel1 =
-        std::max(out.peak_centre_accel1, std::fabs(-F / body1.mass + a1.centre));
-    out.peak_centre_accel2 =
-        std::max(out.peak_centre_accel2, std::fabs(F / body2.mass + a2.centre));
+    record_accelerations(out, F, body1.mass, body2.mass, bank1, bank2);
 
     // Energy balance: kinetic + modal + contact + dissipated (trapezoidal rule) = initial.
     const double power_next = bank1.damping_power() + bank2.damping_power();
@@ -148,13 +161,14 @@ SearsImpactOutcome run_sears_impact(const SearsImpactSpec& spec) {
     const double energy = 0.5 * body1.mass * body1.v * body1.v +
                           0.5 * body2.mass * body2.v * body2.v + bank1.energy() + bank2.energy() +
                           law.potential(delta);
-    out.max_energy_error_J = std::max(out.max_energy_error_J,
-                                      std::fabs(energy + out.dissipated_J - out.initial_energy_J));
+    out.max_energy_error_J =
+        std::max(out.max_energy_error_J,
+                 std::fabs(energy + out.dissipated_J + out.crushing_J - out.initial_energy_J));
 
     // Final separation: the rigid bodies do not approach and even the largest internal face
     // displacements that free vibration can reach leave a gap.
     if (!in_contact && body1.v <= body2.v &&
-        body1.x - body2.x + bank1.free_face_bound() + bank2.free_face_bound() < 0.0) {
+        body1.x - body2.x - out.crush_m + bank1.free_face_bound() + bank2.free_face_bound() < 0.0) {
       out.steps = i + 1;
       break;
     }

@@ -63,9 +63,13 @@ struct SearsImpactOutcome {
   double peak_centre_accel2 = 0.0;      ///< [m/s^2]
   double initial_energy_J = 0.0;        ///< kinetic energy before impact [J]
   /// Largest |total energy(t) - initial energy| over the run: rigid-body kinetic + modal +
-  /// contact potential + energy dissipated by modal damping (the work balance) [J].
+  /// contact potential + energy dissipated by modal damping + crushing work (the work
+  /// balance) [J].
   double max_energy_error_J = 0.0;
-  double dissipated_J = 0.0;               ///< energy dissipated by slab damping [J]
+  double dissipated_J = 0.0;  ///< energy dissipated by slab damping [J]
+  /// Crushing faces at the force cap (issue 36; SlabContactLaw::crush_increment): the
+  /// permanent indentation at the end [m] and its work, PF_max x crush_m [J] (0 without a cap).
+  double crush_m = 0.0, crushing_J = 0.0;
   std::vector<SearsImpactSample> history;  ///< from t = 0, when spec.record_history
 };
 

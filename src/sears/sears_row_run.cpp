@@ -120,8 +120,10 @@ void SearsRowRun::initial_state() {
   floors.work.resize(2 * n);
   for (auto* g : {&gd, &gv, &gd_next, &gv_next}) g->assign(ns, 0.0);
   ground_at(0.0, gd, gv);
+  crush.assign(ns, 0.0);
+  crush_phase.assign(ns, 0.0);
   for (int s = 0; s < ns; ++s)
-    delta(s) = left_point(s).of(u.data()) - right_point(s).of(u.data()) - a.sites[s].gap + gd[s];
+    delta(s) = left_point(s).of(u.data()) - right_point(s).of(u.data()) - gap(s) + gd[s];
   out.dt_s = dt;
   out.coarse_dt_s = hc;
   rec.set_collapse(a.storeys, p.collapse_drift_ratio);
@@ -164,10 +166,9 @@ void SearsRowRun::loads(const Eigen::VectorXd& f, std::vector<EndLoads>& to) con
 // The faces: a slab's floor plus its internal displacement at the face (Th. 8.3); a struck
 // column point (no bar, issue 36) moves with its floors only.
 double SearsRowRun::overlap_now(int s) const {
-  const auto& site = assembled.sites[s];
   const int l = left_slab(s), r = right_slab(s);
   return left_point(s).of(u.data()) - right_point(s).of(u.data()) +
-         (l >= 0 ? slabs.disp(l).right : 0.0) - (r >= 0 ? slabs.disp(r).left : 0.0) - site.gap +
+         (l >= 0 ? slabs.disp(l).right : 0.0) - (r >= 0 ? slabs.disp(r).left : 0.0) - gap(s) +
          gd[s];
 }
 
@@ -270,7 +271,7 @@ __attribute__((always_inline)) inline void SearsRowRun::record_site(int s, bool 
   const double step_impulse = 0.5 * (F(s) + F_next(s)) * h;
   rec.impulse(s, step_impulse);
   rec.force(s, F_next(s));
-  rec.penetration(s, d);
+  rec.penetration(s, d + (crush[s] - crush_phase[s]));  // 0 + 0 without a cap
   const double t_cross = delta(s) != d ? t_next - h + h * delta(s) / (delta(s) - d) : t_next;
   std::vector<ContactPhase>& phases = out.contacts[s].phases;
   if (!in_contact[s] && d > 0.0) {
@@ -282,6 +283,7 @@ __attribute__((always_inline)) inline void SearsRowRun::record_site(int s, bool 
     in_contact[s] = false;
     ++rec.result().events;
     rec.contact_ended(s, t_cross);
+    crush_phase[s] = crush[s];
     phases.back().end_s = t_cross;
     phases.back().impulse_Ns += step_impulse;  // the force falls to zero in this step
   }
@@ -300,6 +302,21 @@ void SearsRowRun::record_sites(bool coarse, double h, double t_next) {
   }
   if (!coarse && ns > 0 && (F.cwiseAbs().maxCoeff() > 0.0 || F_next.cwiseAbs().maxCoeff() > 0.0))
     ++out.counts.fine_in_contact;
+}
+
+// Crushing faces (issue 36; docs/sears.md, "The force cap"): where a step ends with a site's
+// force at PF_max and the law's own penetration past d_cap, the excess becomes permanent
+// indentation: the site's gap widens by it (gap()), and its work PF_max dc leaves the contact's
+// energy for the crushing's. Sites without force (guarded ones among them) do not crush.
+void SearsRowRun::crush_faces() {
+  for (int s = 0; s < ns; ++s) {
+    if (guarded[s] || F_next(s) == 0.0) continue;
+    const double dc = layout.laws[s].crush_increment(delta(s), F_next(s));
+    if (!(dc > 0.0)) continue;
+    crush[s] += dc;
+    delta(s) -= dc;
+    e_crushing += layout.laws[s].force_cap_N * dc;
+  }
 }
 
 inline void SearsRowRun::record_slab(int k, bool coarse, const double* ag) {
@@ -429,6 +446,7 @@ SearsRowResult SearsRowRun::run() {
     ground_at(t_next, gd, gv);
     const double* ag = ground.acc(t_next);
     record_sites(coarse, h, t_next);
+    if (!coarse) crush_faces();
     F = F_next;
     for (int s = 0; s < ns; ++s) {  // the struck columns' shear (issue 36)
       const ContactSite& site = assembled.sites[s];
@@ -469,7 +487,8 @@ EnergyBalance SearsRowRun::energy_now() const {
   EnergyBalance e;
   e.input = e_input;
   e.damping = e_damping;
-  e.contact = e_contact;
+  e.contact = e_contact - e_crushing;  // the crushing work is the crushing's (issue 36)
+  e.crushing = e_crushing;
   e.kinetic = 0.5 * v.dot(assembled.M * v);
   e.strain = storeys.stored(u);
   Eigen::VectorXd dissipated(n);
@@ -487,6 +506,7 @@ void SearsRowRun::finish() {
   r.steps += out.counts.fine + out.counts.coarse;  // and the lumped stretches' own
   r.hysteretic_energy.resize(n);
   for (int k = 0; k < n; ++k) r.hysteretic_energy(k) = storeys.dissipated(u, k);
+  for (int s = 0; s < ns && s < static_cast<int>(r.sites.size()); ++s) r.sites[s].crush = crush[s];
   if (p.track_energy) r.energy = rec.final_energy(energy_now());
   out.row = std::move(r);
 }

@@ -62,7 +62,9 @@ class SearsRowRun {
   // Approach u_L - u_R of the faces of site s (floors plus internal vibration); with a dormant
   // slab, its upper bound.
   double approach_bound(int s) const;
-  double overlap_bound(int s) const { return approach_bound(s) - assembled.sites[s].gap; }
+  double overlap_bound(int s) const { return approach_bound(s) - gap(s); }
+  // Site s's gap [m], widened by its faces' permanent indentation (crushing, issue 36).
+  double gap(int s) const { return assembled.sites[s].gap + crush[s]; }
   bool site_dormant(int s) const {
     const int l = left_slab(s), r = right_slab(s);
     return (l >= 0 && slabs.dormant(l)) || (r >= 0 && slabs.dormant(r));
@@ -98,6 +100,7 @@ class SearsRowRun {
   // Results after a step.
   void add_energy(double h, double t_start, double t_next);  // the step [t_start, t_next]
   void record_sites(bool coarse, double h, double t_next);
+  void crush_faces();  // after record_sites: the indentations grown in the step
   void record_site(int s, bool coarse, double h, double t_next);
   void record_peaks(bool coarse, const double* ag, double t_next, double h);
   // Collapse (solver/row_solver.hpp): failed storeys under P-Delta; after collapses, true when
@@ -156,6 +159,12 @@ class SearsRowRun {
   // end values, which Newmark's average-acceleration scheme balances exactly for linear storeys.
   Eigen::VectorXd u_prev, v_prev;
   double e_input = 0.0, e_damping = 0.0, e_contact = 0.0;
+  // Crushing faces at [sears] force_cap (issue 36; SlabContactLaw::crush_increment): each
+  // site's permanent indentation c [m], which widens its gap (gap()), and its value when the
+  // site's current contact phase began (the recorded penetration includes the phase's own
+  // crush, as the lumped laws' does); the crushing work, the sum of PF_max x c [J].
+  std::vector<double> crush, crush_phase;
+  double e_crushing = 0.0;
   std::vector<double> ag_avg_, mdu_;  // per channel: mean ag [m/s^2], sum M du [kg m]
 
   // Floor state [m], [m/s], [m/s^2]; contact forces [N] and overlaps [m] per site.

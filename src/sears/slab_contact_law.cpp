@@ -51,6 +51,13 @@ double SlabContactLaw::solve_implicit(double delta_pred_m, double S_step) const 
   return std::fmin(f, force_cap_N);
 }
 
+double SlabContactLaw::crush_increment(double delta_m, double force_N) const {
+  if (std::isinf(force_cap_N) || !(force_N >= force_cap_N)) return 0.0;
+  const double d_cap = std::pow(force_cap_N / stiffness, 1.0 / exponent());
+  const double d_law = delta_m - force_N * series_compliance_m_per_N;
+  return d_law > d_cap ? d_law - d_cap : 0.0;
+}
+
 double SlabContactLaw::lumped_duration(double m_red, double v0) const {
   if (kind == ContactKind::flat) {
     const double c = series_compliance_m_per_N;

@@ -172,9 +172,17 @@ void RowRun::apply_contact_event(int i, double t, Eigen::VectorXd& y) {
   const double rate = dyn_.penetration_rate(y, i);
   const ContactLaw& law = *p_->laws[i];
   switches_.guard_chatter(i, t, [&] {
-    return "contact site " + std::to_string(i) + " (pair " +
-           std::to_string(row_.sites[i].pair + 1) + ", floor " +
-           std::to_string(row_.sites[i].level + 1) + ")";
+    const ContactSite& site = row_.sites[i];
+    const SiteGeometry& g = site.geometry;
+    std::string where = "pair " + std::to_string(site.pair + 1) + ", ";
+    if (site.column())  // the striking slab and the struck storey, 1-based (issue 36)
+      where += std::string(g.slab_side == 0 ? "left" : "right") + " building's floor " +
+               std::to_string(g.slab_floor + 1) + " against the other's storey " +
+               std::to_string(g.hit + 1) + " columns";
+    else
+      where += "floor " + std::to_string(g.slab_floor + 1) + " against floor " +
+               std::to_string(g.hit + 1);
+    return "contact site " + std::to_string(i + 1) + " (" + where + ")";
   });
   rec_.contact_started(i, t);
   if (!law.impulsive()) {

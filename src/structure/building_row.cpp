@@ -56,8 +56,9 @@ std::vector<std::string> describe_sites(const BuildingRow& row) {
     if (aligned) {
       out.push_back(pair + " (" + row.buildings[p].name + " | " + row.buildings[p + 1].name +
                     "): " +
-                    (g.empty() ? std::string("no contact site")
-                               : "floors 1-" + std::to_string(g.size()) + " slab to slab"));
+                    (g.empty()       ? std::string("no contact site")
+                     : g.size() == 1 ? std::string("floor 1 slab to slab")
+                                     : "floors 1-" + std::to_string(g.size()) + " slab to slab"));
       continue;
     }
     for (std::size_t k = 0; k < g.size(); ++k) {

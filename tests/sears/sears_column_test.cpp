@@ -101,6 +101,8 @@ TEST(SearsColumn, TheEnergyLedgerClosesOnAnOffsetRow) {
       {"bilinear", {"--sears.integrator", "event"}},
       {"bilinear", {"--sears.integrator", "fixed"}},
       {"elastic", {"--sears.contact", "hertz", "--sears.k", "3e9"}},
+      {"elastic", {"--sears.integrator", "event", "--sears.force_cap", "2e5"}},  // crushing
+      {"bilinear", {"--sears.contact", "hertz", "--sears.k", "3e9", "--sears.force_cap", "5e4"}},
   };
   for (const Case& c : cases) {
     std::vector<std::string> args = {"--building2.storey_heights", "3.6", "--sears.modes", "40"};
@@ -124,6 +126,16 @@ TEST(SearsColumn, TheEnergyLedgerClosesOnAnOffsetRow) {
     EXPECT_GT(e.contact, 1e-3 * e.input) << what;
     EXPECT_EQ(r.counts_pounding.bound_violations, 0) << what;
     for (const auto& site : r.base.sites) EXPECT_GT(site.impacts, 0) << what;
+    // Crushing faces (issue 36): the work PF_max x c of every site, and none without a cap.
+    double crush_work = 0.0;
+    for (const auto& site : r.base.sites) crush_work += s.model.force_cap_N * site.crush;
+    if (std::isinf(s.model.force_cap_N)) {
+      EXPECT_EQ(e.crushing, 0.0) << what;
+    } else {
+      EXPECT_GT(e.crushing, 1e-3 * e.input) << what;
+      EXPECT_NEAR(e.crushing, crush_work, 1e-12 * e.crushing) << what;
+      for (const auto& site : r.base.sites) EXPECT_LE(site.peak_force, s.model.force_cap_N);
+    }
   }
 }
 

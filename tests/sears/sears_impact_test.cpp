@@ -213,15 +213,46 @@ TEST(SearsImpact, DoublingTheModesChangesTheImpulseByLessThan1e4) {
   EXPECT_NEAR(observed_order(J[0], J[1], J[2]), 1.0, 0.25);
 }
 
-TEST(SearsImpact, ForceCapLimitsThePeakForce) {
+TEST(SearsImpact, ForceCapCrushesTheFacesAndTheLedgerCloses) {
+  // [sears] force_cap as a crushing face (issue 36): the peak force is the cap, the momentum is
+  // kept, the indentation's work PF_max x c leaves the motion (a smaller rebound than the free
+  // impact's) and kinetic + modal + contact + damping + crushing stays the initial energy.
   SearsImpactSpec s = pendulums(0.146, 1.0 / 8.0);
-  const ImpactResult free = simulate_sears_impact(s);
-  s.contact.force_cap_N = 0.5 * free.peak_force_N;
-  const ImpactResult capped = simulate_sears_impact(s);
-  EXPECT_DOUBLE_EQ(capped.peak_force_N, s.contact.force_cap_N);
-  EXPECT_GT(capped.contact_duration_s, 1.5 * free.contact_duration_s);
+  const SearsImpactOutcome free = run_sears_impact(s);
+  s.contact.force_cap_N = 0.5 * free.impact.peak_force_N;
+  const SearsImpactOutcome capped = run_sears_impact(s);
+  EXPECT_DOUBLE_EQ(capped.impact.peak_force_N, s.contact.force_cap_N);
   const double p0 = s.bar1.mass_kg * s.v0_m_s;
-  EXPECT_NEAR(s.bar1.mass_kg * capped.v1_after + s.bar2.mass_kg * capped.v2_after, p0, 1e-13 * p0);
+  EXPECT_NEAR(s.bar1.mass_kg * capped.impact.v1_after + s.bar2.mass_kg * capped.impact.v2_after, p0,
+              1e-13 * p0);
+  EXPECT_GT(capped.crush_m, 0.0);
+  EXPECT_NEAR(capped.crushing_J, s.contact.force_cap_N * capped.crush_m, 1e-12 * capped.crushing_J);
+  EXPECT_LT(capped.impact.e_eff, free.impact.e_eff - 0.1);
+  EXPECT_LT(capped.max_energy_error_J, 1e-6 * capped.initial_energy_J);
+  EXPECT_EQ(free.crush_m, 0.0);
+  EXPECT_EQ(free.crushing_J, 0.0);
+}
+
+TEST(SearsImpact, StiffBarsCrushByTheKineticEnergyAboveTheCap) {
+  // Bars far stiffer than a flat contact (k = beta E A / l1, beta -> 0) act as rigid bodies:
+  // the face crushes by c = (mu v0^2 / 2 - P^2 / (2 k)) / P (the elastic energy up to the cap
+  // P stays in the spring and is given back; the rest is crushing work), as the lumped laws'
+  // Crushing.AFreeElasticImpactCrushesByTheKineticEnergyAboveTheCap. The bars' internal
+  // vibration takes a share of order beta, so the error falls about tenfold per beta / 10.
+  double err[2];
+  for (int k = 0; k < 2; ++k) {
+    SearsImpactSpec s = steel_bars(1.0, 1.0, k == 0 ? 1e-3 : 1e-4, 50);
+    const double mu = 0.5 * s.bar1.mass_kg, v0 = s.v0_m_s;
+    const double P = 0.5 * v0 * std::sqrt(s.contact.stiffness * mu);  // half the free peak
+    s.contact.force_cap_N = P;
+    const SearsImpactOutcome r = run_sears_impact(s);
+    const double c = (0.5 * mu * v0 * v0 - P * P / (2.0 * s.contact.stiffness)) / P;
+    err[k] = std::fabs(r.crush_m - c) / c;
+    EXPECT_LT(r.max_energy_error_J, 1e-8 * r.initial_energy_J);
+    EXPECT_LT(err[k], k == 0 ? 1e-3 : 1e-4);  // measured 2.2e-4, 2.2e-5
+    EXPECT_DOUBLE_EQ(r.impact.peak_force_N, P);
+  }
+  EXPECT_GT(err[0] / err[1], 5.0);
 }
 
 TEST(SearsImpact, TooLargeStepIsAnInputErrorNamingTheLargestAllowed) {

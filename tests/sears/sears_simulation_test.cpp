@@ -68,6 +68,50 @@ TEST(SearsRow, TwoFreeFloorsReproduceTheFreeBarImpact) {
   EXPECT_NEAR(r.slabs[1].centre_accel, ref.peak_centre_accel2, 1e-3 * ref.peak_centre_accel2);
 }
 
+TEST(SearsRow, TwoFreeFloorsCrushAsTheFreeBarImpact) {
+  // [sears] force_cap on the row (issue 36): the crushing faces of run_sears_impact. The
+  // pendulums above with the cap at half the free peak: the same indentation to O(dt^2), the
+  // force at the cap, the momentum kept, and the row's ledger closing with the crushing work
+  // PF_max x c in it.
+  SearsImpactSpec spec;
+  spec.bar1 = Slab{0.700, 21e9, 2400.0, 0.15, 109.0, 0.125};
+  spec.bar2 = Slab{0.650, 21e9, 2400.0, 0.15, 108.0, 0.125};
+  spec.v0_m_s = 0.146;
+  spec.contact.kind = ContactKind::hertz;
+  spec.contact.stiffness = 3.21e9;
+  spec.contact.force_cap_N = 0.5 * run_sears_impact(spec).impact.peak_force_N;
+  const SearsImpactOutcome ref = run_sears_impact(spec);
+  ASSERT_GT(ref.crush_m, 0.0);
+
+  BuildingRow row;
+  row.buildings = {free_floor(109.0), free_floor(108.0)};
+  row.gaps = {{0.0}};
+  SearsRowModel model;
+  model.slabs = {{0.700, 21e9, 2400.0, 0.15}, {0.650, 21e9, 2400.0, 0.15}};
+  model.contact = ContactKind::hertz;
+  model.hertz_k = 3.21e9;
+  model.hertz_reference_velocity = 0.146;
+  model.contact_step_tolerance = 0.0;
+  model.force_cap_N = spec.contact.force_cap_N;
+  SearsRowProblem p;
+  p.row = &row;
+  p.t_end = ref.end_time_s;
+  p.v0 = Eigen::Vector2d(0.146, 0.0);
+  p.track_energy = true;
+  const SearsRowResult r = solve_sears_row(p, model);
+  const SiteResult& site = r.row.sites[0];
+  EXPECT_DOUBLE_EQ(site.peak_force, model.force_cap_N);
+  EXPECT_NEAR(site.crush, ref.crush_m, 1e-6 * ref.crush_m);
+  EXPECT_NEAR(r.row.v_end(1), ref.impact.v2_after, 1e-6 * 0.146);
+  const double p0 = 109.0 * 0.146;
+  EXPECT_NEAR(109.0 * r.row.v_end(0) + 108.0 * r.row.v_end(1), p0, 1e-12 * p0);
+  const EnergyBalance& e = r.row.energy;
+  EXPECT_NEAR(e.crushing, model.force_cap_N * site.crush, 1e-12 * e.crushing);
+  const double e0 = 0.5 * 109.0 * 0.146 * 0.146;
+  EXPECT_LT(std::fabs(e.residual() + e0), 1e-6 * e0)  // no ground: input 0, initial kinetic e0
+      << "kinetic " << e.kinetic << " contact " << e.contact << " crushing " << e.crushing;
+}
+
 TEST(SearsRow, NewtonsCradleOfThreeBarsPassesTheWaveThrough) {
   // Three equal steel bars (l = 1 m), the first at v0 = 1 m/s, flat contacts 100 E A / l
   // (D = 200), 400 modes, no damping. St Venant: a pulse of length 2 l runs through bar 2
