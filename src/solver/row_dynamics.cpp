@@ -236,7 +236,14 @@ double RowDynamics::condense_stiff_roots(double rate_times_period, double t_min)
   if (!qs_.empty() || !std::isfinite(rate_times_period)) return t_min;
   const int nb = static_cast<int>(row_.sway.size());
   std::vector<double> mass(n_, 0.0), damping(n_, 0.0), spring(n_, 0.0);  // per base DOF, SI
-  std::vector<char> base(n_, 0), candidate(nb, 0);
+  std::vector<char> base(n_, 0), candidate(nb, 0), loaded(n_, 0);
+  // A base that a contact site loads (a slab striking a first storey's columns: the base takes
+  // (1 - s) F) stays integrated: its quasi-static limit would need the contact force inside
+  // the constraint K_b u_b + ... = P_b(u_b), which the condensation does not solve.
+  for (const ContactSite& site : row_.sites)
+    for (const SitePoint* pt : {&site.left, &site.right})
+      for (int k = 0; k < pt->count; ++k)
+        if (pt->weight[k] != 0.0) loaded[pt->dof[k]] = 1;
   bool massive = false;
   for (int bi = 0; bi < nb; ++bi) {
     bool all = true, any = false;
@@ -255,6 +262,8 @@ double RowDynamics::condense_stiff_roots(double rate_times_period, double t_min)
       any = true;
       all = all && stiff_root(mass[d], c, k, std::max(t1, t_min), rate_times_period);
     }
+    for (int d : {row_.sway[bi], row_.rot[bi]})
+      if (d >= 0 && loaded[d]) all = false;
     candidate[bi] = any && all;
     for (int d : {row_.sway[bi], row_.rot[bi]})
       if (d >= 0 && candidate[bi]) base[d] = 1, massive = massive || row_.inv_mass(d) != 0.0;

@@ -235,6 +235,13 @@ AssembledRow assemble(const BuildingRow& row) {
   }
   for (int p = 0; p + 1 < nb; ++p) {
     const std::vector<SiteGeometry> g = pair_sites(row.buildings[p], row.buildings[p + 1]);
+    const std::size_t given = p < static_cast<int>(row.gaps.size()) ? row.gaps[p].size() : 0;
+    if (given != g.size())  // the study readers expand one gap to every site
+      throw InputError("pair " + std::to_string(p + 1) + " (" + row.buildings[p].name + " | " +
+                       row.buildings[p + 1].name + "): " + std::to_string(given) +
+                       " gaps for its " + std::to_string(g.size()) +
+                       " contact sites; valid: one gap per site, in the order pound simulate "
+                       "lists them");
     for (std::size_t k = 0; k < g.size(); ++k)
       out.sites.push_back(make_site(row, out, p, static_cast<int>(k), g[k]));
   }

@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "../support/buildings.hpp"
+#include "core/error.hpp"
 #include "structure/building_row.hpp"
 
 namespace pound {
@@ -139,6 +140,25 @@ TEST(ContactGeometry, ColumnPointsWeighTheFloorsAndTheBase) {
   EXPECT_EQ(a.sites[1].left.count, 2);  // R's slab against L's floors 1 and 2
   EXPECT_EQ(a.sites[1].left.dof[0], 0);
   EXPECT_EQ(a.sites[1].right.dof[0], 3);
+}
+
+TEST(ContactGeometry, AGapListOfAnotherLengthThanTheSitesIsAnInputError) {
+  // The row above has four sites; a row built by hand with the aligned pair's three gaps is
+  // refused by assemble() with a line naming the pair and the counts (the study readers
+  // expand one gap to every site, pound simulate lists them).
+  BuildingRow row;
+  row.buildings = {at(3, 3.0, 0.0, 0.2), at(2, 3.6, 0.0, 0.2)};
+  row.buildings[0].name = "L";
+  row.buildings[1].name = "R";
+  row.gaps = {{0.01, 0.01, 0.01}};
+  try {
+    assemble(row);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(),
+                 "pair 1 (L | R): 3 gaps for its 4 contact sites; valid: one gap per site, in "
+                 "the order pound simulate lists them");
+  }
 }
 
 }  // namespace
