@@ -27,28 +27,41 @@ Building free_floor(double mass) {
   return b;
 }
 
-TEST(SearsRow, TwoFreeFloorsReproduceTheFreeBarImpact) {
-  // Thesis ch. 7 pendulums at c/8 as two one-floor "buildings" without springs: the same
-  // model as run_sears_impact except that the rigid bodies are advanced by Newmark's average
-  // acceleration instead of exactly; both are second order, so at one step the impulse and
-  // the velocities agree to O(dt^2).
+// Thesis ch. 7 pendulums at c/8 (Hertz, k = 3.21 GN/m^1.5, 0.146 m/s) as a free-bar impact,
+// and as two one-floor "buildings" without springs with the same slabs and law.
+SearsImpactSpec pendulum_impact() {
   SearsImpactSpec spec;
   spec.bar1 = Slab{0.700, 21e9, 2400.0, 0.15, 109.0, 0.125};
   spec.bar2 = Slab{0.650, 21e9, 2400.0, 0.15, 108.0, 0.125};
   spec.v0_m_s = 0.146;
   spec.contact.kind = ContactKind::hertz;
   spec.contact.stiffness = 3.21e9;
-  const SearsImpactOutcome ref = run_sears_impact(spec);
-
+  return spec;
+}
+BuildingRow pendulum_row() {
   BuildingRow row;
   row.buildings = {free_floor(109.0), free_floor(108.0)};
   row.gaps = {{0.0}};
+  return row;
+}
+SearsRowModel pendulum_model() {
   SearsRowModel model;
   model.slabs = {{0.700, 21e9, 2400.0, 0.15}, {0.650, 21e9, 2400.0, 0.15}};
   model.contact = ContactKind::hertz;
   model.hertz_k = 3.21e9;
   model.hertz_reference_velocity = 0.146;
   model.contact_step_tolerance = 0.0;  // the free bars' step throughout the contact
+  return model;
+}
+
+TEST(SearsRow, TwoFreeFloorsReproduceTheFreeBarImpact) {
+  // Thesis ch. 7 pendulums at c/8 as two one-floor "buildings" without springs: the same
+  // model as run_sears_impact except that the rigid bodies are advanced by Newmark's average
+  // acceleration instead of exactly; both are second order, so at one step the impulse and
+  // the velocities agree to O(dt^2).
+  const SearsImpactOutcome ref = run_sears_impact(pendulum_impact());
+  const BuildingRow row = pendulum_row();
+  const SearsRowModel model = pendulum_model();
   SearsRowProblem p;
   p.row = &row;
   p.t_end = ref.end_time_s;
@@ -73,25 +86,12 @@ TEST(SearsRow, TwoFreeFloorsCrushAsTheFreeBarImpact) {
   // pendulums above with the cap at half the free peak: the same indentation to O(dt^2), the
   // force at the cap, the momentum kept, and the row's ledger closing with the crushing work
   // PF_max x c in it.
-  SearsImpactSpec spec;
-  spec.bar1 = Slab{0.700, 21e9, 2400.0, 0.15, 109.0, 0.125};
-  spec.bar2 = Slab{0.650, 21e9, 2400.0, 0.15, 108.0, 0.125};
-  spec.v0_m_s = 0.146;
-  spec.contact.kind = ContactKind::hertz;
-  spec.contact.stiffness = 3.21e9;
+  SearsImpactSpec spec = pendulum_impact();
   spec.contact.force_cap_N = 0.5 * run_sears_impact(spec).impact.peak_force_N;
   const SearsImpactOutcome ref = run_sears_impact(spec);
   ASSERT_GT(ref.crush_m, 0.0);
-
-  BuildingRow row;
-  row.buildings = {free_floor(109.0), free_floor(108.0)};
-  row.gaps = {{0.0}};
-  SearsRowModel model;
-  model.slabs = {{0.700, 21e9, 2400.0, 0.15}, {0.650, 21e9, 2400.0, 0.15}};
-  model.contact = ContactKind::hertz;
-  model.hertz_k = 3.21e9;
-  model.hertz_reference_velocity = 0.146;
-  model.contact_step_tolerance = 0.0;
+  const BuildingRow row = pendulum_row();
+  SearsRowModel model = pendulum_model();
   model.force_cap_N = spec.contact.force_cap_N;
   SearsRowProblem p;
   p.row = &row;
