@@ -21,6 +21,7 @@ files are read with the package pound of the same build (build/python: pound.ope
 import argparse
 import csv
 import os
+import re
 import subprocess
 import sys
 
@@ -471,7 +472,9 @@ def collapse_risk_table(work):
     text = open(os.path.join(work, "default-risk-mce.txt")).read().splitlines()
     start = next(i for i, line in enumerate(text) if line.startswith("Collapse:"))
     for line in text[start + 2:]:
-        f = line.replace(" *", "").split()  # * like for like (a neighbour's collapse censored)
+        # * like for like (a neighbour's collapse censored); the probabilities' bootstrap bands
+        # ([lo, hi] after each) are not in this table.
+        f = re.sub(r"\s*\[[^\]]*\]", "", line.replace(" *", "")).split()
         if len(f) != 9:
             break
         out.append(f"| {f[0]} | {f[1]} | {f[2]} | {f[3]} | {f[4]} | {f[5]} / {f[6]} | "

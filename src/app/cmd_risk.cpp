@@ -36,6 +36,15 @@ constexpr const char* kLikeForLike =
     "unknown: the ratio compares pounding and free on the analyses the pounding curve keeps, and "
     "nu pounding is nu free times that ratio; docs/risk.md, \"Pounding and collapse\")";
 
+// A probability in T years and its bootstrap band: "0.0310 [0.0270, 0.0355]"; the band left
+// out where it or the point is not finite.
+std::string with_band(double p, const Interval& band, const char* format) {
+  std::string s = fmt(format, p);
+  if (std::isfinite(p) && std::isfinite(band.lo) && std::isfinite(band.hi))
+    s += " [" + fmt(format, band.lo) + ", " + fmt(format, band.hi) + "]";
+  return s;
+}
+
 // Collapse per building, pooled and per sampled contact model (issue 23).
 void print_collapse(const CampaignData& c, const RiskReport& r, const RiskSettings& s) {
   if (r.collapse.empty()) return;
@@ -46,20 +55,23 @@ void print_collapse(const CampaignData& c, const RiskReport& r, const RiskSettin
       r.design_im_given ? ", collapse margin ratio CMR = median collapse intensity / design-im "
                           "(FEMA P695)"
                         : " (--design-im MCE gives the collapse margin ratio)");
-  std::printf("  %-12s %-10s %12s %12s %8s %10s %10s %8s %8s\n", "building", "model", "nu pounding",
-              "nu free", "ratio", ("P" + T + " pound").c_str(), ("P" + T + " free").c_str(),
-              "CMR pnd", "CMR free");
+  const std::string band = fmt(" [%g %% band]", 100 * s.confidence);
+  std::printf("  %-12s %-10s %12s %12s %8s %27s %27s %8s %8s\n", "building", "model", "nu pounding",
+              "nu free", "ratio", ("P" + T + " pound" + band).c_str(),
+              ("P" + T + " free" + band).c_str(), "CMR pnd", "CMR free");
   bool marked = false;
   for (const auto& k : r.collapse) {
     marked = marked || k.same_analyses;
     std::printf(
-        "  %-12s %-10s %12s %12s %8s %10s %10s %8s %8s%s\n", c.building_names[k.building].c_str(),
+        "  %-12s %-10s %12s %12s %8s %27s %27s %8s %8s%s\n", c.building_names[k.building].c_str(),
         k.model.empty() ? "all" : k.model.c_str(),
         k.pounding.finite() ? fmt("%.3e", k.maf_pounding).c_str() : to_string(k.pounding.status),
         k.free.finite() ? fmt("%.3e", k.maf_free).c_str() : to_string(k.free.status),
-        fmt("%.3f", k.ratio).c_str(), fmt("%.5f", k.probability_pounding).c_str(),
-        fmt("%.5f", k.probability_free).c_str(), fmt("%.2f", k.cmr_pounding).c_str(),
-        fmt("%.2f", k.cmr_free).c_str(), k.same_analyses ? " *" : "");
+        fmt("%.3f", k.ratio).c_str(),
+        with_band(k.probability_pounding, k.probability_pounding_band, "%.5f").c_str(),
+        with_band(k.probability_free, k.probability_free_band, "%.5f").c_str(),
+        fmt("%.2f", k.cmr_pounding).c_str(), fmt("%.2f", k.cmr_free).c_str(),
+        k.same_analyses ? " *" : "");
   }
   if (marked) std::printf("  %s\n", kLikeForLike);
 }
@@ -146,23 +158,27 @@ void print_text(const CampaignData& c, const HazardCurve& h, const RiskReport& r
   }
   std::printf(
       "\nDamage limits: mean annual frequency of exceedance with and without pounding "
-      "(at the campaign's own gaps)\n");
-  std::printf("  %-12s %-15s %-10s %12s %12s %8s %12s %12s\n", "building", "edp", "limit",
-              "nu pounding", "nu free", "ratio", ("P" + T + " pound").c_str(),
-              ("P" + T + " free").c_str());
+      "(at the campaign's own gaps), probability in %s years with its %g %% bootstrap band (%d "
+      "replicates)\n",
+      T.c_str(), 100 * s.confidence, s.bootstrap.replicates);
+  std::printf("  %-12s %-15s %-10s %12s %12s %8s %24s %24s\n", "building", "edp", "limit",
+              "nu pounding", "nu free", "ratio", ("P" + T + " pound [band]").c_str(),
+              ("P" + T + " free [band]").c_str());
   bool marked = false;
   for (const auto& d : r.damage)
     if (d.model.empty()) {
       marked = marked || d.same_analyses;
       std::printf(
-          "  %-12s %-15s %-10s %12s %12s %8s %12s %12s%s\n", c.building_names[d.building].c_str(),
+          "  %-12s %-15s %-10s %12s %12s %8s %24s %24s%s\n", c.building_names[d.building].c_str(),
           to_string(d.edp), limit_text(d.edp, d.limit).c_str(),
           d.pounding.finite() ? fmt("%.3e", d.maf_pounding).c_str() : to_string(d.pounding.status),
           d.edp == Edp::force ? "-"
           : d.free.finite()   ? fmt("%.3e", d.maf_free).c_str()
                               : to_string(d.free.status),
-          fmt("%.3f", d.ratio).c_str(), fmt("%.4f", -std::expm1(-d.maf_pounding * s.years)).c_str(),
-          fmt("%.4f", -std::expm1(-d.maf_free * s.years)).c_str(), d.same_analyses ? " *" : "");
+          fmt("%.3f", d.ratio).c_str(),
+          with_band(d.probability_pounding, d.probability_pounding_band, "%.4f").c_str(),
+          with_band(d.probability_free, d.probability_free_band, "%.4f").c_str(),
+          d.same_analyses ? " *" : "");
     }
   if (marked) std::printf("  %s\n", kLikeForLike);
   print_collapse(c, r, s);

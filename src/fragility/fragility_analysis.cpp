@@ -371,6 +371,7 @@ void add_bands_and_shifts(const FragilitySettings& s, std::size_t first,
       fc.band_lo.push_back(iv.lo);
       fc.band_hi.push_back(iv.hi);
     }
+    if (s.keep_replicates) fc.replicates = reps[j];
   }
   // The shift: curves come in (pounding, free) pairs except force.
   for (std::size_t j = 0; j + 1 < n; ++j) {
@@ -402,6 +403,7 @@ void add_bands_and_shifts(const FragilitySettings& s, std::size_t first,
                           ? reps[j][i].theta / (*free_reps)[i].theta
                           : kNan);
     sh.ci = percentile_interval(ratio, s.confidence);
+    if (s.keep_replicates) sh.free_same_replicates = *free_reps;
     r.shifts.push_back(sh);
   }
 }

@@ -50,6 +50,9 @@ struct FragilitySettings {
   BootstrapSettings bootstrap;    ///< replicates and seed
   double confidence = 0.90;       ///< of the bands [-]
   std::size_t grid_points = 120;  ///< IM points of the curve bands [-]
+  /// Keep every curve's bootstrap fits (FragilityCurve::replicates, FragilityShift::
+  /// free_same_replicates), for estimators built on them (pound risk's damage bands).
+  bool keep_replicates = false;
 };
 
 struct FragilityCurve {
@@ -71,6 +74,10 @@ struct FragilityCurve {
   double beta_asym_lo = 0, beta_asym_hi = 0;    ///< asymptotic: beta -+ z sd
   std::vector<Observation> observed;            ///< per stripe (or per IM bin when continuous)
   std::vector<double> band_lo, band_hi;         ///< bootstrap band of P on the report's grid
+  /// The fit of each bootstrap replicate, in replicate order (FragilitySettings::
+  /// keep_replicates; empty otherwise). Replicate r of every curve of one set (pooled, or one
+  /// model's) redraws the same analyses.
+  std::vector<LognormalFit> replicates;
 };
 
 /// The headline: median ratio theta_pounding / theta_free for one building, EDP and limit.
@@ -90,6 +97,9 @@ struct FragilityShift {
   double theta_pounding = 0.0, theta_free = 0.0;
   bool same_analyses = false;
   LognormalFit free_same;  ///< the free fit of theta_free (the free curve's when not same_analyses)
+  /// free_same fitted to each bootstrap replicate, paired with the pounding curve's replicates
+  /// (FragilitySettings::keep_replicates; empty otherwise).
+  std::vector<LognormalFit> free_same_replicates;
 };
 
 struct SensitivityRow {

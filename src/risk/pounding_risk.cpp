@@ -2,12 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 
 #include "campaign/amplification.hpp"
 #include "core/error.hpp"
 #include "motion/ground_motion.hpp"
+#include "risk/damage_risk.hpp"
 #include "risk/risk_integral.hpp"
 #include "risk/site_displacements.hpp"
 
@@ -16,14 +16,6 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kDesignReturnPeriod = 475.0;  // years: 10 % in 50 years (EN 1998-1 2.1)
-
-// The share of nu from intensities outside [lo, hi]: 1 - integral_lo^hi P |d lambda| / nu, the
-// part with the boundary terms of the integration by parts (risk_integral.hpp). NaN without a
-// finite fit.
-double outside_share(const HazardCurve& h, const LognormalFit& f, double nu, double lo, double hi) {
-  if (!f.finite() || !(nu > 0)) return kNaN;
-  return std::max(0.0, 1.0 - mean_annual_frequency(h, f.theta, f.beta, lo, hi) / nu);
-}
 
 // The pounding analysis of one pair: the free-run approach of each used sample (the largest
 // over the pair's levels) and everything fitted from it.
@@ -371,53 +363,6 @@ PairRisk analyse_pair(const PairAnalysis& pa, std::size_t p, const CampaignData&
   return pr;
 }
 
-// Damage limits with and without pounding (the campaign's own gaps): the fits of pound
-// fragility, without its bootstrap.
-std::vector<DamageRisk> damage_risks(const CampaignData& c, const HazardCurve& h,
-                                     const FragilitySettings& limits, double im_lo, double im_hi) {
-  FragilitySettings fs = limits;
-  fs.bootstrap.replicates = 0;
-  const FragilityReport fr = analyse_fragility(c, fs);
-  std::vector<DamageRisk> out;
-  for (std::size_t k = 0; k < fr.curves.size(); ++k) {
-    const FragilityCurve& pc = fr.curves[k];
-    if (!pc.pounding) continue;
-    DamageRisk dr;
-    dr.model = pc.model;
-    dr.building = pc.building;
-    dr.edp = pc.edp;
-    dr.limit = pc.limit;
-    dr.pounding = pc.fit;
-    dr.free.status = FitStatus::no_data;
-    if (k + 1 < fr.curves.size() && !fr.curves[k + 1].pounding && fr.curves[k + 1].edp == pc.edp &&
-        fr.curves[k + 1].limit == pc.limit && fr.curves[k + 1].building == pc.building &&
-        fr.curves[k + 1].model == pc.model)
-      dr.free = fr.curves[k + 1].fit;
-    dr.maf_pounding =
-        dr.pounding.finite() ? mean_annual_frequency(h, dr.pounding.theta, dr.pounding.beta) : kNaN;
-    dr.maf_free = dr.free.finite() ? mean_annual_frequency(h, dr.free.theta, dr.free.beta) : kNaN;
-    dr.ratio = dr.maf_pounding / dr.maf_free;
-    dr.maf_pounding_kept = dr.maf_pounding;
-    dr.free_same = dr.free;
-    for (const FragilityShift& sh : fr.shifts)
-      if (sh.same_analyses && sh.model == pc.model && sh.building == pc.building &&
-          sh.edp == pc.edp && sh.limit == pc.limit) {
-        // Like for like (DamageRisk::same_analyses).
-        dr.same_analyses = true;
-        dr.free_same = sh.free_same;
-        const double maf_same =
-            dr.free_same.finite() ? mean_annual_frequency(h, dr.free_same.theta, dr.free_same.beta)
-                                  : kNaN;
-        dr.ratio = dr.maf_pounding_kept / maf_same;
-        dr.maf_pounding = dr.maf_free * dr.ratio;
-      }
-    dr.outside_pounding = outside_share(h, dr.pounding, dr.maf_pounding_kept, im_lo, im_hi);
-    dr.outside_free = outside_share(h, dr.free, dr.maf_free, im_lo, im_hi);
-    out.push_back(dr);
-  }
-  return out;
-}
-
 // One pair's notes on what could not be estimated.
 void add_pair_notes(const PairRisk& pr, const PairAnalysis& pa, std::vector<std::string>& notes) {
   const std::string pair = "pair " + std::to_string(pr.pair + 1) + ": ";
@@ -468,54 +413,7 @@ void add_pair_notes(const PairRisk& pr, const PairAnalysis& pa, std::vector<std:
   }
 }
 
-// The damage limits whose nu comes by more than a quarter from extrapolated intensities.
-void add_damage_notes(const std::vector<DamageRisk>& damage, std::vector<std::string>& notes) {
-  std::string outside;
-  for (const auto& dr : damage)
-    for (double share : {dr.outside_pounding, dr.outside_free})
-      if (share > 0.25) {
-        char limit[32];
-        std::snprintf(limit, sizeof limit, "%g", dr.limit);
-        outside +=
-            (outside.empty() ? "" : ", ") + std::string(to_string(dr.edp)) +
-            (dr.edp == Edp::collapse ? "" : " " + std::string(limit) + " " + unit_of(dr.edp)) +
-            " (building " + std::to_string(dr.building + 1) +
-            (dr.model.empty() ? "" : ", " + dr.model + " alone") + ")";
-        break;
-      }
-  if (!outside.empty())
-    notes.push_back(
-        "damage limits whose nu takes more than 25 % from intensities outside the "
-        "campaign's (an extrapolated fit; a large beta puts weight on the frequent "
-        "weak motions): " +
-        outside);
-}
-
 }  // namespace
-
-// Collapse from the damage limits: nu and P in T years, their ratio, and the collapse margin
-// ratio theta / design intensity with a given design (MCE) intensity (FEMA P695, sec. 6.3).
-std::vector<CollapseRisk> collapse_risks(const std::vector<DamageRisk>& damage,
-                                         const RiskSettings& s, double design_im) {
-  std::vector<CollapseRisk> out;
-  for (const auto& d : damage) {
-    if (d.edp != Edp::collapse) continue;
-    CollapseRisk c;
-    static_cast<DamageRisk&>(c) = d;
-    c.theta_pounding = !d.pounding.finite() ? kNaN
-                       : !d.same_analyses
-                           ? d.pounding.theta
-                           : (d.free.finite() && d.free_same.finite()
-                                  ? d.free.theta * d.pounding.theta / d.free_same.theta
-                                  : kNaN);
-    c.probability_pounding = probability_in_years(d.maf_pounding, s.years);
-    c.probability_free = probability_in_years(d.maf_free, s.years);
-    c.cmr_pounding = design_im > 0 ? c.theta_pounding / design_im : kNaN;
-    c.cmr_free = design_im > 0 && d.free.finite() ? d.free.theta / design_im : kNaN;
-    out.push_back(c);
-  }
-  return out;
-}
 
 RiskReport analyse_risk(const CampaignData& c, const HazardCurve& h, const RiskSettings& s,
                         const std::vector<BuildingMode>& modes, const PairSites& sites,
@@ -554,7 +452,7 @@ RiskReport analyse_risk(const CampaignData& c, const HazardCurve& h, const RiskS
   for (std::size_t p = 0; p < npairs; ++p)
     r.pairs.push_back(analyse_pair(PairAnalysis(c, used, d, h, s, p), p, c, d, s, resampler, design,
                                    modes, sites));
-  r.damage = damage_risks(c, h, limits, im_lo, im_hi);
+  r.damage = damage_risks(c, h, limits, s, im_lo, im_hi);
   r.collapse = collapse_risks(r.damage, s, r.design_im_given ? r.design_im : 0.0);
 
   // What could not be estimated.

@@ -9,8 +9,8 @@
 // the smallest gap whose probability is at most a target (with a bootstrap band:
 // fragility/bootstrap.hpp), the code rules' gaps (code_rules.hpp, at each contact site:
 // site_displacements.hpp) and their probabilities,
-// and the mean annual frequencies of the damage limits with and without pounding. Pure: data
-// in, numbers out.
+// and the mean annual frequencies of the damage limits with and without pounding with their
+// bootstrap bands (damage_risk.hpp). Pure: data in, numbers out.
 #include <string>
 #include <vector>
 
@@ -122,6 +122,17 @@ struct DamageRisk {
   double maf_pounding_kept = 0.0;
   /// Share of each nu from intensities outside the campaign's (GapEstimate::outside_share).
   double outside_pounding = 0.0, outside_free = 0.0;
+  /// 1 - exp(-nu T) of maf_pounding and maf_free: in T = RiskSettings::years [-].
+  double probability_pounding = 0.0, probability_free = 0.0;
+  /// Bootstrap percentile bands (RiskSettings::confidence): the estimator above, like for like
+  /// included, on the fits of each replicate of the fragility bootstrap (fragility/bootstrap.hpp:
+  /// resampling within stripes, every curve of a set on the same redrawn analyses, so the
+  /// pounding and free fits of a replicate are paired). Each band's `finite` counts the
+  /// replicates with a finite value (a replicate's fit may have no finite estimate); NaN bounds
+  /// when none has, or without replicates.
+  Interval maf_pounding_band, maf_free_band, ratio_band;      ///< [1/yr], [1/yr], [-]
+  Interval probability_pounding_band, probability_free_band;  ///< in T years [-]
+  int bootstrap_replicates = 0;                               ///< replicates drawn [-]
 };
 
 /// Collapse of a building (issue 23): its damage limit Edp::collapse (the rates with and without
@@ -132,7 +143,6 @@ struct CollapseRisk : DamageRisk {
   /// (same_analyses) the free median of all analyses times the like-for-like shift
   /// theta_pounding / theta_free_same (FragilityShift).
   double theta_pounding = 0.0;
-  double probability_pounding = 0.0, probability_free = 0.0;  ///< in T years [-]
   double cmr_pounding = 0.0, cmr_free = 0.0;  ///< [-]; NaN without a design intensity or fit
 };
 

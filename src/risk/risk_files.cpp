@@ -48,12 +48,27 @@ std::string rules_csv(const RiskReport& r) {
   return s;
 }
 
+// The point probabilities in T years and the bootstrap bands of a damage limit (DamageRisk).
+std::string damage_band_fields(const DamageRisk& d) {
+  std::string s = csv_number(d.probability_pounding) + "," + csv_number(d.probability_free);
+  for (const Interval& iv : {d.maf_pounding_band, d.maf_free_band, d.ratio_band,
+                             d.probability_pounding_band, d.probability_free_band})
+    s += "," + csv_number(iv.lo) + "," + csv_number(iv.hi);
+  return s + "," + std::to_string(d.bootstrap_replicates) + "," +
+         std::to_string(d.maf_pounding_band.finite) + "," + std::to_string(d.maf_free_band.finite);
+}
+
 std::string damage_csv(const CampaignData& c, const RiskReport& r) {
   std::string s =
       "building,building_name,edp,unit,limit,status_pounding,theta_pounding_mps2,beta_pounding,"
       "status_free,theta_free_mps2,beta_free,maf_pounding_per_year,maf_free_per_year,ratio,"
       "maf_share_outside_campaign_pounding,maf_share_outside_campaign_free,model,"
-      "free_same_analyses,theta_free_same_mps2,beta_free_same,maf_pounding_kept_per_year\n";
+      "free_same_analyses,theta_free_same_mps2,beta_free_same,maf_pounding_kept_per_year,"
+      "probability_pounding,probability_free,maf_pounding_ci90_lo_per_year,"
+      "maf_pounding_ci90_hi_per_year,maf_free_ci90_lo_per_year,maf_free_ci90_hi_per_year,"
+      "ratio_ci90_lo,ratio_ci90_hi,probability_pounding_ci90_lo,probability_pounding_ci90_hi,"
+      "probability_free_ci90_lo,probability_free_ci90_hi,bootstrap_replicates,"
+      "band_finite_pounding,band_finite_free\n";
   for (const auto& d : r.damage)
     s += std::to_string(d.building) + "," + c.building_name(d.building) + "," + to_string(d.edp) +
          "," + unit_of(d.edp) + "," + csv_number(d.limit) + "," + fit_fields(d.pounding) + "," +
@@ -63,7 +78,7 @@ std::string damage_csv(const CampaignData& c, const RiskReport& r) {
          (d.same_analyses ? "1" : "0") + "," +
          csv_number(d.free_same.finite() ? d.free_same.theta : NAN) + "," +
          csv_number(d.free_same.finite() ? d.free_same.beta : NAN) + "," +
-         csv_number(d.maf_pounding_kept) + "\n";
+         csv_number(d.maf_pounding_kept) + "," + damage_band_fields(d) + "\n";
   return s;
 }
 
@@ -87,6 +102,52 @@ std::string joined(const std::vector<std::string>& v) {
   std::string s;
   for (const auto& x : v) s += (s.empty() ? "" : ",") + x;
   return s;
+}
+
+// /risk/damage: per limit its building, limit, rates, ratio, probabilities in T years, their
+// bootstrap bands (NAME_lo, NAME_hi) and the replicates with a finite value.
+void write_damage(hid_t id, const std::string& g, const RiskReport& r) {
+  struct Column {
+    const char* name;
+    const char* units;
+    double DamageRisk::*point;
+    Interval DamageRisk::*band;
+  };
+  constexpr Column kColumns[] = {
+      {"maf_pounding", "1/yr", &DamageRisk::maf_pounding, &DamageRisk::maf_pounding_band},
+      {"maf_free", "1/yr", &DamageRisk::maf_free, &DamageRisk::maf_free_band},
+      {"ratio", "-", &DamageRisk::ratio, &DamageRisk::ratio_band},
+      {"probability_pounding", "-", &DamageRisk::probability_pounding,
+       &DamageRisk::probability_pounding_band},
+      {"probability_free", "-", &DamageRisk::probability_free, &DamageRisk::probability_free_band}};
+  std::vector<double> b, lim, finite_p, finite_f;
+  std::vector<std::string> edp, model;
+  for (const auto& d : r.damage) {
+    b.push_back(double(d.building));
+    edp.push_back(to_string(d.edp));
+    model.push_back(d.model.empty() ? "all" : d.model);
+    lim.push_back(d.limit);
+    finite_p.push_back(double(d.maf_pounding_band.finite));
+    finite_f.push_back(double(d.maf_free_band.finite));
+  }
+  const hsize_t D = r.damage.size();
+  put(id, g + "/building", b, {D}, "-");
+  h5::attribute(id, g, "edp", joined(edp));
+  h5::attribute(id, g, "model", joined(model));
+  put(id, g + "/limit", lim, {D});
+  for (const Column& col : kColumns) {
+    std::vector<double> v, lo, hi;
+    for (const auto& d : r.damage) {
+      v.push_back(d.*col.point);
+      lo.push_back((d.*col.band).lo);
+      hi.push_back((d.*col.band).hi);
+    }
+    put(id, g + "/" + col.name, v, {D}, col.units);
+    put(id, g + "/" + col.name + "_lo", lo, {D}, col.units);
+    put(id, g + "/" + col.name + "_hi", hi, {D}, col.units);
+  }
+  put(id, g + "/band_finite_pounding", finite_p, {D}, "-");
+  put(id, g + "/band_finite_free", finite_f, {D}, "-");
 }
 
 void write_h5(const std::string& path, const CampaignData& c, const HazardCurve& h,
@@ -185,25 +246,7 @@ void write_h5(const std::string& path, const CampaignData& c, const HazardCurve&
       put(id, pg + "/median_left", p.median_left, {p.median_left.size()}, "m");
       put(id, pg + "/median_right", p.median_right, {p.median_right.size()}, "m");
     }
-    std::vector<double> b, lim, mp, mf, ratio;
-    std::vector<std::string> edp, model;
-    for (const auto& d : r.damage) {
-      b.push_back(double(d.building));
-      edp.push_back(to_string(d.edp));
-      model.push_back(d.model.empty() ? "all" : d.model);
-      lim.push_back(d.limit);
-      mp.push_back(d.maf_pounding);
-      mf.push_back(d.maf_free);
-      ratio.push_back(d.ratio);
-    }
-    const hsize_t D = r.damage.size();
-    put(id, g + "/damage/building", b, {D}, "-");
-    h5::attribute(id, g + "/damage", "edp", joined(edp));
-    h5::attribute(id, g + "/damage", "model", joined(model));
-    put(id, g + "/damage/limit", lim, {D});
-    put(id, g + "/damage/maf_pounding", mp, {D}, "1/yr");
-    put(id, g + "/damage/maf_free", mf, {D}, "1/yr");
-    put(id, g + "/damage/ratio", ratio, {D}, "-");
+    write_damage(id, g + "/damage", r);
     f.close();  // a failed write (disk full) is reported here, before the file is renamed
   }
   out.commit();

@@ -97,6 +97,14 @@ void with_and_without(JsonWriter& w, const std::string& name, const T& pounding,
   w.field(name + "_pounding", pounding).field(name + "_free", free);
 }
 
+void band(JsonWriter& w, const std::string& name, const Interval& iv) {
+  w.key(name);
+  if (std::isfinite(iv.lo) && std::isfinite(iv.hi))
+    w.array({iv.lo, iv.hi});
+  else
+    w.null();
+}
+
 // The fields of a damage limit, a collapse's too (CollapseRisk is a DamageRisk).
 void damage_fields(JsonWriter& w, const DamageRisk& d) {
   w.field("model", d.model.empty() ? std::string("all") : d.model)
@@ -109,6 +117,14 @@ void damage_fields(JsonWriter& w, const DamageRisk& d) {
   w.field("ratio", d.ratio)
       .field("free_same_analyses", d.same_analyses)
       .field("maf_pounding_kept", d.maf_pounding_kept);
+  // The bootstrap bands: [lo, hi], or null where no replicate gave a finite value.
+  band(w, "maf_pounding_band", d.maf_pounding_band);
+  band(w, "maf_free_band", d.maf_free_band);
+  band(w, "ratio_band", d.ratio_band);
+  band(w, "probability_pounding_band", d.probability_pounding_band);
+  band(w, "probability_free_band", d.probability_free_band);
+  w.field("band_finite_pounding", long(d.maf_pounding_band.finite))
+      .field("band_finite_free", long(d.maf_free_band.finite));
 }
 
 }  // namespace
@@ -165,7 +181,10 @@ std::string risk_json(const RiskRun& run) {
     w.end_object();
   }
   w.end_array();
-  w.objects("damage", r.damage, [&](const DamageRisk& d) { damage_fields(w, d); });
+  w.objects("damage", r.damage, [&](const DamageRisk& d) {
+    damage_fields(w, d);
+    with_and_without(w, "probability", d.probability_pounding, d.probability_free);
+  });
   w.objects("collapse", r.collapse, [&](const CollapseRisk& k) {
     damage_fields(w, k);
     with_and_without(w, "theta", k.theta_pounding, k.free.finite() ? k.free.theta : NAN);

@@ -95,9 +95,54 @@ TEST(CmdRisk, JsonFieldsFilesAndUntouchedCampaign) {
       "assert [x['edp'] for x in d['damage']][:1] == ['collapse']\n"
       "assert len(d['collapse']) == 2 and all(x['model'] == 'all' for x in d['collapse'])\n"
       "for x in d['collapse']:\n"
-      "    assert x['cmr_pounding'] is None and x['cmr_free'] is None  # no --design-im\n";
+      "    assert x['cmr_pounding'] is None and x['cmr_free'] is None  # no --design-im\n"
+      "# The bootstrap bands of the damage limits (50 replicates): [lo, hi] or null, the\n"
+      "# probabilities' within [0, 1]; the CSV keeps its first columns and appends the bands,\n"
+      "# the same numbers as the JSON.\n"
+      "import csv\n"
+      "rows = list(csv.DictReader(open(sys.argv[2])))\n"
+      "head = open(sys.argv[2]).readline().strip().split(',')\n"
+      "assert head[:21] == ['building', 'building_name', 'edp', 'unit', 'limit',\n"
+      "    'status_pounding', 'theta_pounding_mps2', 'beta_pounding', 'status_free',\n"
+      "    'theta_free_mps2', 'beta_free', 'maf_pounding_per_year', 'maf_free_per_year', 'ratio',\n"
+      "    'maf_share_outside_campaign_pounding', 'maf_share_outside_campaign_free', 'model',\n"
+      "    'free_same_analyses', 'theta_free_same_mps2', 'beta_free_same',\n"
+      "    'maf_pounding_kept_per_year'], head\n"
+      "assert len(rows) == len(d['damage'])\n"
+      "def same(a, b):\n"
+      "    return (a == '' and b is None) or abs(float(a) - b) <= 1e-9 * abs(b)\n"
+      "banded = 0\n"
+      "for x, row in zip(d['damage'], rows):\n"
+      "    for k in ('maf_pounding', 'maf_free', 'ratio', 'probability_pounding',\n"
+      "              'probability_free'):\n"
+      "        b = x[k + '_band']\n"
+      "        assert b is None or b[0] <= b[1], (k, b)\n"
+      "        col = k.replace('maf_pounding', 'maf_pounding_ci90_{}_per_year').replace(\n"
+      "            'maf_free', 'maf_free_ci90_{}_per_year') if k.startswith('maf') else k + "
+      "'_ci90_{}'\n"
+      "        assert same(row[col.format('lo')], b and b[0]), (col, row, b)\n"
+      "        assert same(row[col.format('hi')], b and b[1]), (col, row, b)\n"
+      "    for k in ('probability_pounding', 'probability_free'):\n"
+      "        b = x[k + '_band']\n"
+      "        assert b is None or 0 <= b[0] <= b[1] <= 1, (k, b)\n"
+      "        assert same(row[k], x[k]), (k, row[k], x[k])\n"
+      "    assert row['bootstrap_replicates'] == '50'\n"
+      "    assert int(row['band_finite_pounding']) == x['band_finite_pounding'] <= 50\n"
+      "    banded += x['probability_pounding_band'] is not None\n"
+      "assert banded >= 2, banded  # at least the two collapse limits\n"
+      "import h5py, math\n"
+      "with h5py.File(sys.argv[3], 'r') as f:\n"
+      "    g = f['risk/damage']\n"
+      "    for i, x in enumerate(d['damage']):\n"
+      "        for k in ('maf_pounding', 'ratio', 'probability_pounding', 'probability_free'):\n"
+      "            for j, end in enumerate(('_lo', '_hi')):\n"
+      "                v, b = float(g[k + end][i]), x[k + '_band']\n"
+      "                assert (math.isnan(v) and b is None) or v == b[j], (k, end, v, b)\n"
+      "        assert g['band_finite_free'][i] == x['band_finite_free']\n";
   std::ofstream(dir() + "/check.py") << check;
-  EXPECT_EQ(sh("/usr/bin/python3 " + dir() + "/check.py " + json + " 2>" + dir() + "/py.log"), 0)
+  EXPECT_EQ(sh("/usr/bin/python3 " + dir() + "/check.py " + json + " " + out + "/damage_maf.csv " +
+               out + "/risk.h5 2>" + dir() + "/py.log"),
+            0)
       << slurp(dir() + "/py.log") << slurp(json);
   // The table is printed first without --json.
   ASSERT_EQ(sh(risk("--hazard " + hazard("h.csv") + " --out " + out + " --replicates 20 > " +
@@ -107,6 +152,8 @@ TEST(CmdRisk, JsonFieldsFilesAndUntouchedCampaign) {
   EXPECT_LT(text.find("Gap needed for the target"), text.find("Code rules"));
   EXPECT_LT(text.find("Code rules"), text.find("Pounding at each gap"));
   EXPECT_NE(text.find("log-log"), std::string::npos);  // the rule beyond the ends is stated
+  EXPECT_NE(text.find("P50 pound [band]"), std::string::npos) << text;       // the damage limits
+  EXPECT_NE(text.find("P50 pound [90 % band]"), std::string::npos) << text;  // collapse
 }
 
 // EN 1998-1 4.4.2.7(3) from the campaign's floors: the smoke pair with the second storey 3.5 m
