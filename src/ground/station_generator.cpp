@@ -1,8 +1,10 @@
 #include "ground/station_generator.hpp"
 
+#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <stdexcept>
 #include <string>
 #include <utility>
 
@@ -41,6 +43,11 @@ constexpr double kMisfitMargin = 0.02;
 // spectrum evaluations instead of 44 (40 random targets, bench_simqke stations) for a mean RMS
 // score 1 % higher (0.1150 against 0.1139).
 constexpr double kStallGain = 0.05;
+// Step 5 (the low-frequency pin): a bin below the lowest matching frequency is set to the
+// conditional start where the innovation's share L_jj <= kPinFull, left as matched from
+// kPinNone, linearly between (docs/ground.md, "The relative displacement of generated pairs").
+constexpr double kPinFull = 0.05;
+constexpr double kPinNone = 0.1;
 // Phase sets (innovation draws) of a station j >= 2 at most: this factor times max_attempts (a
 // station starts close to the target, so a draw costs less than one motion's).
 constexpr int kAttemptFactor = 2;
@@ -99,6 +106,48 @@ std::vector<double> smoothed(const std::vector<double>& p) {
 
 }  // namespace
 
+// The least-norm correction delta of a record a of n samples (min |delta|^2) such that the
+// unnormalised transform of a + delta, zero-padded to nfft, takes given values at bins 1..K,
+// sum_t (a_t + delta_t) exp(-i 2 pi k t / nfft) = Z_k, and the final velocity and displacement
+// of a + delta (motion_processing.hpp's exact integration of the piecewise-linear record from
+// rest) are 0: delta = A^T (A A^T)^-1 (r - A a), A the 2K + 2 rows of those linear functionals.
+struct StationGenerator::LowFrequencyPin {
+  std::size_t n = 0, bins = 0;
+  Eigen::MatrixXd a;
+  Eigen::LDLT<Eigen::MatrixXd> gram;
+  LowFrequencyPin(std::size_t samples, std::size_t nfft, double dt, std::size_t k_max)
+      : n(samples), bins(k_max) {
+    const auto rows = Eigen::Index(2 * bins + 2);
+    a.resize(rows, Eigen::Index(n));
+    for (std::size_t k = 1; k <= bins; ++k)
+      for (std::size_t t = 0; t < n; ++t) {
+        const double ph = 2.0 * M_PI * double(k) * double(t) / double(nfft);
+        a(Eigen::Index(2 * k - 2), Eigen::Index(t)) = std::cos(ph);
+        a(Eigen::Index(2 * k - 1), Eigen::Index(t)) = -std::sin(ph);
+      }
+    // v_end = dt sum_i (a_i + a_i+1) / 2; d_end = sum_{i < n-1} [dt v_i + dt^2 (2 a_i + a_i+1)
+    // / 6]: the weights of a_t in each.
+    for (std::size_t t = 0; t < n; ++t) {
+      const double inner = (t == 0 || t + 1 == n) ? 0.5 : 1.0;
+      const double later = double(t + 2 <= n ? n - 2 - t : 0) + (t >= 1 ? double(n - 1 - t) : 0.0);
+      const double own = 2.0 * (t + 1 < n ? 1.0 : 0.0) + (t >= 1 ? 1.0 : 0.0);
+      a(rows - 2, Eigen::Index(t)) = dt * inner;
+      a(rows - 1, Eigen::Index(t)) = 0.5 * dt * dt * later + dt * dt / 6.0 * own;
+    }
+    gram.compute(a * a.transpose());
+  }
+  void apply(std::vector<double>& accel, const std::vector<std::complex<double>>& z) const {
+    if (accel.size() != n) throw std::logic_error("station generator: record of another length");
+    Eigen::Map<Eigen::VectorXd> x(accel.data(), Eigen::Index(n));
+    Eigen::VectorXd r = -(a * x);
+    for (std::size_t k = 1; k <= bins; ++k) {
+      r(Eigen::Index(2 * k - 2)) += z[k].real();
+      r(Eigen::Index(2 * k - 1)) += z[k].imag();
+    }
+    x += a.transpose() * gram.solve(r);
+  }
+};
+
 std::uint32_t station_phase_stream(int station, int attempt) {
   return std::uint32_t(attempt) + 65536u * std::uint32_t(station);
 }
@@ -114,6 +163,12 @@ StationGenerator::StationGenerator(const DesignSpectrum& target, double duration
   if (!coherent_) {
     factor_coherency(false, cond_);
     factor_coherency(true, cond_random_);
+    const double f_lo = 1.0 / gen_.match_periods().back();
+    std::size_t k_max = 0;
+    while (gen_.bin_frequency(k_max + 1) < f_lo) ++k_max;
+    const std::size_t n = std::size_t(std::llround(duration / settings.dt)) + 1;
+    const auto nfft = std::size_t(std::llround(1.0 / (gen_.bin_frequency(1) * settings.dt)));
+    pin_ = std::make_unique<LowFrequencyPin>(n, nfft, settings.dt, k_max);
   }
 }
 
@@ -245,6 +300,37 @@ SimqkeAttempt StationGenerator::match_station(const SimqkeStart& start, GroundMo
   return gen_.match(st, std::move(m0), correct);
 }
 
+// Step 5: the kept motion's bins below f_lo pinned to Z_k = X_k + w_k (z_k - X_k) (w_k from
+// L_jj, cond_j[k * tri]), its final velocity and displacement kept at 0, its score evaluated
+// again as SimqkeGenerator::match scores (max |q - 1|, or the RMS of ln q for a random target).
+void StationGenerator::pin_low_frequencies(const SimqkeStart& start, const std::vector<Complex>& z,
+                                           const double* cond_j, std::size_t tri,
+                                           SimqkeAttempt& a) {
+  std::vector<Complex> x, target(pin_->bins + 1);
+  gen_.transform(a.motion.accel, x);
+  bool moved = false;
+  for (std::size_t k = 1; k <= pin_->bins; ++k) {
+    const double l = cond_j[k * tri];
+    const double w =
+        l <= kPinFull ? 1.0 : (l >= kPinNone ? 0.0 : (kPinNone - l) / (kPinNone - kPinFull));
+    target[k] = x[k] + w * (z[k] - x[k]);
+    moved = moved || w > 0.0;
+  }
+  if (!moved) return;
+  pin_->apply(a.motion.accel, target);
+  std::vector<double> psa;
+  gen_.spectrum(a.motion, psa);
+  ++a.spectra;
+  double max_dev = 0.0, sum_sq = 0.0;
+  for (std::size_t i = 0; i < psa.size(); ++i) {
+    const double q = psa[i] / start.target[i];
+    max_dev = std::max(max_dev, std::fabs(q - 1.0));
+    sum_sq += std::log(q) * std::log(q);
+  }
+  a.score = start.rms_score ? std::sqrt(sum_sq / double(psa.size())) : max_dev;
+  a.match = compare_spectra(psa, start.target);
+}
+
 // Station j (0-based, j >= 1) of (seed, index): the conditional start from the matched stations
 // before it (their Fourier transforms x[m], m < j), matched; its transform stored in x[j].
 GeneratedMotion StationGenerator::station(const SimqkeStart& start, std::uint64_t seed,
@@ -282,6 +368,7 @@ GeneratedMotion StationGenerator::station(const SimqkeStart& start, std::uint64_
     GroundMotion m0;
     gen_.inverse(z, m0);
     SimqkeAttempt a = match_station(start, std::move(m0), misfit);
+    pin_low_frequencies(start, z, cond.data() + packed(j, j), tri, a);
     spectra += a.spectra;
     if (a.score < best.score) {
       best = std::move(a);

@@ -116,15 +116,18 @@ Relative relative_energy(const PairSet& s, std::size_t j, std::size_t k) {
   return out;
 }
 
-// Every model at 12 and 50 m, random targets (the campaigns' default), 60 motions each:
-//  * the generation does not make the pair more coherent than the model: the RMS relative
-//    displacement is at least 0.75 of the model's;
-//  * where the model's relative displacement is large (Harichandran-Vanmarcke, Hao et al.: a
-//    coherency floor below 1 at zero frequency) it is within 10 % above the model's;
-//  * the generation's own floor (docs/ground.md, "The relative displacement of generated
-//    pairs"): what the set has above the model, sqrt(achieved - model), is at most 0.08 of the
-//    RMS displacement. For the models that tend to 1 (Luco-Wong, Abrahamson) this floor, not
-//    the model, is most of the relative displacement: measured 1.5-6 times the model's RMS.
+// Every model at 12 and 50 m, random targets (the campaigns' default), 60 motions each
+// (docs/ground.md, "The relative displacement of generated pairs"; measured ratios of the RMS
+// relative displacement to the model's: 0.81-1.02, Abrahamson rock 1.32 and 1.18):
+//  * the generation does not make the pair much more coherent than the model: the ratio is at
+//    least 0.78 (HV86 at 50 m: 0.81, the one model whose pairs stay more coherent than it);
+//  * it is at most 1.10 for every model but Abrahamson rock, whose prediction (0.2-0.7 mm, 0.15-
+//    0.5 % of the RMS displacement) is below what the stations' own matching at 2-5 s leaves
+//    (0.2-0.5 Hz); for it at most 1.40;
+//  * what the set has above the model, sqrt(achieved - model), is at most 0.5 % of the RMS
+//    displacement (measured at most 0.3 %; 1-6.5 % before the low-frequency pin of step 5 of
+//    station_generator.hpp, which gave Luco-Wong and the Abrahamson models 1.5-6 times their
+//    prediction).
 TEST(GroundRelativeDisplacement, GeneratedPairsMoveApartAsTheirModelPredicts) {
   for (const char* model : {"harichandran-vanmarcke-1986", "hao-oliveira-penzien-1989",
                             "luco-wong-1986", "abrahamson-2007-soil", "abrahamson-2007-rock"})
@@ -137,14 +140,13 @@ TEST(GroundRelativeDisplacement, GeneratedPairsMoveApartAsTheirModelPredicts) {
           r.rms_relative * std::sqrt(std::max(0.0, r.achieved - r.model) / r.achieved);
       std::printf(
           "%s at %g m: RMS relative displacement %.2f mm, model %.2f mm (ratio %.3f), "
-          "RMS displacement %.1f mm, above the model %.1f %% of it\n",
+          "RMS displacement %.1f mm, above the model %.2f %% of it\n",
           model, d, 1e3 * r.rms_relative, 1e3 * r.rms_relative / ratio, ratio,
           1e3 * r.rms_displacement, 100.0 * floor / r.rms_displacement);
-      EXPECT_GT(ratio, 0.75) << model << " at " << d << " m";
-      if (s.model.fitted_min_separation() > 0.0) {
-        EXPECT_LT(ratio, 1.10) << model << " at " << d << " m";
-      }
-      EXPECT_LT(floor, 0.08 * r.rms_displacement) << model << " at " << d << " m";
+      EXPECT_GT(ratio, 0.78) << model << " at " << d << " m";
+      const bool rock = std::string(model) == "abrahamson-2007-rock";
+      EXPECT_LT(ratio, rock ? 1.40 : 1.10) << model << " at " << d << " m";
+      EXPECT_LT(floor, 0.005 * r.rms_displacement) << model << " at " << d << " m";
     }
 }
 
