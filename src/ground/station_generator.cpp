@@ -33,8 +33,11 @@ constexpr double kCalibrationF1 = 6.0;          // [Hz]
 // which the iteration ends [-] (below SimqkeSettings::accept_score = 0.095 by default).
 constexpr double kDeadBand = 0.07;
 constexpr double kStopScore = 0.085;
-// With a random target (record-to-record variability, RMS score): the dead band widened to the
-// earlier stations' mean ln(target / computed) +- kMisfitMargin where they miss it by more.
+// The dead band widened to the earlier stations' mean ln(target / computed) +- kMisfitMargin
+// where they miss it by more: with a random target (record-to-record variability, RMS score)
+// without a limit, with the design spectrum up to ln(1 +- kStopScore) (issue 37: a station that
+// chases a period its neighbours miss as much makes its amplitudes there differ from theirs,
+// which under a model near 1 was most of the pair's relative displacement at 0.2-1 Hz).
 constexpr double kMisfitMargin = 0.02;
 // With a random target the iteration of a station has no stop score (its RMS score has no
 // fixed goal); for SIMQKE's stall rules an iteration improves only when it lowers the score by
@@ -267,7 +270,9 @@ SimqkeAttempt StationGenerator::match_station(const SimqkeStart& start, GroundMo
     st.stall_gain = kStallGain;
   else
     st.stop_score = kStopScore;
-  const bool widen = start.rms_score;
+  // ln(1 + kStopScore), ln(1 - kStopScore): with the design target the widened band stays
+  // within the stop score.
+  const double cap_hi = std::log(1.0 + kStopScore), cap_lo = std::log(1.0 - kStopScore);
   // Below the lowest matching frequency f_lo the correction fades out over one octave: weight
   // ln(f / (f_lo / 2)) / ln 2 of its logarithm (SIMQKE holds the end ratio there).
   const double f_lo = 1.0 / gen_.match_periods().back();
@@ -284,8 +289,11 @@ SimqkeAttempt StationGenerator::match_station(const SimqkeStart& start, GroundMo
     r.resize(np);
     for (std::size_t i = 0; i < np; ++i) {
       const double l = std::log(ratio[i]);
-      const double hi = widen ? std::max(kDeadBand, misfit[i] + kMisfitMargin) : kDeadBand;
-      const double lo = widen ? std::min(-kDeadBand, misfit[i] - kMisfitMargin) : -kDeadBand;
+      const double up =
+          start.rms_score ? misfit[i] + kMisfitMargin : std::min(misfit[i] + kMisfitMargin, cap_hi);
+      const double down =
+          start.rms_score ? misfit[i] - kMisfitMargin : std::max(misfit[i] - kMisfitMargin, cap_lo);
+      const double hi = std::max(kDeadBand, up), lo = std::min(-kDeadBand, down);
       r[i] = l > hi ? l - hi : (l < lo ? l - lo : 0.0);
     }
     t.resize(np);
@@ -388,17 +396,14 @@ std::vector<GeneratedMotion> StationGenerator::run(const SimqkeStart& start, std
   if (coherent_) {
     for (std::size_t j = 1; j < s; ++j) out.push_back(out.front());
   } else {
-    // x[m]: the matched stations' transforms; with a random target, misfit: the sum of their
-    // ln(target / computed) at the matching periods.
+    // x[m]: the matched stations' transforms; misfit: the sum of their ln(target / computed) at
+    // the matching periods.
     std::vector<std::vector<Complex>> x(s);
     std::vector<double> misfit(start.target.size(), 0.0), psa;
     gen_.transform(out.front().motion.accel, x[0]);
     for (std::size_t j = 1; j < s; ++j) {
-      if (start.rms_score) {
-        gen_.spectrum(out.back().motion, psa);
-        for (std::size_t i = 0; i < psa.size(); ++i)
-          misfit[i] += std::log(start.target[i] / psa[i]);
-      }
+      gen_.spectrum(out.back().motion, psa);
+      for (std::size_t i = 0; i < psa.size(); ++i) misfit[i] += std::log(start.target[i] / psa[i]);
       out.push_back(station(start, seed, index, j, x, misfit));
     }
   }

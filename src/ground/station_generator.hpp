@@ -47,12 +47,13 @@
 //    changed only where it is out of the band, so the set keeps the start's cross spectra:
 //    SIMQKE's own iteration keeps correcting periods already within tolerance, a random walk
 //    of each station's Fourier amplitudes that cost the former generator 0.03-0.16 of
-//    coherency at 1-6 Hz and decorrelated close stations below 1 Hz. With a random target (RMS
-//    score) the band is widened to the earlier stations' mean ln(target / computed) +- 0.02
-//    where they miss it by more (a station does not chase an ordinate no motion reaches), and
-//    the iteration has no stop score; for its stall rules an iteration improves only when it
-//    lowers the score 5 % below the last one that did (SimqkeStart::stall_gain). Phase sets:
-//    station j alone, W_j drawn again from the next stream, at most 2 max_attempts (2
+//    coherency at 1-6 Hz and decorrelated close stations below 1 Hz. The band is widened to the
+//    earlier stations' mean ln(target / computed) +- 0.02 where they miss it by more (a station
+//    does not chase an ordinate its neighbours miss as much, or no motion reaches): with the
+//    design spectrum up to ln(1 +- 0.085) (issue 37), with a random target (RMS score) without
+//    a limit; the latter's iteration has no stop score; for its stall rules an iteration improves
+//    only when it lowers the score 5 % below the last one that did (SimqkeStart::stall_gain). Phase
+//    sets: station j alone, W_j drawn again from the next stream, at most 2 max_attempts (2
 //    max_attempts_random_target) draws, the one of the smallest score kept.
 // 5. Below the lowest matching frequency f_lo nothing is matched, but each station's own
 //    processing (its corrections cut to the record, its baseline corrections) leaves there a
