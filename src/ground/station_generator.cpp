@@ -1,8 +1,10 @@
 #include "ground/station_generator.hpp"
 
+#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <stdexcept>
 #include <string>
 #include <utility>
 
@@ -31,8 +33,11 @@ constexpr double kCalibrationF1 = 6.0;          // [Hz]
 // which the iteration ends [-] (below SimqkeSettings::accept_score = 0.095 by default).
 constexpr double kDeadBand = 0.07;
 constexpr double kStopScore = 0.085;
-// With a random target (record-to-record variability, RMS score): the dead band widened to the
-// earlier stations' mean ln(target / computed) +- kMisfitMargin where they miss it by more.
+// The dead band widened to the earlier stations' mean ln(target / computed) +- kMisfitMargin
+// where they miss it by more: with a random target (record-to-record variability, RMS score)
+// without a limit, with the design spectrum up to ln(1 +- kStopScore) (issue 37: a station that
+// chases a period its neighbours miss as much makes its amplitudes there differ from theirs,
+// which under a model near 1 was most of the pair's relative displacement at 0.2-1 Hz).
 constexpr double kMisfitMargin = 0.02;
 // With a random target the iteration of a station has no stop score (its RMS score has no
 // fixed goal); for SIMQKE's stall rules an iteration improves only when it lowers the score by
@@ -41,6 +46,11 @@ constexpr double kMisfitMargin = 0.02;
 // spectrum evaluations instead of 44 (40 random targets, bench_simqke stations) for a mean RMS
 // score 1 % higher (0.1150 against 0.1139).
 constexpr double kStallGain = 0.05;
+// Step 5 (the low-frequency pin): a bin below the lowest matching frequency is set to the
+// conditional start where the innovation's share L_jj <= kPinFull, left as matched from
+// kPinNone, linearly between (docs/ground.md, "The relative displacement of generated pairs").
+constexpr double kPinFull = 0.05;
+constexpr double kPinNone = 0.1;
 // Phase sets (innovation draws) of a station j >= 2 at most: this factor times max_attempts (a
 // station starts close to the target, so a draw costs less than one motion's).
 constexpr int kAttemptFactor = 2;
@@ -99,6 +109,48 @@ std::vector<double> smoothed(const std::vector<double>& p) {
 
 }  // namespace
 
+// The least-norm correction delta of a record a of n samples (min |delta|^2) such that the
+// unnormalised transform of a + delta, zero-padded to nfft, takes given values at bins 1..K,
+// sum_t (a_t + delta_t) exp(-i 2 pi k t / nfft) = Z_k, and the final velocity and displacement
+// of a + delta (motion_processing.hpp's exact integration of the piecewise-linear record from
+// rest) are 0: delta = A^T (A A^T)^-1 (r - A a), A the 2K + 2 rows of those linear functionals.
+struct StationGenerator::LowFrequencyPin {
+  std::size_t n = 0, bins = 0;
+  Eigen::MatrixXd a;
+  Eigen::LDLT<Eigen::MatrixXd> gram;
+  LowFrequencyPin(std::size_t samples, std::size_t nfft, double dt, std::size_t k_max)
+      : n(samples), bins(k_max) {
+    const auto rows = Eigen::Index(2 * bins + 2);
+    a.resize(rows, Eigen::Index(n));
+    for (std::size_t k = 1; k <= bins; ++k)
+      for (std::size_t t = 0; t < n; ++t) {
+        const double ph = 2.0 * M_PI * double(k) * double(t) / double(nfft);
+        a(Eigen::Index(2 * k - 2), Eigen::Index(t)) = std::cos(ph);
+        a(Eigen::Index(2 * k - 1), Eigen::Index(t)) = -std::sin(ph);
+      }
+    // v_end = dt sum_i (a_i + a_i+1) / 2; d_end = sum_{i < n-1} [dt v_i + dt^2 (2 a_i + a_i+1)
+    // / 6]: the weights of a_t in each.
+    for (std::size_t t = 0; t < n; ++t) {
+      const double inner = (t == 0 || t + 1 == n) ? 0.5 : 1.0;
+      const double later = double(t + 2 <= n ? n - 2 - t : 0) + (t >= 1 ? double(n - 1 - t) : 0.0);
+      const double own = 2.0 * (t + 1 < n ? 1.0 : 0.0) + (t >= 1 ? 1.0 : 0.0);
+      a(rows - 2, Eigen::Index(t)) = dt * inner;
+      a(rows - 1, Eigen::Index(t)) = 0.5 * dt * dt * later + dt * dt / 6.0 * own;
+    }
+    gram.compute(a * a.transpose());
+  }
+  void apply(std::vector<double>& accel, const std::vector<std::complex<double>>& z) const {
+    if (accel.size() != n) throw std::logic_error("station generator: record of another length");
+    Eigen::Map<Eigen::VectorXd> x(accel.data(), Eigen::Index(n));
+    Eigen::VectorXd r = -(a * x);
+    for (std::size_t k = 1; k <= bins; ++k) {
+      r(Eigen::Index(2 * k - 2)) += z[k].real();
+      r(Eigen::Index(2 * k - 1)) += z[k].imag();
+    }
+    x += a.transpose() * gram.solve(r);
+  }
+};
+
 std::uint32_t station_phase_stream(int station, int attempt) {
   return std::uint32_t(attempt) + 65536u * std::uint32_t(station);
 }
@@ -114,6 +166,12 @@ StationGenerator::StationGenerator(const DesignSpectrum& target, double duration
   if (!coherent_) {
     factor_coherency(false, cond_);
     factor_coherency(true, cond_random_);
+    const double f_lo = 1.0 / gen_.match_periods().back();
+    std::size_t k_max = 0;
+    while (gen_.bin_frequency(k_max + 1) < f_lo) ++k_max;
+    const std::size_t n = std::size_t(std::llround(duration / settings.dt)) + 1;
+    const auto nfft = std::size_t(std::llround(1.0 / (gen_.bin_frequency(1) * settings.dt)));
+    pin_ = std::make_unique<LowFrequencyPin>(n, nfft, settings.dt, k_max);
   }
 }
 
@@ -212,7 +270,9 @@ SimqkeAttempt StationGenerator::match_station(const SimqkeStart& start, GroundMo
     st.stall_gain = kStallGain;
   else
     st.stop_score = kStopScore;
-  const bool widen = start.rms_score;
+  // ln(1 + kStopScore), ln(1 - kStopScore): with the design target the widened band stays
+  // within the stop score.
+  const double cap_hi = std::log(1.0 + kStopScore), cap_lo = std::log(1.0 - kStopScore);
   // Below the lowest matching frequency f_lo the correction fades out over one octave: weight
   // ln(f / (f_lo / 2)) / ln 2 of its logarithm (SIMQKE holds the end ratio there).
   const double f_lo = 1.0 / gen_.match_periods().back();
@@ -229,8 +289,11 @@ SimqkeAttempt StationGenerator::match_station(const SimqkeStart& start, GroundMo
     r.resize(np);
     for (std::size_t i = 0; i < np; ++i) {
       const double l = std::log(ratio[i]);
-      const double hi = widen ? std::max(kDeadBand, misfit[i] + kMisfitMargin) : kDeadBand;
-      const double lo = widen ? std::min(-kDeadBand, misfit[i] - kMisfitMargin) : -kDeadBand;
+      const double up =
+          start.rms_score ? misfit[i] + kMisfitMargin : std::min(misfit[i] + kMisfitMargin, cap_hi);
+      const double down =
+          start.rms_score ? misfit[i] - kMisfitMargin : std::max(misfit[i] - kMisfitMargin, cap_lo);
+      const double hi = std::max(kDeadBand, up), lo = std::min(-kDeadBand, down);
       r[i] = l > hi ? l - hi : (l < lo ? l - lo : 0.0);
     }
     t.resize(np);
@@ -243,6 +306,37 @@ SimqkeAttempt StationGenerator::match_station(const SimqkeStart& start, GroundMo
     gen_.inverse(xs, m);
   };
   return gen_.match(st, std::move(m0), correct);
+}
+
+// Step 5: the kept motion's bins below f_lo pinned to Z_k = X_k + w_k (z_k - X_k) (w_k from
+// L_jj, cond_j[k * tri]), its final velocity and displacement kept at 0, its score evaluated
+// again as SimqkeGenerator::match scores (max |q - 1|, or the RMS of ln q for a random target).
+void StationGenerator::pin_low_frequencies(const SimqkeStart& start, const std::vector<Complex>& z,
+                                           const double* cond_j, std::size_t tri,
+                                           SimqkeAttempt& a) {
+  std::vector<Complex> x, target(pin_->bins + 1);
+  gen_.transform(a.motion.accel, x);
+  bool moved = false;
+  for (std::size_t k = 1; k <= pin_->bins; ++k) {
+    const double l = cond_j[k * tri];
+    const double w =
+        l <= kPinFull ? 1.0 : (l >= kPinNone ? 0.0 : (kPinNone - l) / (kPinNone - kPinFull));
+    target[k] = x[k] + w * (z[k] - x[k]);
+    moved = moved || w > 0.0;
+  }
+  if (!moved) return;
+  pin_->apply(a.motion.accel, target);
+  std::vector<double> psa;
+  gen_.spectrum(a.motion, psa);
+  ++a.spectra;
+  double max_dev = 0.0, sum_sq = 0.0;
+  for (std::size_t i = 0; i < psa.size(); ++i) {
+    const double q = psa[i] / start.target[i];
+    max_dev = std::max(max_dev, std::fabs(q - 1.0));
+    sum_sq += std::log(q) * std::log(q);
+  }
+  a.score = start.rms_score ? std::sqrt(sum_sq / double(psa.size())) : max_dev;
+  a.match = compare_spectra(psa, start.target);
 }
 
 // Station j (0-based, j >= 1) of (seed, index): the conditional start from the matched stations
@@ -282,6 +376,7 @@ GeneratedMotion StationGenerator::station(const SimqkeStart& start, std::uint64_
     GroundMotion m0;
     gen_.inverse(z, m0);
     SimqkeAttempt a = match_station(start, std::move(m0), misfit);
+    pin_low_frequencies(start, z, cond.data() + packed(j, j), tri, a);
     spectra += a.spectra;
     if (a.score < best.score) {
       best = std::move(a);
@@ -301,17 +396,14 @@ std::vector<GeneratedMotion> StationGenerator::run(const SimqkeStart& start, std
   if (coherent_) {
     for (std::size_t j = 1; j < s; ++j) out.push_back(out.front());
   } else {
-    // x[m]: the matched stations' transforms; with a random target, misfit: the sum of their
-    // ln(target / computed) at the matching periods.
+    // x[m]: the matched stations' transforms; misfit: the sum of their ln(target / computed) at
+    // the matching periods.
     std::vector<std::vector<Complex>> x(s);
     std::vector<double> misfit(start.target.size(), 0.0), psa;
     gen_.transform(out.front().motion.accel, x[0]);
     for (std::size_t j = 1; j < s; ++j) {
-      if (start.rms_score) {
-        gen_.spectrum(out.back().motion, psa);
-        for (std::size_t i = 0; i < psa.size(); ++i)
-          misfit[i] += std::log(start.target[i] / psa[i]);
-      }
+      gen_.spectrum(out.back().motion, psa);
+      for (std::size_t i = 0; i < psa.size(); ++i) misfit[i] += std::log(start.target[i] / psa[i]);
       out.push_back(station(start, seed, index, j, x, misfit));
     }
   }

@@ -47,18 +47,31 @@
 //    changed only where it is out of the band, so the set keeps the start's cross spectra:
 //    SIMQKE's own iteration keeps correcting periods already within tolerance, a random walk
 //    of each station's Fourier amplitudes that cost the former generator 0.03-0.16 of
-//    coherency at 1-6 Hz and decorrelated close stations below 1 Hz. With a random target (RMS
-//    score) the band is widened to the earlier stations' mean ln(target / computed) +- 0.02
-//    where they miss it by more (a station does not chase an ordinate no motion reaches), and
-//    the iteration has no stop score; for its stall rules an iteration improves only when it
-//    lowers the score 5 % below the last one that did (SimqkeStart::stall_gain). Phase sets:
-//    station j alone, W_j drawn again from the next stream, at most 2 max_attempts (2
+//    coherency at 1-6 Hz and decorrelated close stations below 1 Hz. The band is widened to the
+//    earlier stations' mean ln(target / computed) +- 0.02 where they miss it by more (a station
+//    does not chase an ordinate its neighbours miss as much, or no motion reaches): with the
+//    design spectrum up to ln(1 +- 0.085) (issue 37), with a random target (RMS score) without
+//    a limit; the latter's iteration has no stop score; for its stall rules an iteration improves
+//    only when it lowers the score 5 % below the last one that did (SimqkeStart::stall_gain). Phase
+//    sets: station j alone, W_j drawn again from the next stream, at most 2 max_attempts (2
 //    max_attempts_random_target) draws, the one of the smallest score kept.
+// 5. Below the lowest matching frequency f_lo nothing is matched, but each station's own
+//    processing (its corrections cut to the record, its baseline corrections) leaves there a
+//    low-frequency content of its own that would be the largest part of the relative
+//    displacement of close stations under a model near 1 (issue 37). So the kept motion of
+//    station j gets the least-norm correction on its record (a combination of the rows below,
+//    restricted to the record) that sets its Fourier bins 1..K below f_lo to
+//      Z_k = X_k + w_k (z_k - X_k),   z_k = C_jk + L_jj E_j W_jk (the conditional start),
+//    and keeps its final velocity and displacement at 0; w_k = 1 where the innovation's share
+//    L_jj <= 0.05 (1 - gamma_in <~ 1.3e-3), 0 from 0.1, linear between, so that only nearly
+//    coherent bins, where the start is as coherent as the model, are pinned. Its score is then
+//    evaluated again.
 //
 // With coherency none (or S = 1) every station is bit for bit SimqkeGenerator::generate's
 // motion, which is computed once and copied.
 #include <complex>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "ground/coherency.hpp"
@@ -106,6 +119,8 @@ class StationGenerator {
                           const std::vector<double>& misfit_sum);
   SimqkeAttempt match_station(const SimqkeStart& start, GroundMotion m0,
                               const std::vector<double>& misfit);
+  void pin_low_frequencies(const SimqkeStart& start, const std::vector<Complex>& z,
+                           const double* cond_j, std::size_t tri, SimqkeAttempt& a);
 
   SimqkeGenerator gen_;
   StationSettings stations_;
@@ -113,6 +128,8 @@ class StationGenerator {
   bool coherent_ = true;  // every station is station 1
   // per bin k: packed (j, m < j) -> b_jm, (j, j) -> L_jj (design spectrum, random target)
   std::vector<double> cond_, cond_random_;
+  struct LowFrequencyPin;
+  std::unique_ptr<LowFrequencyPin> pin_;  // step 5
 };
 
 /// Philox stream of station `station`'s phases (0-based) in phase set `attempt`: attempt +

@@ -116,51 +116,72 @@ Relative relative_energy(const PairSet& s, std::size_t j, std::size_t k) {
   return out;
 }
 
-// Every model at 12 and 50 m, random targets (the campaigns' default), 60 motions each:
-//  * the generation does not make the pair more coherent than the model: the RMS relative
-//    displacement is at least 0.75 of the model's;
-//  * where the model's relative displacement is large (Harichandran-Vanmarcke, Hao et al.: a
-//    coherency floor below 1 at zero frequency) it is within 10 % above the model's;
-//  * the generation's own floor (docs/ground.md, "The relative displacement of generated
-//    pairs"): what the set has above the model, sqrt(achieved - model), is at most 0.08 of the
-//    RMS displacement. For the models that tend to 1 (Luco-Wong, Abrahamson) this floor, not
-//    the model, is most of the relative displacement: measured 1.5-6 times the model's RMS.
+// Every model at 12 and 50 m, 60 motions each, with random targets (the campaigns' default) and
+// with the design spectrum (docs/ground.md, "The relative displacement of generated pairs";
+// measured ratios of the RMS relative displacement to the model's: random targets 0.81-1.02,
+// design spectrum 0.90-1.11, Abrahamson rock 1.32 and 1.18, 2.83 and 1.38):
+//  * the generation does not make the pair much more coherent than the model: the ratio is at
+//    least 0.78 (HV86 at 50 m with random targets: 0.81, the pairs a little more coherent than
+//    the model at 0.2-1 Hz);
+//  * it is at most 1.10 with random targets, 1.12 with the design spectrum, for every model but
+//    Abrahamson rock, whose prediction (0.14-0.7 mm, about 0.1-0.5 % of the RMS displacement)
+//    is below what the stations' own processing leaves at 0.2-0.5 Hz; for it at most 1.40 and
+//    3.0;
+//  * for the models that tend to 1 (Luco-Wong, Abrahamson), what the set has above the model,
+//    sqrt(achieved - model), is at most 0.5 % of the RMS displacement with random targets
+//    (measured at most 0.30 %), 1 % with the design spectrum (0.72 %; its RMS displacement is
+//    59 mm against 149); before issue 37's low-frequency pin and capped widening
+//    (station_generator.hpp) it was up to 8 %, 1.5-7.7 times the models' prediction.
 TEST(GroundRelativeDisplacement, GeneratedPairsMoveApartAsTheirModelPredicts) {
-  for (const char* model : {"harichandran-vanmarcke-1986", "hao-oliveira-penzien-1989",
-                            "luco-wong-1986", "abrahamson-2007-soil", "abrahamson-2007-rock"})
-    for (double d : {12.0, 50.0}) {
-      const PairSet s = make_pairs(model, {0.0, d}, 60, 5, true);
-      const Relative r = relative_energy(s, 0, 1);
-      const double ratio = std::sqrt(r.achieved / r.model);
-      // [m]: the RMS of the part of the relative displacement above the model's.
-      const double floor =
-          r.rms_relative * std::sqrt(std::max(0.0, r.achieved - r.model) / r.achieved);
-      std::printf(
-          "%s at %g m: RMS relative displacement %.2f mm, model %.2f mm (ratio %.3f), "
-          "RMS displacement %.1f mm, above the model %.1f %% of it\n",
-          model, d, 1e3 * r.rms_relative, 1e3 * r.rms_relative / ratio, ratio,
-          1e3 * r.rms_displacement, 100.0 * floor / r.rms_displacement);
-      EXPECT_GT(ratio, 0.75) << model << " at " << d << " m";
-      if (s.model.fitted_min_separation() > 0.0) {
-        EXPECT_LT(ratio, 1.10) << model << " at " << d << " m";
+  for (const bool random_target : {true, false})
+    for (const char* model : {"harichandran-vanmarcke-1986", "hao-oliveira-penzien-1989",
+                              "luco-wong-1986", "abrahamson-2007-soil", "abrahamson-2007-rock"})
+      for (double d : {12.0, 50.0}) {
+        const PairSet s = make_pairs(model, {0.0, d}, 60, 5, random_target);
+        const Relative r = relative_energy(s, 0, 1);
+        const double ratio = std::sqrt(r.achieved / r.model);
+        // [m]: the RMS of the part of the relative displacement above the model's.
+        const double floor =
+            r.rms_relative * std::sqrt(std::max(0.0, r.achieved - r.model) / r.achieved);
+        std::printf(
+            "%s at %g m (%s): RMS relative displacement %.2f mm, model %.2f mm (ratio %.3f), "
+            "RMS displacement %.1f mm, above the model %.2f %% of it\n",
+            model, d, random_target ? "random targets" : "design spectrum", 1e3 * r.rms_relative,
+            1e3 * r.rms_relative / ratio, ratio, 1e3 * r.rms_displacement,
+            100.0 * floor / r.rms_displacement);
+        const std::string where = std::string(model) + " at " + std::to_string(d) + " m" +
+                                  (random_target ? ", random targets" : ", design spectrum");
+        EXPECT_GT(ratio, 0.78) << where;
+        const bool rock = std::string(model) == "abrahamson-2007-rock";
+        const double top = rock ? (random_target ? 1.40 : 3.0) : (random_target ? 1.10 : 1.12);
+        EXPECT_LT(ratio, top) << where;
+        if (s.model.fitted_min_separation() == 0.0) {
+          EXPECT_LT(floor, (random_target ? 0.005 : 0.01) * r.rms_displacement) << where;
+        }
       }
-      EXPECT_LT(floor, 0.08 * r.rms_displacement) << model << " at " << d << " m";
-    }
 }
 
 // The Abrahamson soil model at 12 m, the identical pair's separation: the achieved lagged
-// coherency is within 0.1 of the model at 2, 5 and 8 Hz (+- 0.25 Hz) and at least 0.97 at
-// 0.2-0.6 Hz (+- 0.05 Hz), where the model is 0.9998-1.
+// coherency is within 0.05 of the model at 2, 5 and 8 Hz (+- 0.25 Hz; the issue asks 0.1;
+// measured 0.9928, 0.9192, 0.6914 against 0.9930, 0.9051, 0.7247) and within 5e-4 of it at
+// 0.2-0.6 Hz (+- 0.05 Hz; the issue asks at least 0.97; measured within 8e-5 of the model's
+// 0.9998-1).
 TEST(GroundRelativeDisplacement, AbrahamsonSoilPairAt12mHasItsCoherency) {
   const PairSet s = make_pairs("abrahamson-2007-soil", {0.0, 12.0}, 60, 5, true);
   const AchievedCoherency high =
       achieved_coherency(s.motions, s.positions, {0.0, 0.0}, s.model, {2.0, 5.0, 8.0}, 0.25);
-  for (std::size_t f = 0; f < high.frequencies.size(); ++f)
-    EXPECT_NEAR(high.pairs[0].achieved[f], high.pairs[0].model[f], 0.1) << high.frequencies[f];
+  for (std::size_t f = 0; f < high.frequencies.size(); ++f) {
+    std::printf("%g Hz: model %.4f, achieved %.4f\n", high.frequencies[f], high.pairs[0].model[f],
+                high.pairs[0].achieved[f]);
+    EXPECT_NEAR(high.pairs[0].achieved[f], high.pairs[0].model[f], 0.05) << high.frequencies[f];
+  }
   const AchievedCoherency low = achieved_coherency(s.motions, s.positions, {0.0, 0.0}, s.model,
                                                    {0.2, 0.3, 0.4, 0.5, 0.6}, 0.05);
-  for (std::size_t f = 0; f < low.frequencies.size(); ++f)
-    EXPECT_GE(low.pairs[0].achieved[f], 0.97) << low.frequencies[f] << " Hz";
+  for (std::size_t f = 0; f < low.frequencies.size(); ++f) {
+    std::printf("%g Hz: model %.5f, achieved %.5f\n", low.frequencies[f], low.pairs[0].model[f],
+                low.pairs[0].achieved[f]);
+    EXPECT_NEAR(low.pairs[0].achieved[f], low.pairs[0].model[f], 5e-4) << low.frequencies[f];
+  }
 }
 
 }  // namespace
