@@ -19,17 +19,18 @@
 // Usage: bench_speed [source dir [quick | lumped [check] | sample ID | inelastic [N] |
 // samples [N [REPEAT [MODEL [spectral|none]]]] | collapse [N [REPEAT [imk|bilinear|both
 // [--key value ...]]]] | ssi|svgm|svgm-apart|svgm-default [N [REPEAT [MODEL|all [with|base]]]] |
-// ch8 | fine-step | contact-steps]] (default: the source tree it was built from; "quick": only the
-// event-driven chapter 8 run, for profiling; "fine-step": the event path's fine step against the
-// fixed path; "contact-steps": the longer steps through smooth contact forces at several
-// sears.contact_step_tolerance values; "ch8": case 1 alone; "lumped": only the adaptive run of case
-// 2, for profiling, with "check" also its fixed-step reference and the case 2 line; "sample ID":
-// peak forces of sample ID (0..19) of case 3's campaign on the default path, the fixed path at its
-// automatic step and at 10 us)
+// ch8 | fine-step | contact-steps | split STUDY [N [REPEAT [--key value ...]]]]] (default: the
+// source tree it was built from; "quick": only the event-driven chapter 8 run, for profiling;
+// "fine-step": the event path's fine step against the fixed path; "contact-steps": the longer steps
+// through smooth contact forces at several sears.contact_step_tolerance values; "ch8": case 1
+// alone; "lumped": only the adaptive run of case 2, for profiling, with "check" also its fixed-step
+// reference and the case 2 line; "sample ID": peak forces of sample ID (0..19) of case 3's campaign
+// on the default path, the fixed path at its automatic step and at 10 us)
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <ctime>
 #include <exception>
 #include <functional>
@@ -46,6 +47,7 @@
 #include "sears/sears_row_layout.hpp"
 #include "sears/sears_simulation.hpp"
 #include "simulation/simulate_row.hpp"
+#include "split_bench.hpp"
 #include "study/row_options.hpp"
 #include "study/sears_row_options.hpp"
 
@@ -490,6 +492,9 @@ void compare_case(const char* title, const std::string& src, const std::string& 
     m.base += tb;
     m.motion += tm.cpu_s;
     m.worst = std::max(m.worst, (tw - tm.cpu_s) / std::max(tb - tm.cpu_s, 1e-6));
+    if (std::getenv("POUND_BENCH_SAMPLES"))  // each sample's line, to find the slow ones
+      std::printf("  sample %3ld %-10s base %8.3f ms, with %8.3f ms\n", id, dw.model.c_str(),
+                  1e3 * tb, 1e3 * tw);
   }
   for (int k = 0; k < 2; ++k) {
     const Sum& m = sums[k];
@@ -604,6 +609,8 @@ int run(int argc, char** argv) {
         {"--building2.base_elevation", "0"}, n, repeat, only, "both");
     return 0;
   }
+  if (mode == "split")  // case 10: buildings on their own steps (issue 38)
+    return split_case(src, std::vector<std::string>(argv + 3, argv + argc));
   if (argc > 2 && std::string(argv[2]) == "collapse")  // case 6 alone
     return collapse_case(src, std::vector<std::string>(argv + 3, argv + argc));
   if (argc > 2 && std::string(argv[2]) == "inelastic") {  // case 4 alone
@@ -771,7 +778,7 @@ int main(int argc, char** argv) {
         "[N [REPEAT [MODEL [spectral|none]]]] | collapse ... | ssi|svgm|svgm-apart|svgm-default [N "
         "[REPEAT "
         "[MODEL|all [with|base]]]] | offset [N [REPEAT [MODEL|all]]] | ch8 | fine-step | "
-        "contact-steps]]\n(SOURCE: the source tree "
+        "contact-steps | split STUDY [N [REPEAT [--key value ...]]]]]\n(SOURCE: the source tree "
         "whose studies/ are timed; the cases are described at the top of bench/speed_bench.cpp)\n");
     return 0;
   }

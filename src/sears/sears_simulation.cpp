@@ -6,6 +6,7 @@
 #include "core/error.hpp"
 #include "sears/sears_row_layout.hpp"
 #include "sears/step_rule.hpp"
+#include "solver/row_apart.hpp"
 #include "solver/row_solver.hpp"
 
 namespace pound::sears {
@@ -103,12 +104,13 @@ SearsSteps sears_row_steps(const BuildingRow& row, double record_dt, const Sears
 SearsRowSimulation simulate_sears_row(const BuildingRow& row, const RowGround& ground,
                                       const SearsRowModel& model, const RowSimulationOptions& opt,
                                       const IntegratorSettings& integrator) {
-  // Without contacts: the lumped solver's free run (the floors' physics is the same).
+  // Without contacts: the lumped solver's free run (the floors' physics is the same), each
+  // building on its own steps where that pays (issue 38; solver/row_apart.hpp).
   const AssembledRow a = assemble(row);
   RowProblem fp;
   fp.row = &a;
   opt.apply_to(fp, ground);
-  RowResult free = solve(fp, integrator);
+  RowResult free = apart_pays(row) ? solve_apart(row, fp, integrator) : solve(fp, integrator);
   SearsRowProblem p;
   p.row = &row;
   opt.apply_to(p, ground);

@@ -44,6 +44,7 @@ RowRun::RowRun(const RowRun& free, const RowProblem& pounding) : RowRun(free) {
   fork_to_ = nullptr;
   fork_armed_ = false;
   fork_.reset();
+  watch_ = nullptr;
   exact_.undo_iteration();
   rec_.contacts_on();
 }
@@ -414,6 +415,9 @@ void RowRun::record(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& d
     if (s.struck_dof >= 0)
       rec_.column_shear(i, column_shear_demand(s, dyn_.storey_shear(y, s.struck_dof), force(i)));
   }
+  if (watch_)
+    for (std::size_t k = 0; k < watch_->shear_dofs.size(); ++k)
+      watch_->shear(static_cast<int>(k), dyn_.storey_shear(y, watch_->shear_dofs[k]));
   if (rec_.keeps_history()) {
     Eigen::VectorXd shear(n_);
     for (int i = 0; i < n_; ++i) shear(i) = dyn_.storey_shear(y, i);
@@ -424,6 +428,7 @@ void RowRun::record(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& d
 void RowRun::update_peaks(const Eigen::VectorXd& y0, const Eigen::VectorXd& y1,
                           const Eigen::VectorXd& dy0, const Eigen::VectorXd& dy1, double h) {
   if (fork_armed_ && !fork_) fork_if_near_contact(y0, y1, h);
+  if (watch_) watch_->add_step(t_, h, y0, y1, n_);
   rec_.peaks_over_step(y0, y1, dy0, dy1, t_, h);
   const bool pounding = dyn_.pounding();
   for (int i = 0; i < ns_; ++i) {

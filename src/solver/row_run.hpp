@@ -13,6 +13,7 @@
 #include "solver/row_solver.hpp"
 #include "solver/row_switches.hpp"
 #include "solver/run_recorder.hpp"
+#include "solver/step_watch.hpp"
 
 namespace pound::detail {
 
@@ -54,6 +55,9 @@ class RowRun {
   // A free run that collapsed before its pounding run forked: the pounding run (which stops at
   // the first collapse) must be solved on its own.
   bool needs_own_pounding_run() const { return own_pounding_run_; }
+  // Dense output of chosen points and storey shears (solve_apart, row_apart.hpp), filled from
+  // the next step on; null: none.
+  void watch(StepWatch* w) { watch_ = w; }
 
  private:
   enum class Located { none, retry, applied };
@@ -143,6 +147,7 @@ class RowRun {
   bool fork_armed_ = false;
   std::shared_ptr<RowRun> fork_;
   bool own_pounding_run_ = false;
+  StepWatch* watch_ = nullptr;
 
   // Integration state: time, next step and largest step [s], record spacing [s], the fixed
   // grid's and the record's last points passed, the state y and its derivative k1, the trial
