@@ -1,12 +1,14 @@
 #pragma once
 // One run of a damped Sears row, solve_sears_row() (sears_simulation.hpp; docs/sears.md
 // "Buildings in a row", docs/speed.md), shared by sears_row_run.cpp (set-up, the run's loop,
-// coarse steps, recording, the end) and sears_contact_step.cpp (steps through contacts: the
-// contact forces, longer steps, sleeping slabs, yielding storeys). Members are named after the
+// coarse steps, recording, the end), sears_contact_step.cpp (steps through contacts: the
+// contact forces, longer steps, sleeping slabs, yielding storeys) and sears_located.cpp (the
+// stretches without contact where the translation bound is not proved). Members are named after the
 // symbols of the equations (u, v, F, S, H, ...). Internal to src/sears.
 #include <Eigen/Dense>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "sears/newmark_row.hpp"
@@ -97,6 +99,13 @@ class SearsRowRun {
   bool contact_free(double h);
   long lumped_stretch(long i);
   void leave_stretch();
+  // Stretches on the located approach where the translation bound is not proved (a massless
+  // base with tangent damping or P-Delta; sears_located.cpp).
+  bool located_open();
+  bool located_clear(double h, double t_next);
+  long located_stretch(long i);
+  void save_recorder();
+  void restore_recorder();
   // Results after a step.
   void add_energy(double h, double t_start, double t_next);  // the step [t_start, t_next]
   void record_sites(bool coarse, double h, double t_next);
@@ -149,6 +158,16 @@ class SearsRowRun {
   std::vector<double> lumped_bound;         // ModalBank::face_motion_bound(h_L) per slab [m]
   bool lumped_bound_valid = false;          // lumped_bound holds since the last fine step
   std::vector<StoreyState> lumped_storeys;  // the storeys' states a stretch ended in
+  // Located stretches (sears_located.cpp): whether the row takes them (no valid translation
+  // bound), the fine step before which none starts again (one was re-taken there), the
+  // recorder as it was at the lumped step's start (a step found too near a contact is re-taken
+  // by fine steps) with the length of its histories, and the step's end state [m], [m/s],
+  // [m/s^2].
+  bool located = false;
+  long located_retry = 0;
+  std::optional<RunRecorder> rec_start;
+  std::size_t rec_history = 0;
+  Eigen::VectorXd lu, lv, la;
 
   // Yielding storeys (sears/newmark_storeys.hpp): a_i+1 = a_hat + R r_i+1 - H F, R = Mt^-1 B
   // for each step size; r iterated with the storeys' return maps.

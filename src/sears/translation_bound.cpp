@@ -107,7 +107,8 @@ TranslationBound::TranslationBound(const AssembledRow& a, double ag_max)
 //           sqrt(2 U) with |f_b,i| <= sum_s |g_s,i| |V_s| and |V_s| <= sqrt(k0_s) sqrt(2 U_s).
 // Tangent damping (C changes with the branches, and S with it) and P-Delta (its energy's growth
 // rests on the velocities of every DOF it couples) are outside this proof: such a row is left
-// without a valid bound (valid() false: fine steps throughout).
+// without a valid bound (valid() false: its stretches without contact are tested on their own
+// motion instead, sears/sears_located.cpp).
 void TranslationBound::massless_bounds(const AssembledRow& a, const std::vector<int>& bs,
                                        const Eigen::MatrixXd& K0) {
   const int n = a.dofs(), m = static_cast<int>(bs.size());

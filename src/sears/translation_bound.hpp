@@ -69,7 +69,8 @@ class TranslationBound {
                   double ground_rate, double h) const;
   /// False for a row whose bound is not proved: a massless base (a foundation without mass or
   /// rotary inertia) with tangent-stiffness damping or P-Delta (translation_bound.cpp,
-  /// massless_bounds); no step may rely on it then.
+  /// massless_bounds); no step may rely on it then (the located stretches instead,
+  /// sears_located.cpp).
   bool valid() const { return valid_; }
 
  private:
