@@ -42,11 +42,7 @@ RowDynamics::RowDynamics(const AssembledRow& row, const std::vector<RowStorey>& 
   layout_.energies = layout_.impulses + ns_;
   layout_.ground = layout_.energies + (track_ ? 3 : 0);
   set_ground_layout();
-  slab_sites_ = std::all_of(row_.sites.begin(), row_.sites.end(), [](const ContactSite& s) {
-    return !s.column() && s.struck_dof < 0 && s.left.count == 1 && s.right.count == 1 &&
-           s.left.weight[0] == 1.0 && s.right.weight[0] == 1.0 && s.left.dof[0] == s.dof_left &&
-           s.right.dof[0] == s.dof_right;
-  });
+  slab_sites_ = std::all_of(row_.sites.begin(), row_.sites.end(), slab_site);
   plain_ = slab_sites_;
   force_.setZero(ns_);
   scratch_.setZero(n_);
