@@ -41,7 +41,13 @@ void SearsRowRun::finish_sleep() {  // at the next point of the coarse grid
 // End-of-step overlaps without contact forces, delta_pred; for a guarded site an upper bound.
 void SearsRowRun::predict_overlaps() {
   slabs.predict(begin, op);
-  for (int s = 0; s < ns; ++s) {
+  for (int s = 0; s < ns && slab_only; ++s) {  // as below, by the slabs' floors
+    const ContactSite& site = assembled.sites[s];
+    delta_pred(s) = u_hat(site.dof_left) - u_hat(site.dof_right) +
+                    slabs.predicted_right_upper(left_slab(s)) -
+                    slabs.predicted_left_lower(right_slab(s)) - gap(s) + gd_next[s];
+  }
+  for (int s = 0; s < ns && !slab_only; ++s) {
     const int l = left_slab(s), r = right_slab(s);  // -1: a struck column point, no bar
     const double wl = l >= 0 ? slabs.predicted_right_upper(l) : 0.0;
     const double wr = r >= 0 ? slabs.predicted_left_lower(r) : 0.0;

@@ -43,6 +43,15 @@ SearsRowRun::SearsRowRun(const SearsRowProblem& p_in, const SearsRowModel& model
       acc(floors.acc),
       rec(assembled, assembled.storeys, p.contacts, p.record_history),
       slabs(layout.banks, out.counts) {
+  slab_only =
+      std::all_of(assembled.sites.begin(), assembled.sites.end(), [&](const ContactSite& s) {
+        auto unit = [&](int d) {
+          return assembled.influence.size() != n || assembled.influence(d) == 1.0;
+        };
+        return slab_site(s) && unit(s.dof_left) && unit(s.dof_right);
+      });
+  any_cap = std::any_of(layout.laws.begin(), layout.laws.end(),
+                        [](const SlabContactLaw& l) { return !std::isinf(l.force_cap_N); });
   build_operators();
   initial_state();
   if (stepping.lumped > 0) {
@@ -174,6 +183,11 @@ void SearsRowRun::loads(const Eigen::VectorXd& f, std::vector<EndLoads>& to) con
 // column point (no bar, issue 36) moves with its floors only.
 double SearsRowRun::overlap_now(int s) const {
   const int l = left_slab(s), r = right_slab(s);
+  if (slab_only) {
+    const ContactSite& site = assembled.sites[s];
+    return u(site.dof_left) - u(site.dof_right) + slabs.disp(l).right - slabs.disp(r).left -
+           gap(s) + gd[s];
+  }
   return left_point(s).of(u.data()) - right_point(s).of(u.data()) +
          (l >= 0 ? slabs.disp(l).right : 0.0) - (r >= 0 ? slabs.disp(r).left : 0.0) - gap(s) +
          gd[s];
@@ -181,6 +195,11 @@ double SearsRowRun::overlap_now(int s) const {
 
 double SearsRowRun::approach_bound(int s) const {
   const int l = left_slab(s), r = right_slab(s);
+  if (slab_only) {
+    const ContactSite& site = assembled.sites[s];
+    return u(site.dof_left) - u(site.dof_right) + slabs.right_face_upper(l) -
+           slabs.left_face_lower(r) + gd[s];
+  }
   return left_point(s).of(u.data()) - right_point(s).of(u.data()) +
          (l >= 0 ? slabs.right_face_upper(l) : 0.0) - (r >= 0 ? slabs.left_face_lower(r) : 0.0) +
          gd[s];
@@ -236,7 +255,9 @@ bool SearsRowRun::contact_free(double h) {
   // The building translation alone first (cheap); each site's bound is kept for the full test
   // below (waking a dormant slab changes the overlap, not the buildings' state).
   if (!holds([&](int s) {
-        site_approach[s] = bound.approach(left_point(s), right_point(s), v, gv[s], h);
+        const ContactSite& site = assembled.sites[s];  // a slab site: its floors' DOFs
+        site_approach[s] = slab_only ? bound.approach(site.dof_left, site.dof_right, v, gv[s], h)
+                                     : bound.approach(left_point(s), right_point(s), v, gv[s], h);
         return kCoarseBoundSafety * site_approach[s] < -delta(s);
       }))
     return false;
@@ -270,7 +291,10 @@ __attribute__((always_inline)) inline void SearsRowRun::record_site(int s, bool 
     // the faces move with the floors: the approach is that of the floors, its peak between
     // the step's ends from their cubic Hermite interpolant (solver/hermite.hpp).
     const double ap = approach_bound(s);
-    const double rate = left_point(s).of(v.data()) - right_point(s).of(v.data()) + gv[s];
+    const ContactSite& site = assembled.sites[s];
+    const double rate = slab_only
+                            ? v(site.dof_left) - v(site.dof_right) + gv[s]
+                            : left_point(s).of(v.data()) - right_point(s).of(v.data()) + gv[s];
     rec.approach_over_step(s, Hermite{free_approach[s], ap, h * free_approach_rate[s], h * rate});
     free_approach[s] = ap;
     free_approach_rate[s] = rate;
@@ -461,9 +485,9 @@ SearsRowResult SearsRowRun::run() {
     ground_at(t_next, gd, gv);
     const double* ag = ground.acc(t_next);
     record_sites(coarse, h, t_next);
-    if (!coarse) crush_faces();
+    if (!coarse && any_cap) crush_faces();
     F = F_next;
-    for (int s = 0; s < ns; ++s) {  // the struck columns' shear (issue 36)
+    for (int s = 0; s < ns && !slab_only; ++s) {  // the struck columns' shear (issue 36)
       const ContactSite& site = assembled.sites[s];
       if (site.struck_dof >= 0)
         rec.column_shear(s, column_shear_demand(site, storeys.shear(u, site.struck_dof), F(s)));

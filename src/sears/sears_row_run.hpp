@@ -184,6 +184,10 @@ class SearsRowRun {
   // crush, as the lumped laws' does); the crushing work, the sum of PF_max x c [J].
   std::vector<double> crush, crush_phase;
   double e_crushing = 0.0;
+  // Every site a slab site (structure/building_row.hpp slab_site) between floors of unit ground
+  // influence: the per-step overlaps and bounds by the floors' DOFs, as before issue 36 (the
+  // same operations: 1 x u is u); and whether a site has a force cap (else no crush_faces).
+  bool slab_only = false, any_cap = false;
   std::vector<double> ag_avg_, mdu_;  // per channel: mean ag [m/s^2], sum M du [kg m]
 
   // Floor state [m], [m/s], [m/s^2]; contact forces [N] and overlaps [m] per site.

@@ -42,6 +42,8 @@ RowDynamics::RowDynamics(const AssembledRow& row, const std::vector<RowStorey>& 
   layout_.energies = layout_.impulses + ns_;
   layout_.ground = layout_.energies + (track_ ? 3 : 0);
   set_ground_layout();
+  slab_sites_ = std::all_of(row_.sites.begin(), row_.sites.end(), slab_site);
+  plain_ = slab_sites_;
   force_.setZero(ns_);
   scratch_.setZero(n_);
   held_.assign(n_, 0);
@@ -77,12 +79,42 @@ void RowDynamics::set_ground_layout() {
   layout_.size = next;
 }
 
-void RowDynamics::rhs(double t, const Eigen::VectorXd& y_in, Eigen::VectorXd& dy) {
-  contact_forces(y_in);
+// The impulses' rates and the contact forces of contact_force() on the sites' floors, every site
+// a slab site (slab_sites(): w F is F for w = 1).
+__attribute__((always_inline)) inline void RowDynamics::add_slab_forces(double* du,
+                                                                        double* dv) const {
+  const double* im = row_.inv_mass.data();
+  for (int i = 0; i < ns_; ++i) {
+    const double f = force_(i);
+    du[layout_.impulses + i] = f;
+    if (f == 0.0) continue;
+    const auto& site = row_.sites[i];
+    dv[site.dof_left] -= im[site.dof_left] * f;
+    dv[site.dof_right] += im[site.dof_right] * f;
+  }
+}
+
+// The right-hand side; Plain: plain() and no condensed base DOFs, a row of before issues 36
+// and 38 (their column sites, force caps and quasi-static bases), whose tests it leaves out (the
+// same operations on the same numbers otherwise: the same bits).
+template <bool Plain>
+__attribute__((always_inline)) inline void RowDynamics::rhs_of(double t,
+                                                               const Eigen::VectorXd& y_in,
+                                                               Eigen::VectorXd& dy) {
+  if (Plain) {
+    for (int i = 0; i < ns_; ++i) {
+      double f = 0.0;
+      if (active[i])
+        f = (*laws_)[i]->force(slab_penetration(y_in, i), penetration_rate(y_in, i), v0[i]);
+      force_(i) = f;
+    }
+  } else {
+    contact_forces(y_in);
+  }
   const double* a_g = ground_acc(t);
   dy.resize(layout_.size);
   // Condensed base DOFs: their u_b solved, v_b = 0 until quasi_static_rates() (issue 38).
-  const Eigen::VectorXd& y = qs_.empty() ? y_in : quasi_static_state(y_in, a_g);
+  const Eigen::VectorXd& y = Plain || qs_.empty() ? y_in : quasi_static_state(y_in, a_g);
   const double* u = y.data();
   const double* v = u + n_;
   double* du = dy.data();
@@ -96,8 +128,11 @@ void RowDynamics::rhs(double t, const Eigen::VectorXd& y_in, Eigen::VectorXd& dy
   else
     forces_.general(y, storey, layout_.storey_offset, a_g, dy.data(), v);
   if (!massless_.empty()) massless_rates(dv);
-  add_contact_forces(du, dv);
-  if (!qs_.empty()) {
+  if (Plain)
+    add_slab_forces(du, dv);
+  else
+    add_contact_forces(du, dv);
+  if (!Plain && !qs_.empty()) {
     double* vw = (v == veff_.data()) ? veff_.data() : yq_.data() + n_;
     quasi_static_rates(a_g, vw, dy);
     v = vw;
@@ -116,6 +151,13 @@ void RowDynamics::rhs(double t, const Eigen::VectorXd& y_in, Eigen::VectorXd& dy
   }
 }
 
+void RowDynamics::rhs(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy) {
+  if (plain_ && qs_.empty())
+    rhs_of<true>(t, y, dy);
+  else
+    rhs_of<false>(t, y, dy);
+}
+
 // The contact forces with crushing faces (docs/contact-models.md, "Crushing faces"): the cap
 // during a crushing phase; otherwise the law on the penetration less the indentation, never
 // above the cap (the phase starts where it reaches it: a switch of row_switches.hpp; the min
@@ -130,6 +172,13 @@ void RowDynamics::capped_contact_forces(const Eigen::VectorXd& y) {
 
 // The impulses' rates and the contact forces of contact_force() on the sites' DOFs.
 void RowDynamics::add_contact_forces(double* du, double* dv) const {
+  if (slab_sites_)
+    add_slab_forces(du, dv);
+  else
+    add_point_forces(du, dv);
+}
+
+void RowDynamics::add_point_forces(double* du, double* dv) const {
   const double* im = row_.inv_mass.data();
   for (int i = 0; i < ns_; ++i) {
     const double f = force_(i);

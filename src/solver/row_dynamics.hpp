@@ -54,9 +54,17 @@ class RowDynamics {
   bool pounding() const { return laws_ != nullptr && !laws_->empty(); }
   /// The crushing faces' cap on every site's contact force [N] (docs/contact-models.md,
   /// "Crushing faces"); infinite: none (then nothing below about crushing ever acts).
-  void set_force_cap(double cap) { force_cap_ = cap; }
+  void set_force_cap(double cap) {
+    force_cap_ = cap;
+    plain_ = slab_sites_ && !(cap < kNoCap);
+  }
   double force_cap() const { return force_cap_; }
   bool capped() const { return pounding() && force_cap_ < kNoCap; }
+  /// Every site a slab site (SitePoint: one DOF of weight 1 each side; issue 36's column sites
+  /// absent), and with plain() no force cap either: the fast paths of the rows of before issue 36
+  /// (the same operations on the same numbers, so the same bits).
+  bool slab_sites() const { return slab_sites_; }
+  bool plain() const { return plain_; }
   /// Site i's contact law (pounding runs only).
   const ContactLaw& law(int i) const { return *(*laws_)[i]; }
   /// The law's own force at site i (before the cap) at y [N]: the law acting on the penetration
@@ -107,17 +115,14 @@ class RowDynamics {
   /// on different channels.
   /// With a force cap, the face's permanent indentation crush[i] widens the gap (less its
   /// growth in a crushing phase: indentation()); without one crush[i] is 0 (x - 0 is x).
-  double penetration(const Eigen::VectorXd& y, int i) const {
-    const auto& s = row_.sites[i];
-    double d = s.left.of(y.data()) - s.right.of(y.data()) - s.gap - crush[i];
-    const auto& g = site_ground_[i];
-    if (g.first >= 0) d += y(g.first) - y(g.second);
-    return d;
+  /// plain(): the same values by the slabs' DOFs alone (1 x u is u, x - 0 is x).
+  __attribute__((always_inline)) double penetration(const Eigen::VectorXd& y, int i) const {
+    return plain_ ? slab_penetration(y, i) : point_penetration(y, i);
   }
   double penetration_rate(const Eigen::VectorXd& y, int i) const {
     const auto& s = row_.sites[i];
     const double* v = y.data() + n_;
-    double r = s.left.of(v) - s.right.of(v);
+    double r = slab_sites_ ? v[s.dof_left] - v[s.dof_right] : s.left.of(v) - s.right.of(v);
     const auto& g = site_ground_[i];
     if (g.first >= 0) r += y(g.first + 1) - y(g.second + 1);
     return r;
@@ -125,7 +130,8 @@ class RowDynamics {
   /// The approach (u_L + ug_L) - (u_R + ug_R) of site i's floors [m]: penetration + gap.
   double approach(const Eigen::VectorXd& y, int i) const {
     const auto& s = row_.sites[i];
-    double d = s.left.of(y.data()) - s.right.of(y.data());
+    double d =
+        slab_sites_ ? y(s.dof_left) - y(s.dof_right) : s.left.of(y.data()) - s.right.of(y.data());
     const auto& g = site_ground_[i];
     if (g.first >= 0) d += y(g.first) - y(g.second);
     return d;
@@ -216,7 +222,26 @@ class RowDynamics {
   void massless_rates(double* dv);
   void set_ground_layout();
   void capped_contact_forces(const Eigen::VectorXd& y);
+  template <bool Plain>
+  void rhs_of(double t, const Eigen::VectorXd& y, Eigen::VectorXd& dy);
   void add_contact_forces(double* du, double* dv) const;
+  void add_slab_forces(double* du, double* dv) const;
+  // penetration() with plain() and without.
+  double slab_penetration(const Eigen::VectorXd& y, int i) const {
+    const auto& s = row_.sites[i];
+    double d = y(s.dof_left) - y(s.dof_right) - s.gap;
+    const auto& g = site_ground_[i];
+    if (g.first >= 0) d += y(g.first) - y(g.second);
+    return d;
+  }
+  double point_penetration(const Eigen::VectorXd& y, int i) const {
+    const auto& s = row_.sites[i];
+    double d = s.left.of(y.data()) - s.right.of(y.data()) - s.gap - crush[i];
+    const auto& g = site_ground_[i];
+    if (g.first >= 0) d += y(g.first) - y(g.second);
+    return d;
+  }
+  void add_point_forces(double* du, double* dv) const;
   void factor_quasi_static();
   const Eigen::VectorXd& quasi_static_state(const Eigen::VectorXd& y, const double* a_g);
   double period_without(const std::vector<char>& drop) const;
@@ -230,6 +255,7 @@ class RowDynamics {
   StateLayout layout_;
   const std::vector<const ContactLaw*>* laws_ = nullptr;
   double force_cap_ = kNoCap;                     // [N]
+  bool slab_sites_ = false, plain_ = false;       // slab_sites(), plain()
   FloorGround ground_;                            // the ground under floors and sites
   std::vector<std::pair<int, int>> site_ground_;  // per site: ug offsets of L and R, or -1
   mutable std::vector<double> mv_;                // per channel: sum m_i v_i (energy rates)

@@ -409,8 +409,9 @@ void RowRun::record(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& d
   rec_.accel_peaks(dy.data() + n_, ag);
   dyn_.contact_forces(y);
   const Eigen::VectorXd& force = dyn_.contact_force();
-  for (int i = 0; i < ns_; ++i) {
+  for (int i = 0; i < ns_; ++i)
     if (dyn_.active[i]) rec_.force(i, force(i));
+  for (int i = 0; i < ns_ && !dyn_.slab_sites(); ++i) {  // column sites only
     const ContactSite& s = row_.sites[i];
     if (s.struck_dof >= 0)
       rec_.column_shear(i, column_shear_demand(s, dyn_.storey_shear(y, s.struck_dof), force(i)));

@@ -97,40 +97,54 @@ int RowSwitches::find_event(const RowDynamics& dyn, const Eigen::VectorXd& y0,
                             const Eigen::VectorXd& dy1, double h, double& theta,
                             const std::vector<char>* ignore) const {
   const int n = row_.dofs();
-  const bool pounding = dyn.pounding();
   int best = -1;
   theta = 2.0;
-  const int m = (pounding ? ns_ : 0) + static_cast<int>(sw_.size()) + (dyn.capped() ? ns_ : 0);
-  for (int j = 0; j < m; ++j) {
-    const int k = pounding ? j : ns_ + j;
-    if (k >= first_crush() && (!dyn.active[k - first_crush()] || (ignore && (*ignore)[k])))
-      continue;
-    if (k >= ns_ && k < first_crush()) {
-      const int dof = sw_[k - ns_].dof;
-      if (has_safe_[dof]) {
-        // Skip a storey whose drift stays inside its safe interval (shrunk by 1e-12 of its
-        // ends, storey_changed): a bound of the drift's cubic over the step (its basis
-        // functions of the end slopes are at most 4/27).
-        const double d0 = dyn.drift(y0, 0, dof), d1 = dyn.drift(y1, 0, dof);
-        const double m4 =
-            4.0 / 27.0 * h * (std::fabs(dyn.drift(y0, n, dof)) + std::fabs(dyn.drift(y1, n, dof)));
-        if (std::max(d0, d1) + m4 < safe_hi_[dof] && std::min(d0, d1) - m4 > safe_lo_[dof])
-          continue;
-      }
-    }
-    const Hermite c = hermite(dyn, k, y0, y1, dy0, dy1, h);
-    if (c.upper_bound() < 0.0) continue;  // no crossing
+  // The earliest crossing; among equal ones the lowest id (the switches in id order: the sites,
+  // the storeys, the crushing faces).
+  auto consider = [&](int k, const Hermite& c, bool renewed) {
+    if (c.upper_bound() < 0.0) return;  // no crossing
     bool ev;
-    if (k < ns_ && !dyn.active[k] && c.g0 > 0.0)  // across within the location tolerance:
-      ev = c.m0 > 0.0 || c.g1 > c.g0;             // only a renewed approach counts
+    if (renewed)                       // across within the location tolerance:
+      ev = c.m0 > 0.0 || c.g1 > c.g0;  // only a renewed approach counts
     else
       ev = c.g1 > 0.0 || (c.m0 > 0.0 && c.max_over_step() > 0.0);
-    if (!ev) continue;
+    if (!ev) return;
     const double th = first_crossing(c);  // first sign change of the cubic
     if (th < theta) {
       theta = th;
       best = k;
     }
+  };
+  if (dyn.pounding())
+    for (int k = 0; k < ns_; ++k) {
+      const double sign = dyn.active[k] ? -1.0 : 1.0;
+      const Hermite c{sign * dyn.penetration(y0, k), sign * dyn.penetration(y1, k),
+                      h * (sign * dyn.penetration_rate(y0, k)),
+                      h * (sign * dyn.penetration_rate(y1, k))};
+      consider(k, c, !dyn.active[k] && c.g0 > 0.0);
+    }
+  const int nsw = static_cast<int>(sw_.size());
+  for (int j = 0; j < nsw; ++j) {
+    const int dof = sw_[j].dof;
+    if (has_safe_[dof]) {
+      // Skip a storey whose drift stays inside its safe interval (shrunk by 1e-12 of its
+      // ends, storey_changed): a bound of the drift's cubic over the step (its basis
+      // functions of the end slopes are at most 4/27).
+      const double d0 = dyn.drift(y0, 0, dof), d1 = dyn.drift(y1, 0, dof);
+      const double m4 =
+          4.0 / 27.0 * h * (std::fabs(dyn.drift(y0, n, dof)) + std::fabs(dyn.drift(y1, n, dof)));
+      if (std::max(d0, d1) + m4 < safe_hi_[dof] && std::min(d0, d1) - m4 > safe_lo_[dof]) continue;
+    }
+    const int k = ns_ + j;
+    const SwitchValue a = storey_value(dyn, k, y0, dy0), b = storey_value(dyn, k, y1, dy1);
+    consider(k, {a.value, b.value, h * a.rate, h * b.rate}, false);
+  }
+  if (!dyn.capped()) return best;
+  for (int i = 0; i < ns_; ++i) {  // the crushing switches (a capped pounding run)
+    const int k = first_crush() + i;
+    if (!dyn.active[i] || (ignore && (*ignore)[k])) continue;
+    const SwitchValue a = crush_value(dyn, i, y0, dy0), b = crush_value(dyn, i, y1, dy1);
+    consider(k, {a.value, b.value, h * a.rate, h * b.rate}, false);
   }
   return best;
 }

@@ -90,6 +90,15 @@ inline double column_shear_demand(const ContactSite& s, double storey_shear, dou
   return std::max(std::fabs(below), std::fabs(above));
 }
 
+/// A slab site as before issue 36: each side one DOF of weight 1, its slab's floor (dof_left,
+/// dof_right), so that sum w_k u_k is that floor's u (the per-step fast paths of RowDynamics and
+/// the damped Sears path).
+inline bool slab_site(const ContactSite& s) {
+  return !s.column() && s.struck_dof < 0 && s.left.count == 1 && s.right.count == 1 &&
+         s.left.weight[0] == 1.0 && s.right.weight[0] == 1.0 && s.left.dof[0] == s.dof_left &&
+         s.right.dof[0] == s.dof_right;
+}
+
 /// The storey below one floor DOF (storey j joins floor j-1, or the ground, to floor j). A
 /// building on a flexible foundation (structure/building_on_base.hpp) has two DOFs more, its
 /// base's sway and rotation, each held by its foundation spring as by a linear "storey" on the
