@@ -76,6 +76,14 @@ bool SearsRowRun::located_clear(double h, double t_next) {
   return true;
 }
 
+// The lumped solver takes the floors over at the point i of the h_L grid: their state, the
+// storeys' committed states and the energy terms so far.
+void SearsRowRun::start_stretch(long i) {
+  const double energy[3] = {e_input, e_damping, e_contact};
+  lumped->resume(i * dt, u, v, storeys.committed_states(), energy);
+  ++out.counts.lumped_stretches;
+}
+
 // From the point i of the h_L grid: steps of h_L on FreeStretches, each kept only when
 // located_clear() shows it came nowhere near a contact, then recorded as lumped_stretch()
 // records its steps. Returns the fine step index reached; a step that is not clear is re-taken
@@ -83,9 +91,7 @@ bool SearsRowRun::located_clear(double h, double t_next) {
 long SearsRowRun::located_stretch(long i) {
   const long per = stepping.lumped * stepping.ratio;  // fine steps per lumped step
   const double hl = stepping.lumped_s();
-  const double energy[3] = {e_input, e_damping, e_contact};
-  lumped->resume(i * dt, u, v, storeys.committed_states(), energy);
-  ++out.counts.lumped_stretches;
+  start_stretch(i);
   lu.resize(n);
   lv.resize(n);
   la.resize(n);

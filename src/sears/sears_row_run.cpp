@@ -387,9 +387,7 @@ void SearsRowRun::record_peaks(bool coarse, const double* ag, double t_next, dou
 long SearsRowRun::lumped_stretch(long i) {
   const long per = stepping.lumped * stepping.ratio;  // fine steps per lumped step
   const double hl = stepping.lumped_s();
-  const double energy[3] = {e_input, e_damping, e_contact};
-  lumped->resume(i * dt, u, v, storeys.committed_states(), energy);
-  ++out.counts.lumped_stretches;
+  start_stretch(i);
   bool stop = false;
   do {
     i += per;

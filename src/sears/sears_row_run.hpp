@@ -97,6 +97,7 @@ class SearsRowRun {
   // Coarse steps (no contact), and stretches on the lumped solver's steps (issue 30).
   void coarse_step(double t_next);
   bool contact_free(double h);
+  void start_stretch(long i);  // the lumped solver resumes from the floors at point i
   long lumped_stretch(long i);
   void leave_stretch();
   // Stretches on the located approach where the translation bound is not proved (a massless

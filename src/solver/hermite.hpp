@@ -116,6 +116,18 @@ struct QuinticHermite {
     return std::max(g0, g1) + 16.0 / 81.0 * (std::fabs(m0) + std::fabs(m1)) +
            54.0 / 3125.0 * (std::fabs(c0) + std::fabs(c1));
   }
+  // A stationary point of the cubic at t refined by Newton's method on the quintic's slope (three
+  // steps, kept inside (0, 1)).
+  double refined(double t) const {
+    for (int it = 0; it < 3; ++it) {
+      const double d2 = curvature(t);
+      if (d2 == 0.0) break;
+      const double tn = t - slope(t) / d2;
+      if (!(tn > 0.0 && tn < 1.0)) break;
+      t = tn;
+    }
+    return t;
+  }
   // The largest value over the step: the ends, the cubic's stationary points refined by
   // Newton's method on the quintic's slope (as refine_peak) and, for a maximum the cubic does not
   // show, the values at theta = k / 8.
@@ -124,14 +136,7 @@ struct QuinticHermite {
     double st[2];
     const int n = cubic().stationary(st);
     for (int k = 0; k < n; ++k) {
-      double t = st[k];
-      for (int it = 0; it < 3; ++it) {
-        const double d2 = curvature(t);
-        if (d2 == 0.0) break;
-        const double tn = t - slope(t) / d2;
-        if (!(tn > 0.0 && tn < 1.0)) break;
-        t = tn;
-      }
+      const double t = refined(st[k]);
       m = std::max(m, at(t));
     }
     for (int k = 1; k < 8; ++k) m = std::max(m, at(k / 8.0));
@@ -147,14 +152,7 @@ struct QuinticHermite {
     double st[2];
     const int n = c.stationary(st);
     for (int k = 0; k < n; ++k) {
-      double t = st[k];
-      for (int it = 0; it < 3; ++it) {
-        const double d2 = curvature(t);
-        if (d2 == 0.0) break;
-        const double tn = t - slope(t) / d2;
-        if (!(tn > 0.0 && tn < 1.0)) break;
-        t = tn;
-      }
+      const double t = refined(st[k]);
       m = std::max(m, std::fabs(at(t)));
     }
     return m;

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "motion/ground_motion.hpp"
 #include "risk/risk_integral.hpp"
@@ -92,6 +93,19 @@ double log_width(const Interval& iv) {
   return std::log(iv.hi / iv.lo);
 }
 
+// Each estimate of a damage limit with its bootstrap band.
+struct PointAndBand {
+  double point;
+  Interval band;
+};
+std::vector<PointAndBand> points_and_bands(const DamageRisk& d) {
+  return {{d.maf_pounding, d.maf_pounding_band},
+          {d.maf_free, d.maf_free_band},
+          {d.ratio, d.ratio_band},
+          {d.probability_pounding, d.probability_pounding_band},
+          {d.probability_free, d.probability_free_band}};
+}
+
 TEST(DamageRisk, TheBandHoldsThePointAndTheRatioOfPairedRatesVariesLess) {
   const RiskSettings s = replicates(400);
   const auto damage = risks(drift_campaign(40), s);
@@ -103,15 +117,7 @@ TEST(DamageRisk, TheBandHoldsThePointAndTheRatioOfPairedRatesVariesLess) {
     EXPECT_EQ(d.bootstrap_replicates, 400);
     EXPECT_DOUBLE_EQ(d.probability_pounding, probability_in_years(d.maf_pounding, s.years));
     EXPECT_DOUBLE_EQ(d.probability_free, probability_in_years(d.maf_free, s.years));
-    const struct {
-      double point;
-      Interval band;
-    } all[] = {{d.maf_pounding, d.maf_pounding_band},
-               {d.maf_free, d.maf_free_band},
-               {d.ratio, d.ratio_band},
-               {d.probability_pounding, d.probability_pounding_band},
-               {d.probability_free, d.probability_free_band}};
-    for (const auto& x : all) {
+    for (const PointAndBand& x : points_and_bands(d)) {
       EXPECT_EQ(x.band.finite, 400);
       EXPECT_LT(x.band.lo, x.point);
       EXPECT_GT(x.band.hi, x.point);
@@ -216,15 +222,7 @@ TEST(DamageRisk, ReplicatesThatAreTheDataGiveABandThatIsThePointLikeForLikeInclu
   for (const DamageRisk& d : damage) {
     SCOPED_TRACE(d.building);
     ASSERT_TRUE(d.pounding.finite() && d.free.finite() && d.free_same.finite());
-    const struct {
-      double point;
-      Interval band;
-    } all[] = {{d.maf_pounding, d.maf_pounding_band},
-               {d.maf_free, d.maf_free_band},
-               {d.ratio, d.ratio_band},
-               {d.probability_pounding, d.probability_pounding_band},
-               {d.probability_free, d.probability_free_band}};
-    for (const auto& x : all) {
+    for (const PointAndBand& x : points_and_bands(d)) {
       EXPECT_EQ(x.band.finite, 50);
       EXPECT_DOUBLE_EQ(x.band.lo, x.point);
       EXPECT_DOUBLE_EQ(x.band.hi, x.point);
