@@ -12,14 +12,25 @@
 
 namespace pound {
 
+namespace {
+
+// A building's name for messages and site descriptions; "building N" (N from 1) for a building
+// built without one (a hand-built row, the Python API).
+std::string label(const BuildingRow& row, int b) {
+  const std::string& name = row.buildings[b].name;
+  return name.empty() ? "building " + std::to_string(b + 1) : name;
+}
+
+}  // namespace
+
 int colliding_levels(const BuildingRow& row, int pair) {
   return static_cast<int>(pair_sites(row.buildings[pair], row.buildings[pair + 1]).size());
 }
 
 std::string describe_site(const BuildingRow& row, const ContactSite& s) {
   const SiteGeometry& g = s.geometry;
-  const std::string& slab = row.buildings[s.pair + g.slab_side].name;
-  const std::string& hit = row.buildings[s.pair + 1 - g.slab_side].name;
+  const std::string slab = label(row, s.pair + g.slab_side);
+  const std::string hit = label(row, s.pair + 1 - g.slab_side);
   std::string out = slab + " floor " + std::to_string(g.slab_floor + 1) + " against " + hit;
   if (g.kind == SiteKind::slab)
     return out + " floor " + std::to_string(g.hit + 1) + " (slab to slab)";
@@ -54,8 +65,7 @@ std::vector<std::string> describe_sites(const BuildingRow& row) {
       aligned =
           aligned && g[k].kind == SiteKind::slab && g[k].slab_floor == int(k) && g[k].hit == int(k);
     if (aligned) {
-      out.push_back(pair + " (" + row.buildings[p].name + " | " + row.buildings[p + 1].name +
-                    "): " +
+      out.push_back(pair + " (" + label(row, int(p)) + " | " + label(row, int(p) + 1) + "): " +
                     (g.empty()       ? std::string("no contact site")
                      : g.size() == 1 ? std::string("floor 1 slab to slab")
                                      : "floors 1-" + std::to_string(g.size()) + " slab to slab"));
@@ -116,7 +126,7 @@ ContactSite make_site(const BuildingRow& row, const AssembledRow& a, int p, int 
     s.struck_sign = g.slab_side == 0 ? 1.0 : -1.0;
     for (int q = 0; q < hit.count; ++q)
       if (a.massless[hit.dof[q]])
-        throw InputError(bd.name + ": a slab of " + row.buildings[slab_b].name +
+        throw InputError(label(row, hit_b) + ": a slab of " + label(row, slab_b) +
                          " strikes the columns of storey " + std::to_string(g.hit + 1) +
                          ", which stand on a massless foundation DOF: not modelled; give the "
                          "foundation a mass and rotary inertia (foundation_mass, "
@@ -237,9 +247,9 @@ AssembledRow assemble(const BuildingRow& row) {
     const std::vector<SiteGeometry> g = pair_sites(row.buildings[p], row.buildings[p + 1]);
     const std::size_t given = p < static_cast<int>(row.gaps.size()) ? row.gaps[p].size() : 0;
     if (given != g.size())  // the study readers expand one gap to every site
-      throw InputError("pair " + std::to_string(p + 1) + " (" + row.buildings[p].name + " | " +
-                       row.buildings[p + 1].name + "): " + std::to_string(given) +
-                       " gaps for its " + std::to_string(g.size()) +
+      throw InputError("pair " + std::to_string(p + 1) + " (" + label(row, p) + " | " +
+                       label(row, p + 1) + "): " + std::to_string(given) + " gaps for its " +
+                       std::to_string(g.size()) +
                        " contact sites; valid: one gap per site, in the order pound simulate "
                        "lists them");
     for (std::size_t k = 0; k < g.size(); ++k)

@@ -7,6 +7,8 @@
 
 #include <Eigen/Dense>
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "../support/buildings.hpp"
 #include "core/error.hpp"
@@ -159,6 +161,26 @@ TEST(ContactGeometry, AGapListOfAnotherLengthThanTheSitesIsAnInputError) {
                  "pair 1 (L | R): 3 gaps for its 4 contact sites; valid: one gap per site, in "
                  "the order pound simulate lists them");
   }
+}
+
+TEST(ContactGeometry, BuildingsWithoutNamesAreNamedByTheirPlaceInTheRow) {
+  // A row built by hand (or from Python) may leave the names empty: the messages and the site
+  // lines then say "building N", never an empty name.
+  BuildingRow row;
+  row.buildings = {at(3, 3.0, 0.0, 0.2), at(2, 3.6, 0.0, 0.2)};
+  row.gaps = {{0.01}};
+  try {
+    assemble(row);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("pair 1 (building 1 | building 2): 1 gaps for its 4", 0),
+              0u)
+        << e.what();
+  }
+  const std::vector<std::string> lines = describe_sites(row);
+  ASSERT_EQ(lines.size(), 4u);
+  EXPECT_NE(lines[0].find("building 1 floor"), std::string::npos) << lines[0];
+  EXPECT_NE(lines[0].find("against building 2"), std::string::npos) << lines[0];
 }
 
 }  // namespace
