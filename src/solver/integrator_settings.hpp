@@ -26,6 +26,13 @@ struct IntegratorSettings {
   /// reaches this (the base's relative error at most about 2 pi / this, 6e-4, the floors' that
   /// times the base's share of their response); infinity: never [-].
   double stiff_root = 1e4;
+  /// Adaptive control on a row whose massive flexible bases carry dashpots too stiff for an
+  /// explicit step (issue 38; C_dd / M_d times h_max above Dormand-Prince's 3.3): the additive
+  /// Runge-Kutta pair ARK5(4)8L[2]SA, implicit in those dashpots on the bases' own velocities
+  /// (solver/ark_imex.hpp). Off by default: measured, it loses order where the dashpot's force
+  /// balances the explicit forces (the soft-soil study took more steps, not fewer; docs/speed.md
+  /// "IMEX steps on soil"); false: Dormand-Prince throughout.
+  bool imex_bases = false;
 };
 
 }  // namespace pound

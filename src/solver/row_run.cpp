@@ -104,6 +104,8 @@ void RowRun::set_step_limits() {
   if (s_.exact_free && !fixed_ && !track_ && h_max_known && (dyn_.linear() || dyn_.affine()) &&
       dyn_.layout().storey_states == 0 && dyn_.quasi_static().empty())
     exact_.enable(row_, h_max_, rec_dt_, p_->exact_cache);
+  implicit_ = ImplicitSet{};
+  if (s_.imex_bases && !fixed_ && h_max_known) implicit_ = stiff_base_dashpots(row_, dyn_, h_max_);
   if (fixed_ && !(s_.dt > 0)) throw InputError("fixed-step integration needs dt > 0");
   h_ = fixed_ ? s_.dt : std::min(h_max_, 1e-4);
 }

@@ -6,6 +6,7 @@
 #include <memory>
 #include <vector>
 
+#include "solver/ark_imex.hpp"
 #include "solver/dopri5.hpp"
 #include "solver/exact_steps.hpp"
 #include "solver/hermite.hpp"
@@ -76,8 +77,13 @@ class RowRun {
     auto f = [this](double tt, const Eigen::VectorXd& yy, Eigen::VectorXd& dy) {
       dyn_.rhs(tt, yy, dy);
     };
-    dopri5_step(f, t, h, y, k1, y1, err, work_);
-    k7 = work_.k7;
+    if (implicit_.empty()) {
+      dopri5_step(f, t, h, y, k1, y1, err, work_);
+      k7 = work_.k7;
+    } else {  // stiff base dashpots (issue 38): IMEX, the derivative at the end not a stage
+      ark_imex_step(f, t, h, y, k1, y1, err, implicit_, ark_work_);
+      dyn_.rhs(t + h, y1, k7);
+    }
     dyn_.project(y1, k7);
   }
   double error_norm(const Eigen::VectorXd& y0, const Eigen::VectorXd& y1,
@@ -135,6 +141,10 @@ class RowRun {
   ExactSteps exact_;
   RunRecorder rec_;
   Dopri5Work work_;
+  // The entries integrated implicitly (the stiff dashpots of massive bases on their own
+  // velocities; empty: Dormand-Prince), chosen once per run (set_step_limits).
+  ImplicitSet implicit_;
+  ArkImexWork ark_work_;
 
   // The fork of a free run (solve_free_and_pounding). Until a site comes within kForkMargin of
   // touching, the pounding run's steps are the free run's (no contact is active, no contact
