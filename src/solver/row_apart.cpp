@@ -172,6 +172,14 @@ void set_up(ApartPart& q, const BuildingRow& row, const RowProblem& p, int b,
   }
 }
 
+// The watches' step arrays (hundreds of kB a run), kept per thread from one run to the next:
+// fresh ones would come from the system page by page in every sample (the heap hands them
+// back when they are freed), at a page fault each.
+std::vector<std::vector<double>>& watch_pool() {
+  thread_local std::vector<std::vector<double>> pool;
+  return pool;
+}
+
 }  // namespace
 
 namespace detail {
@@ -205,10 +213,20 @@ ApartRow::ApartRow(const BuildingRow& row, const RowProblem& p_row) : p(p_row) {
   // About three steps per record sample (Dormand-Prince through yielding), grown if needed.
   const double rec_dt = p.ground ? p.ground->dt() : 0.0;
   const std::size_t guess = rec_dt > 0 ? static_cast<std::size_t>(3.0 * p.t_end / rec_dt) : 0;
+  std::vector<std::vector<double>>& pool = watch_pool();
   for (ApartPart& q : parts) {
+    if (!pool.empty()) {
+      q.watch.steps.swap(pool.back());
+      pool.pop_back();
+    }
     q.watch.reset();
     q.watch.steps.reserve(guess * static_cast<std::size_t>(q.watch.stride()));
   }
+}
+
+ApartRow::~ApartRow() {
+  std::vector<std::vector<double>>& pool = watch_pool();
+  for (ApartPart& q : parts) pool.push_back(std::move(q.watch.steps));
 }
 
 RowResult ApartRow::merge() const {

@@ -28,6 +28,7 @@ struct ApartPart {
 // themselves (p.row = &a): the object is neither copied nor moved.
 struct ApartRow {
   ApartRow(const BuildingRow& row, const RowProblem& p);
+  ~ApartRow();
   ApartRow(const ApartRow&) = delete;
   ApartRow& operator=(const ApartRow&) = delete;
   // The row's result in its DOFs from each part's r: peaks, end state, energy and step counts;
