@@ -110,7 +110,7 @@ RowSimulation simulate_row(const BuildingRow& row, const RowGround& ground,
   opt.apply_to(p, ground);
   for (const auto& l : laws) p.laws.push_back(l.get());
   p.force_cap = contact.force_cap;
-  RunPair runs = solve_free_and_pounding(p, integ);  // without and with the contacts
+  RunPair runs = solve_free_and_pounding(row, p, integ);  // without and with the contacts
   return summarize_runs(row, ground, p.t_end, std::move(runs.free), std::move(runs.pounding));
 }
 

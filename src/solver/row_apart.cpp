@@ -9,27 +9,18 @@
 #include <vector>
 
 #include "solver/hermite.hpp"
+#include "solver/row_apart_parts.hpp"
 #include "solver/row_run.hpp"
 
 namespace pound {
 namespace {
 
+using detail::ApartPart;
+using detail::ApartRow;
 using detail::RowRun;
 using detail::StepWatch;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-// One building of the row, alone: its own assembled row (assemble() of that building, no
-// sites), its ground channel, its problem, its DOFs' places in the row (floors first, then
-// its base's sway and rotation, in both numberings), and what its run watched.
-struct Part {
-  AssembledRow a;
-  RowGround ground;
-  RowProblem p;
-  std::vector<int> to_row;  // per own DOF its row DOF
-  StepWatch watch;
-  RowResult r;
-};
 
 // The row DOFs of building b in the order assemble() gives a row of b alone: its floors, then
 // its base's sway and rotation where it has them.
@@ -154,7 +145,8 @@ double peak_approach(const Side& l, const Side& r, const GroundTrace* trace_l,
 
 // Building b of the row alone (Part): its own row, DOF maps (to_own: per row DOF its own DOF),
 // ground channel and problem.
-void set_up(Part& q, const BuildingRow& row, const RowProblem& p, int b, std::vector<int>& to_own) {
+void set_up(ApartPart& q, const BuildingRow& row, const RowProblem& p, int b,
+            std::vector<int>& to_own) {
   const AssembledRow& ra = *p.row;
   BuildingRow one;
   one.buildings = {row.buildings[static_cast<std::size_t>(b)]};
@@ -180,21 +172,29 @@ void set_up(Part& q, const BuildingRow& row, const RowProblem& p, int b, std::ve
   }
 }
 
+// The watches' step arrays (hundreds of kB a run), kept per thread from one run to the next:
+// fresh ones would come from the system page by page in every sample (the heap hands them
+// back when they are freed), at a page fault each.
+std::vector<std::vector<double>>& watch_pool() {
+  thread_local std::vector<std::vector<double>> pool;
+  return pool;
+}
+
 }  // namespace
 
-RowResult solve_apart(const BuildingRow& row, const RowProblem& p, const IntegratorSettings& s) {
-  if (!p.laws.empty()) throw std::logic_error("solve_apart: a problem without contact laws");
+namespace detail {
+
+ApartRow::ApartRow(const BuildingRow& row, const RowProblem& p_row) : p(p_row) {
   const AssembledRow& ra = *p.row;
   const int nb = static_cast<int>(row.buildings.size()), n = ra.dofs();
-  if (nb < 2 || p.record_history) return solve(p, s);
   // Each building alone, on its own channel; its watch: the sides of its sites and the
   // storeys its neighbours strike (column sites).
-  std::vector<Part> parts(static_cast<std::size_t>(nb));
-  std::vector<std::vector<int>> to_own(static_cast<std::size_t>(nb), std::vector<int>(n, -1));
+  parts = std::vector<ApartPart>(static_cast<std::size_t>(nb));
+  to_own.assign(static_cast<std::size_t>(nb), std::vector<int>(n, -1));
   for (int b = 0; b < nb; ++b)
     set_up(parts[static_cast<std::size_t>(b)], row, p, b, to_own[static_cast<std::size_t>(b)]);
   const int ns = static_cast<int>(ra.sites.size());
-  std::vector<int> left(ns), right(ns), shear(ns, -1);
+  left.assign(ns, 0), right.assign(ns, 0), shear.assign(ns, -1);
   for (int i = 0; i < ns; ++i) {
     const ContactSite& site = ra.sites[static_cast<std::size_t>(i)];
     StepWatch& wl = parts[static_cast<std::size_t>(site.pair)].watch;
@@ -213,17 +213,26 @@ RowResult solve_apart(const BuildingRow& row, const RowProblem& p, const Integra
   // About three steps per record sample (Dormand-Prince through yielding), grown if needed.
   const double rec_dt = p.ground ? p.ground->dt() : 0.0;
   const std::size_t guess = rec_dt > 0 ? static_cast<std::size_t>(3.0 * p.t_end / rec_dt) : 0;
-  bool collapsed = false;
-  for (Part& q : parts) {
+  std::vector<std::vector<double>>& pool = watch_pool();
+  for (ApartPart& q : parts) {
+    if (!pool.empty()) {
+      q.watch.steps.swap(pool.back());
+      pool.pop_back();
+    }
     q.watch.reset();
     q.watch.steps.reserve(guess * static_cast<std::size_t>(q.watch.stride()));
-    RowRun run(q.p, s);
-    run.watch(&q.watch);
-    q.r = run.run();
-    for (const BuildingCollapse& c : q.r.collapse) collapsed = collapsed || c.collapsed;
   }
-  if (collapsed && p.track_energy) return solve(p, s);
+}
 
+ApartRow::~ApartRow() {
+  std::vector<std::vector<double>>& pool = watch_pool();
+  for (ApartPart& q : parts) pool.push_back(std::move(q.watch.steps));
+}
+
+RowResult ApartRow::merge() const {
+  const AssembledRow& ra = *p.row;
+  const int nb = static_cast<int>(parts.size()), n = ra.dofs();
+  const int ns = static_cast<int>(ra.sites.size());
   // The row's result in its DOFs.
   RowResult out;
   for (Eigen::VectorXd* v : {&out.peak_disp, &out.peak_drift, &out.peak_abs_accel,
@@ -231,7 +240,7 @@ RowResult solve_apart(const BuildingRow& row, const RowProblem& p, const Integra
     v->setZero(n);
   out.stopped = true;
   for (int b = 0; b < nb; ++b) {
-    const Part& q = parts[static_cast<std::size_t>(b)];
+    const ApartPart& q = parts[static_cast<std::size_t>(b)];
     const RowResult& r = q.r;
     for (int k = 0; k < q.a.dofs(); ++k) {
       const int d = q.to_row[k];
@@ -279,6 +288,23 @@ RowResult solve_apart(const BuildingRow& row, const RowProblem& p, const Integra
     }
   }
   return out;
+}
+
+}  // namespace detail
+
+RowResult solve_apart(const BuildingRow& row, const RowProblem& p, const IntegratorSettings& s) {
+  if (!p.laws.empty()) throw std::logic_error("solve_apart: a problem without contact laws");
+  if (row.buildings.size() < 2 || p.record_history) return solve(p, s);
+  ApartRow apart(row, p);
+  bool collapsed = false;
+  for (ApartPart& q : apart.parts) {
+    RowRun run(q.p, s);
+    run.watch(&q.watch);
+    q.r = run.run();
+    for (const BuildingCollapse& c : q.r.collapse) collapsed = collapsed || c.collapsed;
+  }
+  if (collapsed && p.track_energy) return solve(p, s);
+  return apart.merge();
 }
 
 bool apart_pays(const BuildingRow& row) {

@@ -337,9 +337,11 @@ RowResult RowRun::advance() {
   return rec_.result();
 }
 
-bool RowRun::advance_until(double t_end) {
+bool RowRun::advance_until(double t_end, bool one_step) {
   const bool events = switches_.any(dyn_);
+  const double t_begin = t_;
   while (t_ < t_end * (1 - 1e-14)) {
+    if (one_step && t_ > t_begin) return false;  // advance_step: one step taken
     if (rec_.take_new_collapses() > 0 && on_collapse()) return true;
     exact_.begin_iteration();
     if (rec_.result().steps + rec_.result().rejected > s_.max_steps)

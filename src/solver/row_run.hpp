@@ -33,7 +33,16 @@ class RowRun {
   RowResult advance();  // from the current state to the end
   // Steps from the current state to t_end [s] (no finish()); true when a collapse stopped the
   // run (a run with contacts, or every building held).
-  bool advance_until(double t_end);
+  bool advance_until(double t_end, bool one_step = false);
+  // The row scheduler (RowStepper, row_stepper.hpp): the initial state (as run() starts), one
+  // accepted step at a time (advance_until's loop until the time moves; events applied at the
+  // step's end are part of it; true when a collapse stopped the run), and the result at the end.
+  void begin() { start(); }
+  bool advance_step(double t_end) { return advance_until(t_end, true); }
+  RowResult end() {
+    finish();
+    return rec_.result();
+  }
   // Continues from a given state at time t [s] (FreeStretches, row_solver.hpp): floor
   // displacements u [m] and velocities v [m/s], each storey's discrete state (and its
   // continuous states in StoreyState::x), the energy balance so far (input, damping, contact
@@ -56,6 +65,7 @@ class RowRun {
   // A free run that collapsed before its pounding run forked: the pounding run (which stops at
   // the first collapse) must be solved on its own.
   bool needs_own_pounding_run() const { return own_pounding_run_; }
+  static constexpr double fork_margin() { return kForkMargin; }  // [m]
   // Dense output of chosen points and storey shears (solve_apart, row_apart.hpp), filled from
   // the next step on; null: none.
   void watch(StepWatch* w) { watch_ = w; }

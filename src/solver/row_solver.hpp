@@ -71,6 +71,13 @@ struct RunPair {
 /// as solve().
 RunPair solve_free_and_pounding(const RowProblem& p, const IntegratorSettings& s);
 
+/// The same for the row `row` (p.row = &assemble(row)): where fork_apart_applies(row, p) (a
+/// row of an elastic and a yielding building: solver/row_stepper.hpp) the free run building by
+/// building and the pounding run forked at a common time (solve_free_and_pounding_apart); else
+/// solve_free_and_pounding(p, s), bit for bit.
+RunPair solve_free_and_pounding(const BuildingRow& row, const RowProblem& p,
+                                const IntegratorSettings& s);
+
 namespace detail {
 class RowRun;
 }

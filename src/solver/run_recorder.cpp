@@ -136,6 +136,21 @@ void RunRecorder::start(const Eigen::VectorXd& u0) {
         site_points_[s].first.of(u0.data()) - site_points_[s].second.of(u0.data());
 }
 
+void RunRecorder::merge_from(const RunRecorder& other, const std::vector<int>& dof_map) {
+  const RowResult& o = other.r_;
+  for (int k = 0; k < other.n_; ++k) {
+    const int d = dof_map[static_cast<std::size_t>(k)];
+    r_.peak_disp(d) = std::max(r_.peak_disp(d), o.peak_disp(k));
+    r_.peak_drift(d) = std::max(r_.peak_drift(d), o.peak_drift(k));
+    r_.peak_abs_accel(d) = std::max(r_.peak_abs_accel(d), o.peak_abs_accel(k));
+  }
+  r_.steps += o.steps;
+  r_.rejected += o.rejected;
+  r_.events += o.events;
+  r_.exact_steps += o.exact_steps;
+  r_.steps_from_free = r_.steps;
+}
+
 void RunRecorder::collapse(int b, int storey, double t, CollapseCause cause) {
   if (r_.collapse.empty() || r_.collapse[b].collapsed) return;
   r_.collapse[b] = {true, t, storey, cause};

@@ -41,6 +41,11 @@ class RunRecorder {
   }
   RowResult& result() { return r_; }
   const RowResult& result() const { return r_; }
+  /// The lumped fork at a common time (RowStepper, row_stepper.hpp): a run with contacts of the
+  /// whole row, resumed where its buildings' free runs stand, takes their peaks so far (each
+  /// DOF k of `other`'s row is DOF dof_map[k] here) and their step counts (as the pounding
+  /// run's steps shared with the free run). Call after start(u) at the resumed state.
+  void merge_from(const RunRecorder& other, const std::vector<int>& dof_map);
 
   // --- Floors ------------------------------------------------------------------------------
   /// Peak absolute accelerations from the relative ones a_rel [m/s^2] and the ground's ag under
