@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstring>
 
+#include "solver/small_dense.hpp"
+
 namespace pound {
 
 ExactSteps::ExactSteps(const ExactSteps& o)
@@ -15,12 +17,13 @@ ExactSteps::ExactSteps(const ExactSteps& o)
       cache_(o.cache_ == &o.own_cache_ ? &own_cache_ : o.cache_),
       blocks_(o.blocks_),
       whole_(o.whole_),
+      rates_(o.rates_),
       gate_(o.gate_),
       k_scratch_(o.k_scratch_),
       kb_scratch_(o.kb_scratch_),
       c_scratch_(o.c_scratch_),
-      z0_(o.z0_),
       z1_(o.z1_),
+      a1_(o.a1_),
       visits_(o.visits_),
       declined_before_iteration_(o.declined_before_iteration_),
       visited_(o.visited_) {}
@@ -44,6 +47,7 @@ void ExactSteps::enable(const AssembledRow& row, double h_max, double rec_dt,
   whole_ = std::none_of(row.rot.begin(), row.rot.end(), [](int r) { return r >= 0; });
   blocks_.assign(whole_ ? 1 : nb, Block{});
   int largest = 0;
+  rates_ = !whole_ && (row.inv_mass.array() != 0.0).all();
   for (int b = 0; b < static_cast<int>(blocks_.size()); ++b) {
     std::vector<int> dofs;
     if (whole_) {
@@ -59,12 +63,52 @@ void ExactSteps::enable(const AssembledRow& row, double h_max, double rec_dt,
     for (int i : dofs) st.push_back(n + i);
     largest = std::max(largest, static_cast<int>(st.size()));
   }
-  z0_.setZero(largest);
-  z1_.setZero(largest);
+  z1_.setZero(largest + 4);  // (padded rows)
+  a1_.setZero(largest + 4);
   invalidate();
 }
 
 namespace {
+
+// A block's step in place (ExactSteps::step on flexible foundations): z1 = Phi z0 + c + P1 a0 +
+// P2 (a1 - a0) as linear_step_apply's kernels, the same operations in the same order (the same
+// bits: element by element, no fused multiply-add), with z0 read from the row's state y0 at the
+// block's entries idx and the rows padded to ld, a multiple of 4 (zero rows), so that the
+// columns go by whole vectors of four (GCC's vector extension: AVX2 or two SSE2 halves).
+using dense::add_columns_any;
+using dense::V4;
+
+__attribute__((target_clones("avx2", "default"))) void block_apply_kernel(
+    int ns, int ld, const double* __restrict phi, const double* __restrict c,
+    const double* __restrict q1, const double* __restrict q2, double a0, double da,
+    const double* __restrict y0, const int* __restrict idx, double* __restrict z1) {
+  const int nv = ld / 4;
+  V4* z = reinterpret_cast<V4*>(z1);
+  const V4 *cv = reinterpret_cast<const V4*>(c), *p1 = reinterpret_cast<const V4*>(q1),
+           *p2 = reinterpret_cast<const V4*>(q2);
+  for (int i = 0; i < nv; ++i) z[i] = cv[i] + p1[i] * a0 + p2[i] * da;
+  add_columns_any(ns, ld, phi, y0, idx, z);  // Phi is column-major: add its columns
+}
+
+// A further ramped input (linear_step_apply's add_input) on ld rows.
+__attribute__((target_clones("avx2", "default"))) void block_add_input(int ld,
+                                                                       const double* __restrict q1,
+                                                                       const double* __restrict q2,
+                                                                       double a0, double da,
+                                                                       double* __restrict z1) {
+  V4* z = reinterpret_cast<V4*>(z1);
+  const V4 *p1 = reinterpret_cast<const V4*>(q1), *p2 = reinterpret_cast<const V4*>(q2);
+  for (int i = 0; i < ld / 4; ++i) z[i] += p1[i] * a0 + p2[i] * da;
+}
+
+// out = A_v z on lda rows (a multiple of 4), z read from y at idx (ExactSteps::rates).
+__attribute__((target_clones("avx2", "default"))) void block_rates_kernel(
+    int ns, int lda, const double* __restrict acc, const double* __restrict y,
+    const int* __restrict idx, double* __restrict out) {
+  V4* o = reinterpret_cast<V4*>(out);
+  for (int i = 0; i < lda / 4; ++i) o[i] = V4{0.0, 0.0, 0.0, 0.0};
+  add_columns_any(ns, lda, acc, y, idx, o);
+}
 
 // FNV-1a over the bits of the matrix' entries (-0 as +0: equal matrices hash alike).
 std::uint64_t bits_hash(const Eigen::MatrixXd& k) {
@@ -137,7 +181,10 @@ int ExactSteps::find_entry(int block, const Eigen::MatrixXd& K) {
   const auto [first, last] = cache_->by_key.equal_range(key);
   for (auto it = first; it != last; ++it)
     if (entries[it->second].block == block && entries[it->second].K == K) return it->second;
-  entries.push_back({block, K, key, false, {}});
+  entries.push_back(ExactStepCache::Entry{});
+  entries.back().block = block;
+  entries.back().K = K;
+  entries.back().key = key;
   const int e = static_cast<int>(entries.size()) - 1;
   cache_->by_key.emplace(key, e);
   return e;
@@ -223,20 +270,49 @@ bool ExactSteps::ready(const RowDynamics& dyn, const AssembledRow& row) {
           for (int c = 0; c < m; ++c) Bb(i, nd + c) = B(b.state[i], n + c);
         }
         e.step = block_step(Ab, Bb, h_);
+        pad_block(Ab, m, e);
       }
       e.ready = true;
     }
     if (!b.offsets_ready) {
       const std::vector<double>& off = dyn.offsets();
       const int nd = static_cast<int>(b.state.size()) / 2;
-      b.offsets_response.setZero(2 * nd);
+      b.offsets_response.setZero(whole_ ? 2 * nd : e.ld);
+      b.offsets_acc.setZero(nd);
       if (dyn.affine())
         for (int j = 0; j < nd; ++j)
-          if (off[b.state[j]] != 0.0) b.offsets_response += e.step.p1.col(j) * off[b.state[j]];
+          if (off[b.state[j]] != 0.0) {
+            b.offsets_response.head(2 * nd) += e.step.p1.col(j) * off[b.state[j]];
+            b.offsets_acc(j) = -row.inv_mass(b.state[j]) * off[b.state[j]];
+          }
       b.offsets_ready = true;
     }
   }
   return true;
+}
+
+// The padded copies of a block's step (its ground inputs: the last m columns of P1 and P2)
+// and the accelerations' rows of its A (Entry).
+void ExactSteps::pad_block(const Eigen::MatrixXd& Ab, int m, ExactStepCache::Entry& e) {
+  const int ns = static_cast<int>(Ab.rows()), nd = ns / 2;
+  const int ld = (ns + 3) / 4 * 4, lda = (nd + 3) / 4 * 4;
+  const LinearStep& L = e.step;
+  const int first = static_cast<int>(L.p1.cols()) - m;
+  e.ld = ld;
+  e.lda = lda;
+  e.phi.assign(static_cast<std::size_t>(ld) * ns, 0.0);
+  e.p1.assign(static_cast<std::size_t>(ld) * m, 0.0);
+  e.p2.assign(static_cast<std::size_t>(ld) * m, 0.0);
+  e.acc.assign(static_cast<std::size_t>(lda) * ns, 0.0);
+  for (int j = 0; j < ns; ++j)
+    for (int i = 0; i < ns; ++i) e.phi[j * ld + i] = L.phi(i, j);
+  for (int c = 0; c < m; ++c)
+    for (int i = 0; i < ns; ++i) {
+      e.p1[c * ld + i] = L.p1(i, first + c);
+      e.p2[c * ld + i] = L.p2(i, first + c);
+    }
+  for (int j = 0; j < ns; ++j)
+    for (int i = 0; i < nd; ++i) e.acc[j * lda + i] = Ab(nd + i, j);
 }
 
 void ExactSteps::step(int r, const double* a0, const double* a1, const Eigen::VectorXd& y0,
@@ -248,12 +324,37 @@ void ExactSteps::step(int r, const double* a0, const double* a1, const Eigen::Ve
                       y1.data());
     return;
   }
+  // Each building's block in place: its entries of y0 read where they are, its rows written
+  // back into y1 (the bits of linear_step_apply on the gathered block).
+  double* z1 = z1_.data();
   for (const Block& b : blocks_) {
-    const int ns = static_cast<int>(b.state.size());
-    for (int k = 0; k < ns; ++k) z0_(k) = y0(b.state[k]);
-    linear_step_apply(entries[b.config].step, r, a0, a1, b.offsets_response.data(), z0_.data(),
-                      z1_.data());
-    for (int k = 0; k < ns; ++k) y1(b.state[k]) = z1_(k);
+    const ExactStepCache::Entry& e = entries[b.config];
+    const int ns = static_cast<int>(b.state.size()), ld = e.ld;
+    const int m = static_cast<int>(e.p1.size()) / ld, first = m - r;
+    block_apply_kernel(ns, ld, e.phi.data(), b.offsets_response.data(), e.p1.data() + first * ld,
+                       e.p2.data() + first * ld, a0[0], a1[0] - a0[0], y0.data(), b.state.data(),
+                       z1);
+    for (int k = 1; k < r; ++k)
+      block_add_input(ld, e.p1.data() + (first + k) * ld, e.p2.data() + (first + k) * ld, a0[k],
+                      a1[k] - a0[k], z1);
+    for (int k = 0; k < ns; ++k) y1(b.state[k]) = z1[k];
+  }
+}
+
+void ExactSteps::rates(const RowDynamics& dyn, const double* agc, const Eigen::VectorXd& y,
+                       Eigen::VectorXd& dy) {
+  const auto& entries = cache_->entries;
+  const int n = dyn.layout().dofs;
+  double* a = a1_.data();
+  for (const Block& b : blocks_) {
+    const ExactStepCache::Entry& e = entries[b.config];
+    const int ns = static_cast<int>(b.state.size()), nd = ns / 2;
+    block_rates_kernel(ns, e.lda, e.acc.data(), y.data(), b.state.data(), a);
+    for (int k = 0; k < nd; ++k) {
+      const int i = b.state[k];
+      dy(i) = y(n + i);  // u' = v
+      dy(n + i) = a[k] + b.offsets_acc(k) - agc[dyn.channel(i)];
+    }
   }
 }
 

@@ -32,6 +32,13 @@ struct ExactStepCache {
                             ///< deteriorating law meets a new stiffness at every excursion)
     bool ready = false;
     LinearStep step;
+    // A building's block (ExactSteps::blocks_ of a row on flexible foundations): its step with
+    // the rows padded to ld, a multiple of 4 (zeros below; stepped in place, step()), and the
+    // accelerations' rows of its z' = A z + B w, padded to lda rows, for the derivative at the
+    // step's end (rates()).
+    int ld = 0, lda = 0;
+    std::vector<double> phi, p1, p2;  ///< Phi (ld x ns), P1, P2 (ld x inputs), column-major
+    std::vector<double> acc;          ///< A's rows n_d.. (lda x ns) [1/s^2, 1/s]
   };
   std::vector<Entry> entries;
   std::unordered_multimap<std::uint64_t, int> by_key;  ///< Entry::key -> its index in entries
@@ -92,6 +99,16 @@ class ExactSteps {
   static int ground_inputs(const RowDynamics& dyn) {
     return dyn.ground() ? dyn.ground()->channels() : 1;
   }
+  /// Whether rates() gives the derivative at a step's end: a row on flexible foundations
+  /// (per-building blocks) without massless DOFs. A row on fixed bases keeps RowDynamics::rhs.
+  bool has_rates() const { return rates_; }
+  /// The accelerations at the state y (after step(), with the same propagators) into
+  /// dy(n + i) for every floor DOF i: z' = A z + B w of the blocks (row_system; docs/physics.md
+  /// section 1 without contact forces), dv = A_v z - M^-1 off - ag, agc each ground channel's
+  /// acceleration at y's time and agc[channel(i)] the one under DOF i [m/s^2]
+  /// (FloorGround::channel_acc).
+  void rates(const RowDynamics& dyn, const double* agc, const Eigen::VectorXd& y,
+             Eigen::VectorXd& dy);
 
  private:
   // The DOFs a propagator steps: the whole row (a row on fixed bases: one propagator, its
@@ -104,6 +121,8 @@ class ExactSteps {
     int config = -1;         // its current stiffness' entry (-1: look it up again)
     bool offsets_ready = false;
     Eigen::VectorXd offsets_response;  // P1 of its offsets' columns times the offsets [m, m/s]
+                                       // (padded to the entry's ld rows on flexible foundations)
+    Eigen::VectorXd offsets_acc;       // -M^-1 off on its DOFs [m/s^2] (rates())
   };
   static void eliminate_massless(const RowDynamics& dyn, const Eigen::MatrixXd& K,
                                  const Eigen::MatrixXd& C, Eigen::MatrixXd& A, Eigen::MatrixXd& B);
@@ -112,6 +131,7 @@ class ExactSteps {
   void row_system(const RowDynamics& dyn, const AssembledRow& row, const Eigen::MatrixXd& K,
                   Eigen::MatrixXd& A, Eigen::MatrixXd& B);
   static LinearStep block_step(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B, double h);
+  static void pad_block(const Eigen::MatrixXd& Ab, int m, ExactStepCache::Entry& e);
   int find_entry(int block, const Eigen::MatrixXd& K);
 
   bool enabled_ = false;
@@ -122,12 +142,13 @@ class ExactSteps {
   ExactStepCache* cache_ = &own_cache_;
   std::vector<Block> blocks_;  // one (the whole row) or one per building
   bool whole_ = true;          // one block, the row in its own order
+  bool rates_ = false;         // has_rates()
   int gate_ = -1;  // the entry of the row's stiffness, whose visits count the warm-up (-1: look
                    // it up again); whole_: the block's own
   Eigen::MatrixXd k_scratch_;   // the current stiffness, to look up its entry [N/m]
   Eigen::MatrixXd kb_scratch_;  // a block's part of it [N/m]
   Eigen::MatrixXd c_scratch_;   // the current damping matrix [N s/m]
-  Eigen::VectorXd z0_, z1_;     // a block's state before and after its step
+  Eigen::VectorXd z1_, a1_;     // a block's state after its step, its accelerations
   std::vector<int> visits_;     // per entry: grid points of this run met with its stiffness
   // The declined grid point as it was when the current loop iteration began, restored by
   // undo_iteration when a fork takes the iteration back.

@@ -86,6 +86,9 @@ class RowDynamics {
   /// The ground acceleration under every floor DOF at t [m/s^2] (zeros without ground): the
   /// returned array holds n values until the next call.
   const double* ground_acc(double t) { return ground_.acc(t); }
+  /// Each ground channel's acceleration at t [m/s^2], and 0 at index channels()
+  /// (FloorGround::channel_acc; valid until the next call of it or ground_acc).
+  const double* ground_channel_acc(double t) { return ground_.channel_acc(t); }
   /// The ground channel of floor DOF i (FloorGround::channel).
   int channel(int i) const { return ground_.channel(i); }
   /// The ground states of y at t [s] (exact: GroundTrace), after an exact step.

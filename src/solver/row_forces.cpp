@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "solver/small_dense.hpp"
+
 namespace pound {
 
 // Storage of K and C. A shear building's K is tridiagonal (Th. 3.6) and so is its Rayleigh
@@ -136,6 +138,66 @@ void RowForces::set_base_path() {
   xv_.assign(nf, 0.0);
   floors_ = nf;
   base_path_ = true;
+  set_dense();
+}
+
+namespace {
+// out = A_v [u; v] of one building (RowForces::DenseBlock), its entries of u and v at idx.
+__attribute__((target_clones("avx2", "default"))) void dense_block_kernel(
+    int nd, int lda, const double* __restrict a, const double* __restrict u,
+    const double* __restrict v, const int* __restrict idx, double* __restrict out) {
+  dense::V4* o = reinterpret_cast<dense::V4*>(out);
+  for (int i = 0; i < lda / 4; ++i) o[i] = dense::V4{0.0, 0.0, 0.0, 0.0};
+  dense::add_columns_any(nd, lda, a, u, idx, o);
+  dense::add_columns_any(nd, lda, a + static_cast<std::ptrdiff_t>(nd) * lda, v, idx, o);
+}
+}  // namespace
+
+// The dense blocks of linear(): each building's DOFs with mass, K and C block diagonal over
+// them, none more than kDenseDofs (otherwise base_forces serves).
+void RowForces::set_dense() {
+  dense_.clear();
+  const int nf = row_.floors, nb = static_cast<int>(row_.offset.size());
+  std::vector<int> block(n_, -1);
+  std::vector<DenseBlock> blocks(nb);
+  for (int b = 0; b < nb; ++b) {
+    const int end = b + 1 < nb ? row_.offset[b + 1] : nf;
+    for (int i = row_.offset[b]; i < end; ++i) blocks[b].dofs.push_back(i);
+    if (row_.sway[b] >= 0) blocks[b].dofs.push_back(row_.sway[b]);
+    if (row_.rot[b] >= 0) blocks[b].dofs.push_back(row_.rot[b]);
+    for (int i : blocks[b].dofs) block[i] = b;
+    if (static_cast<int>(blocks[b].dofs.size()) > kDenseDofs) return;
+  }
+  for (int i = 0; i < n_; ++i) {
+    if (block[i] < 0 || !(row_.inv_mass(i) != 0.0)) return;
+    for (int j = 0; j < n_; ++j)
+      if (block[j] != block[i] && (row_.K(i, j) != 0.0 || row_.C(i, j) != 0.0)) return;
+  }
+  std::size_t largest = 0;
+  for (DenseBlock& g : blocks) {
+    const int nd = static_cast<int>(g.dofs.size());
+    g.lda = (nd + 3) / 4 * 4;
+    g.a.assign(static_cast<std::size_t>(g.lda) * 2 * nd, 0.0);
+    for (int j = 0; j < nd; ++j)
+      for (int i = 0; i < nd; ++i) {
+        const double im = row_.inv_mass(g.dofs[i]);
+        g.a[j * g.lda + i] = -im * row_.K(g.dofs[i], g.dofs[j]);
+        g.a[(nd + j) * g.lda + i] = -im * row_.C(g.dofs[i], g.dofs[j]);
+      }
+    largest = std::max(largest, static_cast<std::size_t>(g.lda));
+  }
+  dense_ = std::move(blocks);
+  dense_out_.assign(largest, 0.0);
+}
+
+void RowForces::dense_accelerations(const double* __restrict u, const double* __restrict v,
+                                    const double* __restrict ag, double* __restrict dv) const {
+  double* out = dense_out_.data();
+  for (const DenseBlock& g : dense_) {
+    const int nd = static_cast<int>(g.dofs.size());
+    dense_block_kernel(nd, g.lda, g.a.data(), u, v, g.dofs.data(), out);
+    for (int k = 0; k < nd; ++k) dv[g.dofs[k]] = out[k] - ag[g.dofs[k]];
+  }
 }
 
 void RowForces::set_base_tangent_damping(int i, double dc) {

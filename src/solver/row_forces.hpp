@@ -53,6 +53,9 @@ class RowForces {
   void stiffness(bool affine, Eigen::MatrixXd& K) const;
   /// The offsets of set_lines() [N] (zero before the first call).
   const std::vector<double>& offsets() const { return off_; }
+  /// Whether linear() takes the buildings' dense blocks (a linear row on flexible foundations,
+  /// every DOF with mass, no building over kDenseDofs DOFs; set_dense).
+  bool dense_path() const { return !dense_.empty(); }
 
   /// The force C v + f(u) on DOF i alone [N] (no mass, no ground, no contact), for a massless
   /// base DOF's velocity (a row with a flexible foundation; issue 29): f from K (`kind` 0,
@@ -89,6 +92,22 @@ class RowForces {
   /// the dashpots' forces, T v = the floors' velocities relative to the base.
   void base_damping(const double* v, double* cv) const;
   void base_accelerations(const double* u, const double* v, const double* ag, double* dv) const;
+  // Linear storeys on flexible foundations, every DOF with mass (set_dense, issue 38): per
+  // building its DOFs (floors, sway, rotation) and A_v = -M^-1 [K C] over them (K and C the
+  // row's, block diagonal over the buildings), lda rows (nd padded to a multiple of 4) by 2 nd
+  // columns, column-major: dv = A_v [u; v] - ag by small dense products, fewer operations than
+  // base_forces' O(n) pass for buildings of up to kDenseDofs DOFs (the same forces up to
+  // round-off: tests/solver/row_forces_base_test.cpp).
+  struct DenseBlock {
+    std::vector<int> dofs;
+    int lda = 0;
+    std::vector<double> a;  // [1/s^2], [1/s]
+  };
+  static constexpr int kDenseDofs = 12;
+  void set_dense();
+  void dense_accelerations(const double* u, const double* v, const double* ag, double* dv) const;
+  std::vector<DenseBlock> dense_;
+  mutable std::vector<double> dense_out_;  // scratch: a block's A_v [u; v] [m/s^2]
   struct BaseSegment {
     int first, floors;  // the building's floor DOFs
     int sway, rot;      // its base DOFs (-1: a fixed base)
@@ -154,7 +173,10 @@ inline void RowForces::linear(const double* __restrict u, const double* __restri
     return;
   }
   if (base_path_) {
-    base_accelerations(u, v, ag, dv);
+    if (!dense_.empty())
+      dense_accelerations(u, v, ag, dv);
+    else
+      base_accelerations(u, v, ag, dv);
     return;
   }
   for (int i = 0; i < n_; ++i) {

@@ -216,7 +216,10 @@ bool RowRun::exact_step() {
   y1_ = y_;
   exact_.step(m, step_a0_.data(), step_a1_.data(), y_, y1_);
   dyn_.set_ground_states(t1, y1_);
-  rhs(t1, y1_, k7_);
+  if (exact_.has_rates())
+    exact_rates(t1);
+  else
+    rhs(t1, y1_, k7_);
   check_finite(t1, y1_);
   if (switches_.any(dyn_)) {
     double theta;
@@ -231,6 +234,24 @@ bool RowRun::exact_step() {
   ++rec_.result().exact_steps;
   record(t_, y_, k1_);
   return true;
+}
+
+// The derivative k7_ at an exact step's end y1_ (time t1 [s]) from the blocks' own
+// z' = A z + B w (ExactSteps::rates; issue 38) instead of rhs: no contact is active
+// (contacts_open), no storey state or energy is integrated, no base DOF is massless or condensed
+// (exact steps, has_rates()), so the rest of dy is the impulses' zero rates and the ground
+// states' ug' = vg, vg' = ag.
+void RowRun::exact_rates(double t1) {
+  const StateLayout& at = dyn_.layout();
+  const double* agc = dyn_.ground_channel_acc(t1);
+  exact_.rates(dyn_, agc, y1_, k7_);
+  for (int i = 0; i < ns_; ++i) k7_(at.impulses + i) = 0.0;
+  for (std::size_t c = 0; c < at.ground_offset.size(); ++c) {
+    const int g = at.ground_offset[c];
+    if (g < 0) continue;
+    k7_(g) = y1_(g + 1);
+    k7_(g + 1) = agc[c];
+  }
 }
 
 // The next step ends at the next record sample, grid point or the end t_end [s].

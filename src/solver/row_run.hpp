@@ -120,6 +120,7 @@ class RowRun {
   void start();
   void set_step_limits();
   bool exact_step();
+  void exact_rates(double t1);
   bool contacts_open() const;
   double next_stop(double t_end);
   void accept(double hs, double en, double t_stop);

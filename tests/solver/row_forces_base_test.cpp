@@ -156,5 +156,48 @@ TEST(RowForcesOnBase, StoreyByStoreyForcesAreTheMatrices) {
   }
 }
 
+// The dense blocks of a linear row on flexible foundations (issue 38; RowForces::set_dense)
+// against the storey-by-storey O(n) path (affine() on the elastic branches: the same K and C),
+// within 1e-13 of the sum of the magnitudes of the terms (expect_same's tolerance); rows with a
+// massless base keep the O(n) path.
+TEST(RowForcesOnBase, DenseBlocksAreTheStoreyByStoreyForces) {
+  std::mt19937 rng(38);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  for (int variant = 0; variant < 5; ++variant) {
+    Case c;
+    c.p_delta = variant == 1 || variant == 3;
+    c.modal = variant == 2;
+    c.fixed_right = variant == 3;
+    c.massless = variant == 4;
+    const AssembledRow a = row_of(c);
+    const int n = a.dofs();
+    ASSERT_TRUE(a.linear) << name_of(c);
+    RowForces forces(a, a.storeys);
+    EXPECT_EQ(forces.dense_path(), !c.massless) << name_of(c);
+    forces.set_lines(std::vector<StoreyState>(n));
+    const Eigen::VectorXd ag = Eigen::VectorXd::Constant(n, 2.5);
+    Eigen::MatrixXd K, C;
+    forces.stiffness(true, K);
+    forces.damping_matrix(C);
+    Eigen::VectorXd dense(n), base(n);
+    for (int trial = 0; trial < 20; ++trial) {
+      Eigen::VectorXd u(n), v(n);
+      for (int i = 0; i < n; ++i) {
+        const bool rot = i == a.rot[0] || i == a.rot[1];
+        u(i) = (rot ? 1e-4 : 0.05) * unit(rng);
+        v(i) = (rot ? 1e-3 : 0.5) * unit(rng);
+      }
+      forces.linear(u.data(), v.data(), ag.data(), dense.data());
+      forces.affine(u.data(), v.data(), ag.data(), base.data());
+      for (int i = 0; i < n; ++i) {
+        double mag = 0.0;
+        for (int j = 0; j < n; ++j) mag += std::fabs(K(i, j) * u(j)) + std::fabs(C(i, j) * v(j));
+        EXPECT_NEAR(dense(i), base(i), 1e-13 * a.inv_mass(i) * mag + 1e-300)
+            << name_of(c) << ", trial " << trial << ", DOF " << i;
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace pound
