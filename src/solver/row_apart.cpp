@@ -66,23 +66,7 @@ class Side {
       v = 0.0;
       return;
     }
-    const double* s = w_.steps.data() + k * stride_;
-    const double t0 = s[0], t1 = s[1], x0 = s[off_], x1 = s[off_ + 1], v0 = s[off_ + 2],
-                 v1 = s[off_ + 3];
-    if (t <= t0) {
-      x = x0, v = v0;
-      return;
-    }
-    if (t >= t1) {
-      x = x1, v = v1;
-      return;
-    }
-    const double h = t1 - t0, th = (t - t0) / h, t2 = th * th;
-    const Hermite c{x0, x1, h * v0, h * v1};
-    x = c.at(th);
-    // d/dt of the cubic: its basis functions' derivatives over h.
-    v = ((6 * t2 - 6 * th) * (x0 - x1) + (3 * t2 - 4 * th + 1) * c.m0 + (3 * t2 - 2 * th) * c.m1) /
-        h;
+    StepWatch::point_at(w_.steps.data() + k * stride_, off_, t, x, v);
   }
 
  private:

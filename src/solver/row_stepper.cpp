@@ -21,23 +21,11 @@ using detail::RowRun;
 constexpr double kMargin = RowRun::fork_margin();  // [m]
 
 // A point's displacement x [m] and velocity v [m/s] at t on the last step of a watch (its cubic
-// Hermite, the interpolant contact events are located on); at its end when the watch is empty.
+// Hermite, the interpolant contact events are located on); the watch holds a step (callers
+// test).
 void last_step_at(const detail::StepWatch& w, int point, double t, double& x, double& v) {
-  const int stride = w.stride(), off = 2 + 4 * point;
-  const double* s = w.steps.data() + w.steps.size() - static_cast<std::size_t>(stride);
-  const double t0 = s[0], t1 = s[1], x0 = s[off], x1 = s[off + 1], v0 = s[off + 2], v1 = s[off + 3];
-  if (t <= t0) {
-    x = x0, v = v0;
-    return;
-  }
-  if (t >= t1) {
-    x = x1, v = v1;
-    return;
-  }
-  const double h = t1 - t0, th = (t - t0) / h, t2 = th * th;
-  const Hermite c{x0, x1, h * v0, h * v1};
-  x = c.at(th);
-  v = ((6 * t2 - 6 * th) * (x0 - x1) + (3 * t2 - 4 * th + 1) * c.m0 + (3 * t2 - 2 * th) * c.m1) / h;
+  const double* s = w.steps.data() + w.steps.size() - static_cast<std::size_t>(w.stride());
+  detail::StepWatch::point_at(s, 2 + 4 * point, t, x, v);
 }
 
 // The row scheduler (docs/speed.md, "A row scheduler"): one RowRun per building, stepped in

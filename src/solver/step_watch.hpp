@@ -10,6 +10,7 @@
 #include <limits>
 #include <vector>
 
+#include "solver/hermite.hpp"
 #include "structure/building_row.hpp"
 
 namespace pound::detail {
@@ -34,6 +35,27 @@ struct StepWatch {
       steps.push_back(p.of(y0.data() + n));
       steps.push_back(p.of(y1.data() + n));
     }
+  }
+  /// A point's displacement x [m] and velocity v [m/s] at t [s] on a step record s (as in
+  /// `steps`; off = 2 + 4 * point): the step's cubic Hermite and its derivative, the end values
+  /// outside [t0, t1].
+  static void point_at(const double* s, int off, double t, double& x, double& v) {
+    const double t0 = s[0], t1 = s[1], x0 = s[off], x1 = s[off + 1], v0 = s[off + 2],
+                 v1 = s[off + 3];
+    if (t <= t0) {
+      x = x0, v = v0;
+      return;
+    }
+    if (t >= t1) {
+      x = x1, v = v1;
+      return;
+    }
+    const double h = t1 - t0, th = (t - t0) / h, t2 = th * th;
+    const Hermite c{x0, x1, h * v0, h * v1};
+    x = c.at(th);
+    // d/dt of the cubic: its basis functions' derivatives over h.
+    v = ((6 * t2 - 6 * th) * (x0 - x1) + (3 * t2 - 4 * th + 1) * c.m0 + (3 * t2 - 2 * th) * c.m1) /
+        h;
   }
   /// A storey's shear v [N] at a step's end (k: its index in shear_dofs).
   void shear(int k, double v) {
