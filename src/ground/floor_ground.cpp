@@ -1,5 +1,6 @@
 #include "ground/floor_ground.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -26,6 +27,12 @@ FloorGround::FloorGround(const AssembledRow& a, const RowGround* ground) : groun
       dof_channel_[i] = ground_->channel(a.building_of[i]);
   for (const auto& s : a.sites)
     site_channels_.emplace_back(dof_channel_[s.dof_left], dof_channel_[s.dof_right]);
+  for (const auto& [l, r] : site_channels_)
+    if (l != r)
+      for (const int c : {l, r})
+        if (std::find(used_.begin(), used_.end(), c) == used_.end()) used_.push_back(c);
+  vg_.assign(channels_ + 1, 0.0);
+  ug_.assign(channels_ + 1, 0.0);
 }
 
 void FloorGround::relative(int s, double t, double& du, double& dv) const {
@@ -36,6 +43,15 @@ void FloorGround::relative(int s, double t, double& du, double& dv) const {
   ground_->trace(site_channels_[s].second).kinematics(t, vr, ur);
   du = ul - ur;
   dv = vl - vr;
+}
+
+void FloorGround::relative_all(double t, double* du, double* dv) {
+  for (const int c : used_) ground_->trace(c).kinematics(t, vg_[c], ug_[c]);
+  for (std::size_t s = 0; s < site_channels_.size(); ++s) {
+    const auto& [l, r] = site_channels_[s];
+    du[s] = l == r ? 0.0 : ug_[l] - ug_[r];
+    dv[s] = l == r ? 0.0 : vg_[l] - vg_[r];
+  }
 }
 
 }  // namespace pound

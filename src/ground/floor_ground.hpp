@@ -31,6 +31,9 @@ class FloorGround {
     for (int c = 0; c < channels_; ++c) agc_[c] = ground_->trace(c).acc(t);
     return agc_.data();
   }
+  /// The channels' accelerations of the last channel_acc() or acc() call [m/s^2] (the same
+  /// numbers without evaluating the traces again, for a caller at the same t).
+  const double* last_channel_acc() const { return agc_.data(); }
   /// The ground acceleration under every floor DOF at t [m/s^2].
   const double* acc(double t) {
     channel_acc(t);
@@ -44,6 +47,10 @@ class FloorGround {
   /// The site's relative ground displacement ug_L - ug_R [m] and velocity vg_L - vg_R [m/s] at
   /// t [s] (0 where it does not differ).
   void relative(int s, double t, double& du, double& dv) const;
+  /// relative() of every site at t into du[s], dv[s] (as many as sites), each channel that a
+  /// differing site meets evaluated once (the same numbers: a row's sites mostly share a pair
+  /// of channels).
+  void relative_all(double t, double* du, double* dv);
 
  private:
   const RowGround* ground_ = nullptr;
@@ -51,6 +58,8 @@ class FloorGround {
   std::vector<int> dof_channel_;
   std::vector<std::pair<int, int>> site_channels_;
   std::vector<double> agc_, ag_;
+  std::vector<int> used_;        // the channels that differing sites meet
+  std::vector<double> vg_, ug_;  // relative_all's channel velocities [m/s], displacements [m]
 };
 
 }  // namespace pound

@@ -102,7 +102,9 @@ std::vector<double> smoothed(const std::vector<double>& p) {
   for (std::size_t k = 0; k < p.size(); ++k) {
     const std::size_t h = std::max<std::size_t>(1, k / 10);
     const std::size_t lo = k > h ? k - h : 0, hi = std::min(p.size() - 1, k + h);
-    for (std::size_t b = lo; b <= hi; ++b) out[k] += p[b];
+    double sum = 0.0;  // summed in the same order as ever (the same bits), in a register
+    for (std::size_t b = lo; b <= hi; ++b) sum += p[b];
+    out[k] = sum;
   }
   return out;
 }
@@ -326,7 +328,7 @@ void StationGenerator::pin_low_frequencies(const SimqkeStart& start, const std::
   }
   if (!moved) return;
   pin_->apply(a.motion.accel, target);
-  std::vector<double> psa;
+  std::vector<double>& psa = a.psa;
   gen_.spectrum(a.motion, psa);
   ++a.spectra;
   double max_dev = 0.0, sum_sq = 0.0;
@@ -402,7 +404,12 @@ std::vector<GeneratedMotion> StationGenerator::run(const SimqkeStart& start, std
     std::vector<double> misfit(start.target.size(), 0.0), psa;
     gen_.transform(out.front().motion.accel, x[0]);
     for (std::size_t j = 1; j < s; ++j) {
-      gen_.spectrum(out.back().motion, psa);
+      // The last station's spectrum as its score was taken on (its own, computed again where a
+      // caller built the motion otherwise).
+      if (out.back().psa.size() == start.target.size())
+        psa = out.back().psa;
+      else
+        gen_.spectrum(out.back().motion, psa);
       for (std::size_t i = 0; i < psa.size(); ++i) misfit[i] += std::log(start.target[i] / psa[i]);
       out.push_back(station(start, seed, index, j, x, misfit));
     }

@@ -358,6 +358,7 @@ SimqkeAttempt SimqkeGenerator::iterate(const SimqkeStart& s, GroundMotion m,
       best.motion = m;
       best.iterations = it;
       best.match = compare_spectra(psa, target);
+      best.psa = psa;
     }
     if (score < stall_score * (1.0 - s.stall_gain)) {
       stall_score = score;
@@ -401,7 +402,18 @@ void SimqkeGenerator::bin_power(const std::vector<double>& ratio, double power,
                                 std::vector<double>& out) const {
   const Impl& d = *impl_;
   out.assign(d.nbins, 1.0);
-  for (std::size_t k = 1; k < d.nbins; ++k) out[k] = std::pow(d.bin_ratio(ratio, k), power);
+  // As correct(): a bin of weight 0 takes ratio_j itself (ratio_j + 0 (ratio_j+1 - ratio_j) is
+  // ratio_j exactly), whose power is computed once per matching period.
+  std::vector<double> held(ratio.size(), -1.0);  // -1: not computed (a power is >= 0 or NaN)
+  for (std::size_t k = 1; k < d.nbins; ++k) {
+    if (d.bin_w[k] != 0.0) {
+      out[k] = std::pow(d.bin_ratio(ratio, k), power);
+      continue;
+    }
+    double& h = held[d.bin_j[k]];
+    if (h < 0.0) h = std::pow(ratio[d.bin_j[k]], power);
+    out[k] = h;
+  }
 }
 
 const SimqkeSettings& SimqkeGenerator::settings() const {
@@ -416,6 +428,7 @@ GeneratedMotion SimqkeGenerator::finish(SimqkeAttempt best, const SimqkeStart& s
   g.iterations = best.iterations;
   g.attempt = attempt;
   g.match = best.match;
+  g.psa = std::move(best.psa);
   g.target_psa = s.target;
   g.spectra = spectra;
   g.motion.name = "simqke seed " + std::to_string(seed) + " index " + std::to_string(index);

@@ -96,10 +96,13 @@ struct GeneratedMotion {
   /// The spectrum the motion was matched to, at the matching periods [m/s^2]: the design
   /// spectrum, or its random target (generate with ln factors).
   std::vector<double> target_psa;
-  int iterations = 0;               ///< correction iterations of the returned motion
-  int attempt = 0;                  ///< phase set of the returned motion (0 = first)
-  int spectra = 0;                  ///< spectrum evaluations, every phase set counted
-  SpectrumMatch match;              ///< at the matching periods
+  int iterations = 0;   ///< correction iterations of the returned motion
+  int attempt = 0;      ///< phase set of the returned motion (0 = first)
+  int spectra = 0;      ///< spectrum evaluations, every phase set counted
+  SpectrumMatch match;  ///< at the matching periods
+  /// The motion's pseudo-acceleration spectrum at the matching periods [m/s^2] (the one its
+  /// score was taken on).
+  std::vector<double> psa;
   double final_velocity = 0.0;      ///< [m/s]
   double final_displacement = 0.0;  ///< [m]
 };
@@ -119,11 +122,12 @@ struct SimqkeStart {
 
 /// The best iteration of one phase set (SimqkeGenerator::match).
 struct SimqkeAttempt {
-  GroundMotion motion;   ///< baseline-corrected acceleration [m/s^2]
-  double score = 1e300;  ///< max |q - 1| or RMS ln q of the motion [-]
-  int iterations = 0;    ///< correction iterations of the motion
-  int spectra = 0;       ///< spectrum evaluations of the phase set
-  SpectrumMatch match;   ///< at the matching periods
+  GroundMotion motion;      ///< baseline-corrected acceleration [m/s^2]
+  double score = 1e300;     ///< max |q - 1| or RMS ln q of the motion [-]
+  int iterations = 0;       ///< correction iterations of the motion
+  int spectra = 0;          ///< spectrum evaluations of the phase set
+  SpectrumMatch match;      ///< at the matching periods
+  std::vector<double> psa;  ///< the motion's spectrum at the matching periods [m/s^2]
 };
 
 /// A generator for one target, duration and settings. FFTW plans and buffers are made once

@@ -50,8 +50,8 @@ class SearsRowRun {
   // Each ground channel's acceleration at t [m/s^2] (FloorGround::channel_acc).
   const double* ag_at(double t) { return ground.channel_acc(t); }
   // Each site's relative ground displacement and velocity at t into d, w [m], [m/s].
-  void ground_at(double t, std::vector<double>& d, std::vector<double>& w) const {
-    for (int s = 0; s < ns; ++s) ground.relative(s, t, d[s], w[s]);
+  void ground_at(double t, std::vector<double>& d, std::vector<double>& w) {
+    ground.relative_all(t, d.data(), w.data());
   }
   // The slabs of site s (index into layout.floors), -1 for a struck column point (issue 36).
   int left_slab(int s) const { return layout.site_left_floor[s]; }

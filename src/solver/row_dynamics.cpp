@@ -140,9 +140,10 @@ __attribute__((always_inline)) inline void RowDynamics::rhs_of(double t,
   if (any_held_)
     for (int i = 0; i < n_; ++i)
       if (held_[i]) du[i] = dv[i] = 0.0;
-  if (track_) energy_rates(y, v, t, du + layout_.energies);
+  if (track_) energy_rates(y, v, du + layout_.energies);
   if (layout_.size == layout_.ground) return;
-  const double* agc = ground_.channel_acc(t);
+  // The channels' accelerations at t, evaluated by ground_acc(t) above.
+  const double* agc = ground_.last_channel_acc();
   for (int c = 0; c < ground_.channels(); ++c) {  // ug' = vg, vg' = ag
     const int g = layout_.ground_offset[c];
     if (g < 0) continue;
@@ -443,7 +444,7 @@ void RowDynamics::damping_matrix(Eigen::MatrixXd& C) const {
     C = row_.C;
 }
 
-void RowDynamics::energy_rates(const Eigen::VectorXd& y, const double* v, double t, double* dE) {
+void RowDynamics::energy_rates(const Eigen::VectorXd& y, const double* v, double* dE) {
   double* cv = scratch_.data();
   forces_.damping(v, cv);
   std::fill(mv_.begin(), mv_.end(), 0.0);
@@ -457,7 +458,7 @@ void RowDynamics::energy_rates(const Eigen::VectorXd& y, const double* v, double
     const auto& g = site_ground_[i];
     if (g.first >= 0) ground_work += force_(i) * (y(g.first + 1) - y(g.second + 1));
   }
-  const double* agc = ground_.channel_acc(t);
+  const double* agc = ground_.last_channel_acc();
   double input = -agc[0] * mv_[0];
   for (int c = 1; c <= ground_.channels(); ++c) input -= agc[c] * mv_[c];
   dE[0] = input + ground_work;

@@ -219,7 +219,8 @@ class RowDynamics {
   // E' = [input, damping v^T C v, contact sum_s F_s delta'_s] [W], the input being the work
   // of the effective earthquake forces -M ag on the floors, sum_i -ag_i m_i v_i, plus that of
   // the ground's relative motion on the contacts, sum_s F_s (vg_L - vg_R) (docs/ground.md).
-  void energy_rates(const Eigen::VectorXd& y, const double* v, double t, double* dE);
+  // At the t of the last ground_acc(t) (rhs_of's: the channels' accelerations are kept).
+  void energy_rates(const Eigen::VectorXd& y, const double* v, double* dE);
   void factor_massless();
   const double* massless_velocities(const Eigen::VectorXd& y);
   void massless_rates(double* dv);

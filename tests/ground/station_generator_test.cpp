@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <string>
 
 #include "ground/achieved_coherency.hpp"
 #include "ground/wave_passage.hpp"
@@ -93,6 +94,37 @@ TEST(GroundStations, SimqkeLowerLevelAsTheGeneratorUsesIt) {
   ASSERT_EQ(back.accel.size(), a.motion.accel.size());
   for (std::size_t i = 0; i < back.accel.size(); ++i)
     EXPECT_NEAR(back.accel[i], a.motion.accel[i], 1e-3 * a.motion.pga());
+}
+
+// Every station carries the spectrum its score was taken on (GeneratedMotion::psa), which the
+// next station's widened band reads instead of evaluating it again (issue 38): bit for bit the
+// spectrum of the returned motion, with the design spectrum and a random target, for stations
+// left as matched (Harichandran-Vanmarcke at 25 m) and pinned below f_lo (Abrahamson's soil
+// model at 12 m, step 5). The pinned set also differs from the unpinned one.
+TEST(GroundStations, EveryStationCarriesTheSpectrumOfItsMotion) {
+  SimqkeGenerator one(target(), 8.0, SimqkeSettings{});
+  VariabilitySettings vs;
+  vs.mode = Variability::spectral;
+  const TargetVariability var(vs, one.match_periods());
+  const CounterRng rng(5, stream_id(kTargetStream));
+  for (const char* model : {"harichandran-vanmarcke-1986", "abrahamson-2007-soil"}) {
+    StationSettings st;
+    st.positions = {0.0, std::string(model) == "abrahamson-2007-soil" ? 12.0 : 25.0, 60.0};
+    st.coherency = make_coherency(model, {}, "test");
+    StationGenerator gen(target(), 8.0, SimqkeSettings{}, st);
+    for (std::uint64_t i = 0; i < 2; ++i)
+      for (const bool random : {false, true}) {
+        const std::vector<GeneratedMotion> set =
+            random ? gen.generate(5, i, var.ln_factor(var.epsilon(rng, i))) : gen.generate(5, i);
+        ASSERT_EQ(set.size(), 3u);
+        for (std::size_t j = 0; j < set.size(); ++j) {
+          std::vector<double> psa;
+          one.spectrum(set[j].motion, psa);
+          EXPECT_EQ(set[j].psa, psa)
+              << model << " motion " << i << " station " << j << (random ? " random target" : "");
+        }
+      }
+  }
 }
 
 TEST(GroundStations, PositionsMustIncreaseStrictly) {

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 #include "motion/motion_processing.hpp"
 #include "motion/response_spectrum.hpp"
@@ -27,6 +28,45 @@ TEST(MotionSimqke, PhiloxKnownAnswer) {
   double sum = 0.0;
   for (std::uint32_t i = 0; i < 20000; ++i) sum += philox_uniform(42, 3, i);
   EXPECT_NEAR(sum / 20000.0, 0.5, 4.0 * std::sqrt(1.0 / 12.0 / 20000.0));
+}
+
+// bin_power: at every FFT bin the ratio interpolated in ln T between the matching periods
+// around the bin (the end ratio beyond them) to the given power. Checked against itself at power
+// 1 (pow(x, 1) is x: the interpolated ratio), each bin's value then lying between the ratios of
+// two neighbouring matching periods, and the ratios (growing with the period) falling with the
+// bin's frequency; and the held powers of the bins outside the matching periods (issue 38) the
+// same bits as pow of the end ratios.
+TEST(MotionSimqke, BinPowerIsTheInterpolatedRatioToThePower) {
+  const Ec8Spectrum target(Ec8Type::type1, Ec8Ground::C, 0.35 * kGravity);
+  SimqkeGenerator gen(target, 10.0, SimqkeSettings{});
+  const std::size_t np = gen.match_periods().size();
+  std::vector<double> ratio(np);
+  for (std::size_t j = 0; j < np; ++j) ratio[j] = std::exp(0.05 * double(j) + 0.01 * std::sin(j));
+  std::vector<double> one, p;
+  gen.bin_power(ratio, 1.0, one);
+  gen.bin_power(ratio, 1.6, p);
+  ASSERT_EQ(one.size(), gen.fft_bins());
+  EXPECT_EQ(one[0], 1.0);
+  EXPECT_EQ(p[0], 1.0);
+  const double f_hi = 1.0 / gen.match_periods().front(), f_lo = 1.0 / gen.match_periods().back();
+  int outside = 0;
+  for (std::size_t k = 1; k < one.size(); ++k) {
+    EXPECT_EQ(p[k], std::pow(one[k], 1.6)) << "bin " << k;
+    EXPECT_GE(one[k], ratio.front() * (1 - 1e-15));
+    EXPECT_LE(one[k], ratio.back() * (1 + 1e-15));
+    if (k > 1) {
+      EXPECT_LE(one[k], one[k - 1]) << "bin " << k;
+    }
+    const double f = gen.bin_frequency(k);
+    if (f >= f_hi) {
+      EXPECT_EQ(p[k], std::pow(ratio.front(), 1.6)) << "bin " << k;
+      ++outside;
+    }
+    if (f <= f_lo) {
+      EXPECT_EQ(p[k], std::pow(ratio.back(), 1.6)) << "bin " << k;
+    }
+  }
+  EXPECT_GT(outside, 100);
 }
 
 TEST(MotionSimqke, DeterministicForSameInputs) {
