@@ -19,8 +19,11 @@ double magnitude(const SitePoint& pt, const Eigen::VectorXd& x) {
 }
 }  // namespace
 
-void SearsRowRun::update_guards() {
-  for (int s = 0; s < ns; ++s) guarded[s] = site_asleep(s);
+__attribute__((always_inline)) inline void SearsRowRun::update_guards() {  // slab_only once
+  if (slab_only)
+    for (int s = 0; s < ns; ++s) guarded[s] = site_asleep(s, true);
+  else
+    for (int s = 0; s < ns; ++s) guarded[s] = site_asleep(s, false);
 }
 
 void SearsRowRun::fall_asleep() {  // at a point of the coarse grid, before fine steps
@@ -41,40 +44,53 @@ void SearsRowRun::finish_sleep() {  // at the next point of the coarse grid
 // End-of-step overlaps without contact forces, delta_pred; for a guarded site an upper bound.
 void SearsRowRun::predict_overlaps() {
   slabs.predict(begin, op);
-  for (int s = 0; s < ns && slab_only; ++s) {  // as below, by the slabs' floors
-    const ContactSite& site = assembled.sites[s];
-    delta_pred(s) = u_hat(site.dof_left) - u_hat(site.dof_right) +
-                    slabs.predicted_right_upper(left_slab(s)) -
-                    slabs.predicted_left_lower(right_slab(s)) - gap(s) + gd_next[s];
-  }
-  for (int s = 0; s < ns && !slab_only; ++s) {
+  if (slab_only)
+    predict_overlaps_of<true>();
+  else
+    predict_overlaps_of<false>();
+}
+
+template <bool Slabs>
+void SearsRowRun::predict_overlaps_of() {
+  for (int s = 0; s < ns; ++s) {
     const int l = left_slab(s), r = right_slab(s);  // -1: a struck column point, no bar
-    const double wl = l >= 0 ? slabs.predicted_right_upper(l) : 0.0;
-    const double wr = r >= 0 ? slabs.predicted_left_lower(r) : 0.0;
-    delta_pred(s) = left_point(s).of(u_hat.data()) - right_point(s).of(u_hat.data()) + wl - wr -
-                    gap(s) + gd_next[s];
+    const ContactSite& site = assembled.sites[s];   // Slabs: the sides are the slabs' floors
+    const double wl = slab(Slabs, l) ? slabs.predicted_right_upper(l) : 0.0;
+    const double wr = slab(Slabs, r) ? slabs.predicted_left_lower(r) : 0.0;
+    const double ul = Slabs ? u_hat(site.dof_left) : left_point(s).of(u_hat.data());
+    const double ur = Slabs ? u_hat(site.dof_right) : right_point(s).of(u_hat.data());
+    delta_pred(s) = ul - ur + wl - wr - gap(s) + gd_next[s];
   }
+}
+
+// guards_hold's test (Slabs = slab_only: a slab's |1 x u| is |u|, so the same scale).
+template <bool Slabs>
+bool SearsRowRun::guards_hold_of() {
+  bool hold = true;
+  for (int s = 0; s < ns; ++s) {
+    if (!guarded[s]) continue;
+    const int kl = left_slab(s), kr = right_slab(s);  // -1: a struck column point, no bar
+    const ContactSite& site = assembled.sites[s];
+    const double bound_end = delta_pred(s) - ops[op].S.row(s).dot(F_next);
+    double scale = Slabs ? std::fabs(u_hat(site.dof_left)) + std::fabs(u_hat(site.dof_right))
+                         : magnitude(left_point(s), u_hat) + magnitude(right_point(s), u_hat);
+    scale += std::fabs(gap(s));
+    if (slab(Slabs, kl)) scale += std::fabs(slabs.asleep_faces(kl).right);
+    if (slab(Slabs, kr)) scale += std::fabs(slabs.asleep_faces(kr).left);
+    if (slab(Slabs, kl)) scale += slabs.asleep_bound(kl);
+    if (slab(Slabs, kr)) scale += slabs.asleep_bound(kr);
+    if (bound_end < -kGuardRoundOff * scale) continue;
+    hold = false;
+    if (slab(Slabs, kl) && slabs.asleep(kl)) slabs.wake(kl);
+    if (slab(Slabs, kr) && slabs.asleep(kr)) slabs.wake(kr);
+  }
+  return hold;
 }
 
 // True when every guarded site's end-of-step overlap bound is below zero (with a margin for
 // round-off); otherwise wakes the sleeping slabs of the failing sites and returns false.
 bool SearsRowRun::guards_hold() {
-  bool hold = true;
-  for (int s = 0; s < ns; ++s) {
-    if (!guarded[s]) continue;
-    const int kl = left_slab(s), kr = right_slab(s);  // -1: a struck column point, no bar
-    const double bound_end = delta_pred(s) - ops[op].S.row(s).dot(F_next);
-    double scale =
-        magnitude(left_point(s), u_hat) + magnitude(right_point(s), u_hat) + std::fabs(gap(s));
-    if (kl >= 0) scale += std::fabs(slabs.asleep_faces(kl).right);
-    if (kr >= 0) scale += std::fabs(slabs.asleep_faces(kr).left);
-    if (kl >= 0) scale += slabs.asleep_bound(kl);
-    if (kr >= 0) scale += slabs.asleep_bound(kr);
-    if (bound_end < -kGuardRoundOff * scale) continue;
-    hold = false;
-    if (kl >= 0 && slabs.asleep(kl)) slabs.wake(kl);
-    if (kr >= 0 && slabs.asleep(kr)) slabs.wake(kr);
-  }
+  const bool hold = slab_only ? guards_hold_of<true>() : guards_hold_of<false>();
   if (!hold) {
     update_guards();
     for (int s = 0; s < ns; ++s)
@@ -165,6 +181,11 @@ void SearsRowRun::step_slabs(long i, long m) {
 double SearsRowRun::step_error(long m) {
   const double tol = model.contact_step_tolerance;
   if (longest == 1 || !(tol > 0.0)) return 0.0;
+  return slab_only ? step_error_of<true>(m, tol) : step_error_of<false>(m, tol);
+}
+
+template <bool Slabs>
+double SearsRowRun::step_error_of(long m, double tol) {
   const double h = m * dt;
   double w = 0.0;
   for (int s = 0; s < ns; ++s) {
@@ -174,7 +195,7 @@ double SearsRowRun::step_error(long m) {
     // could start and end within a longer step unseen, as within a coarse step without its
     // bound; with one slab awake the guard is checked at the step's end only), or no previous
     // step: the fine step.
-    if (site_all_asleep(s)) continue;
+    if (site_all_asleep(s, Slabs)) continue;
     const double f0 = F(s), f1 = F_next(s), fm = F_prev(s);
     if (f0 == 0.0 || f1 == 0.0 || !(h_prev > 0.0)) return kNoLongStep;
     // F[t_i-1, t_i, t_i+1] = F''/2; a quadratic departs from its chord over h by F'' h^2 / 8.

@@ -52,6 +52,7 @@ SearsRowRun::SearsRowRun(const SearsRowProblem& p_in, const SearsRowModel& model
       });
   any_cap = std::any_of(layout.laws.begin(), layout.laws.end(),
                         [](const SlabContactLaw& l) { return !std::isinf(l.force_cap_N); });
+  plain = slab_only && !any_cap;
   build_operators();
   initial_state();
   if (stepping.lumped > 0) {
@@ -138,6 +139,8 @@ void SearsRowRun::initial_state() {
   ground_at(0.0, gd, gv);
   crush.assign(ns, 0.0);
   crush_phase.assign(ns, 0.0);
+  gap_.resize(ns);
+  for (int s = 0; s < ns; ++s) gap_[s] = a.sites[s].gap + crush[s];
   for (int s = 0; s < ns; ++s)
     delta(s) = left_point(s).of(u.data()) - right_point(s).of(u.data()) - gap(s) + gd[s];
   out.dt_s = dt;
@@ -179,32 +182,6 @@ void SearsRowRun::loads(const Eigen::VectorXd& f, std::vector<EndLoads>& to) con
   }
 }
 
-// The faces: a slab's floor plus its internal displacement at the face (Th. 8.3); a struck
-// column point (no bar, issue 36) moves with its floors only.
-double SearsRowRun::overlap_now(int s) const {
-  const int l = left_slab(s), r = right_slab(s);
-  if (slab_only) {
-    const ContactSite& site = assembled.sites[s];
-    return u(site.dof_left) - u(site.dof_right) + slabs.disp(l).right - slabs.disp(r).left -
-           gap(s) + gd[s];
-  }
-  return left_point(s).of(u.data()) - right_point(s).of(u.data()) +
-         (l >= 0 ? slabs.disp(l).right : 0.0) - (r >= 0 ? slabs.disp(r).left : 0.0) - gap(s) +
-         gd[s];
-}
-
-double SearsRowRun::approach_bound(int s) const {
-  const int l = left_slab(s), r = right_slab(s);
-  if (slab_only) {
-    const ContactSite& site = assembled.sites[s];
-    return u(site.dof_left) - u(site.dof_right) + slabs.right_face_upper(l) -
-           slabs.left_face_lower(r) + gd[s];
-  }
-  return left_point(s).of(u.data()) - right_point(s).of(u.data()) +
-         (l >= 0 ? slabs.right_face_upper(l) : 0.0) - (r >= 0 ? slabs.left_face_lower(r) : 0.0) +
-         gd[s];
-}
-
 void SearsRowRun::wake_site(int s) {
   const int l = left_slab(s), r = right_slab(s);
   if (l >= 0 && slabs.dormant(l)) slabs.wake_dormant(l);
@@ -237,11 +214,16 @@ void SearsRowRun::coarse_step(double t_next) {  // F = 0 at both ends
 bool SearsRowRun::contact_free(double h) {
   if (!p.contacts || ns == 0) return true;
   if (!bound.valid()) return false;  // a massless base: located stretches (sears_located.cpp)
+  return slab_only ? contact_free_of<true>(h) : contact_free_of<false>(h);
+}
+
+template <bool Slabs>
+bool SearsRowRun::contact_free_of(double h) {
   // A test that fails at a site with a dormant slab is repeated with the site's exact overlap.
   auto holds = [&](auto&& test) {
     for (int s = 0; s < ns; ++s) {
       if (test(s)) continue;
-      if (!site_dormant(s)) return false;
+      if (!site_dormant(s, Slabs)) return false;
       wake_site(s);
       if (!test(s)) return false;
     }
@@ -256,8 +238,8 @@ bool SearsRowRun::contact_free(double h) {
   // below (waking a dormant slab changes the overlap, not the buildings' state).
   if (!holds([&](int s) {
         const ContactSite& site = assembled.sites[s];  // a slab site: its floors' DOFs
-        site_approach[s] = slab_only ? bound.approach(site.dof_left, site.dof_right, v, gv[s], h)
-                                     : bound.approach(left_point(s), right_point(s), v, gv[s], h);
+        site_approach[s] = Slabs ? bound.approach(site.dof_left, site.dof_right, v, gv[s], h)
+                                 : bound.approach(left_point(s), right_point(s), v, gv[s], h);
         return kCoarseBoundSafety * site_approach[s] < -delta(s);
       }))
     return false;
@@ -273,15 +255,17 @@ bool SearsRowRun::contact_free(double h) {
   }
   return holds([&](int s) {
     const int l = left_slab(s), r = right_slab(s);
-    const double b = site_approach[s] + (l >= 0 ? mb[l] : 0.0) + (r >= 0 ? mb[r] : 0.0);
+    const double b =
+        site_approach[s] + (slab(Slabs, l) ? mb[l] : 0.0) + (slab(Slabs, r) ? mb[r] : 0.0);
     return kCoarseBoundSafety * b < -delta(s);
   });
 }
 
+template <bool Slabs>
 __attribute__((always_inline)) inline void SearsRowRun::record_site(int s, bool coarse, double h,
                                                                     double t_next) {
-  double d = overlap_bound(s);  // exact unless a slab is dormant
-  if (site_dormant(s) && !(d < 0.0)) {
+  double d = overlap_bound(s, Slabs);  // exact unless a slab is dormant
+  if (site_dormant(s, Slabs) && !(d < 0.0)) {
     wake_site(s);
     d = delta(s);
   }
@@ -290,11 +274,10 @@ __attribute__((always_inline)) inline void SearsRowRun::record_site(int s, bool 
     // Without contacts the modes stay at rest (coarse_step, fine_step with zero loads) and
     // the faces move with the floors: the approach is that of the floors, its peak between
     // the step's ends from their cubic Hermite interpolant (solver/hermite.hpp).
-    const double ap = approach_bound(s);
+    const double ap = approach_bound(s, Slabs);
     const ContactSite& site = assembled.sites[s];
-    const double rate = slab_only
-                            ? v(site.dof_left) - v(site.dof_right) + gv[s]
-                            : left_point(s).of(v.data()) - right_point(s).of(v.data()) + gv[s];
+    const double rate = Slabs ? v(site.dof_left) - v(site.dof_right) + gv[s]
+                              : left_point(s).of(v.data()) - right_point(s).of(v.data()) + gv[s];
     rec.approach_over_step(s, Hermite{free_approach[s], ap, h * free_approach_rate[s], h * rate});
     free_approach[s] = ap;
     free_approach_rate[s] = rate;
@@ -327,9 +310,14 @@ __attribute__((always_inline)) inline void SearsRowRun::record_site(int s, bool 
 
 // Contact sites: events, peaks, impulse (force linear over the step).
 void SearsRowRun::record_sites(bool coarse, double h, double t_next) {
-  for (int s = 0; s < ns; ++s) {
-    if (guarded[s]) continue;  // no force and no contact (shown by guards_hold)
-    record_site(s, coarse, h, t_next);
+  // Guarded sites: no force and no contact (shown by guards_hold). The slab-only path is
+  // chosen once per run (slab_only).
+  if (slab_only) {
+    for (int s = 0; s < ns; ++s)
+      if (!guarded[s]) record_site<true>(s, coarse, h, t_next);
+  } else {
+    for (int s = 0; s < ns; ++s)
+      if (!guarded[s]) record_site<false>(s, coarse, h, t_next);
   }
   if (!coarse && ns > 0 && (F.cwiseAbs().maxCoeff() > 0.0 || F_next.cwiseAbs().maxCoeff() > 0.0))
     ++out.counts.fine_in_contact;
@@ -345,6 +333,7 @@ void SearsRowRun::crush_faces() {
     const double dc = layout.laws[s].crush_increment(delta(s), F_next(s));
     if (!(dc > 0.0)) continue;
     crush[s] += dc;
+    gap_[s] = assembled.sites[s].gap + crush[s];
     delta(s) -= dc;
     e_crushing += layout.laws[s].force_cap_N * dc;
   }
@@ -483,12 +472,14 @@ SearsRowResult SearsRowRun::run() {
     ground_at(t_next, gd, gv);
     const double* ag = ground.acc(t_next);
     record_sites(coarse, h, t_next);
-    if (!coarse && any_cap) crush_faces();
-    F = F_next;
-    for (int s = 0; s < ns && !slab_only; ++s) {  // the struck columns' shear (issue 36)
-      const ContactSite& site = assembled.sites[s];
-      if (site.struck_dof >= 0)
-        rec.column_shear(s, column_shear_demand(site, storeys.shear(u, site.struck_dof), F(s)));
+    F = F_next;    // (crush_faces reads F_next)
+    if (!plain) {  // crushing faces, the struck columns' shear (issue 36)
+      if (!coarse && any_cap) crush_faces();
+      for (int s = 0; s < ns && !slab_only; ++s) {
+        const ContactSite& site = assembled.sites[s];
+        if (site.struck_dof >= 0)
+          rec.column_shear(s, column_shear_demand(site, storeys.shear(u, site.struck_dof), F(s)));
+      }
     }
     record_peaks(coarse, ag, t_next, h);
     if (failure_check) check_failures(t_next);

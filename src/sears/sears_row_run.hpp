@@ -59,26 +59,35 @@ class SearsRowRun {
   // Site s's sides as points of the floors (ContactSite::left, ::right; a slab: its floor).
   const SitePoint& left_point(int s) const { return assembled.sites[s].left; }
   const SitePoint& right_point(int s) const { return assembled.sites[s].right; }
+  // The per-site accessors below take `slabs_only`: slab_only, or a constant true/false where
+  // a loop was chosen once per run from it (the run's slab-only paths: with every side a slab
+  // (slab()), each side is its floor's DOF, 1 x u being u, so the same bits).
+  static bool slab(bool slabs_only, int k) { return slabs_only || k >= 0; }  // k a slab index
   // Overlap at the start of the step at site s (its slabs awake).
-  double overlap_now(int s) const;
+  double overlap_now(int s, bool slabs_only) const;
+  double overlap_now(int s) const { return overlap_now(s, slab_only); }
   // Approach u_L - u_R of the faces of site s (floors plus internal vibration); with a dormant
   // slab, its upper bound.
-  double approach_bound(int s) const;
-  double overlap_bound(int s) const { return approach_bound(s) - gap(s); }
+  double approach_bound(int s, bool slabs_only) const;
+  double approach_bound(int s) const { return approach_bound(s, slab_only); }
+  double overlap_bound(int s, bool slabs_only) const {
+    return approach_bound(s, slabs_only) - gap(s);
+  }
   // Site s's gap [m], widened by its faces' permanent indentation (crushing, issue 36).
-  double gap(int s) const { return assembled.sites[s].gap + crush[s]; }
-  bool site_dormant(int s) const {
+  double gap(int s) const { return gap_[s]; }
+  bool site_dormant(int s, bool slabs_only) const {
     const int l = left_slab(s), r = right_slab(s);
-    return (l >= 0 && slabs.dormant(l)) || (r >= 0 && slabs.dormant(r));
+    return (slab(slabs_only, l) && slabs.dormant(l)) || (slab(slabs_only, r) && slabs.dormant(r));
   }
+  bool site_dormant(int s) const { return site_dormant(s, slab_only); }
   // Whether a slab of site s sleeps (a guarded site), and whether every slab of it does.
-  bool site_asleep(int s) const {
+  bool site_asleep(int s, bool slabs_only) const {
     const int l = left_slab(s), r = right_slab(s);
-    return (l >= 0 && slabs.asleep(l)) || (r >= 0 && slabs.asleep(r));
+    return (slab(slabs_only, l) && slabs.asleep(l)) || (slab(slabs_only, r) && slabs.asleep(r));
   }
-  bool site_all_asleep(int s) const {
+  bool site_all_asleep(int s, bool slabs_only) const {
     const int l = left_slab(s), r = right_slab(s);
-    return (l < 0 || slabs.asleep(l)) && (r < 0 || slabs.asleep(r));
+    return (!slab(slabs_only, l) || slabs.asleep(l)) && (!slab(slabs_only, r) || slabs.asleep(r));
   }
   void wake_site(int s);  // the slabs of site s awake, delta(s) exact
   // Sleeping slabs (runs of fine steps).
@@ -87,17 +96,25 @@ class SearsRowRun {
   void finish_sleep();
   void predict_overlaps();
   bool guards_hold();
+  template <bool Slabs>
+  void predict_overlaps_of();  // Slabs = slab_only, chosen once per run
+  template <bool Slabs>
+  bool guards_hold_of();
   // Steps through contacts (sears_contact_step.cpp).
   long fine_step(long i);
   long trial_multiple(long i, const Eigen::VectorXd& f) const;
   long room(long i, const Eigen::VectorXd& f) const;
   double step_error(long m);
+  template <bool Slabs>
+  double step_error_of(long m, double tol);  // Slabs = slab_only
   void storey_pass(double h, const Eigen::MatrixXd& R, bool contacts);
   void step_slabs(long i, long m);
   // Coarse steps (no contact), and stretches on the lumped solver's steps (issue 30).
   void coarse_step(double t_next);
   bool contact_free(double h);
-  void start_stretch(long i);  // the lumped solver resumes from the floors at point i
+  template <bool Slabs>
+  bool contact_free_of(double h);  // contact_free's tests, Slabs = slab_only
+  void start_stretch(long i);      // the lumped solver resumes from the floors at point i
   long lumped_stretch(long i);
   void leave_stretch();
   // Stretches on the located approach where the translation bound is not proved (a massless
@@ -111,7 +128,8 @@ class SearsRowRun {
   void add_energy(double h, double t_start, double t_next);  // the step [t_start, t_next]
   void record_sites(bool coarse, double h, double t_next);
   void crush_faces();  // after record_sites: the indentations grown in the step
-  void record_site(int s, bool coarse, double h, double t_next);
+  template <bool Slabs>
+  void record_site(int s, bool coarse, double h, double t_next);  // Slabs = slab_only
   void record_peaks(bool coarse, const double* ag, double t_next, double h);
   // Collapse (solver/row_solver.hpp): failed storeys under P-Delta; after collapses, true when
   // the run stops (contacts: the first; without: all buildings held).
@@ -184,11 +202,13 @@ class SearsRowRun {
   // site's current contact phase began (the recorded penetration includes the phase's own
   // crush, as the lumped laws' does); the crushing work, the sum of PF_max x c [J].
   std::vector<double> crush, crush_phase;
+  std::vector<double> gap_;  // gap(): each site's ContactSite::gap + crush, kept with crush [m]
   double e_crushing = 0.0;
   // Every site a slab site (structure/building_row.hpp slab_site) between floors of unit ground
   // influence: the per-step overlaps and bounds by the floors' DOFs, as before issue 36 (the
-  // same operations: 1 x u is u); and whether a site has a force cap (else no crush_faces).
-  bool slab_only = false, any_cap = false;
+  // same operations: 1 x u is u); whether a site has a force cap (else no crush_faces); plain:
+  // neither column sites nor caps (one test a step for both).
+  bool slab_only = false, any_cap = false, plain = false;
   std::vector<double> ag_avg_, mdu_;  // per channel: mean ag [m/s^2], sum M du [kg m]
 
   // Floor state [m], [m/s], [m/s^2]; contact forces [N] and overlaps [m] per site.
@@ -223,5 +243,31 @@ class SearsRowRun {
   double current_t = 0.0;  // the time reached [s]
   std::vector<int> held_dofs;
 };
+
+// The faces: a slab's floor plus its internal displacement at the face (Th. 8.3); a struck
+// column point (no bar, issue 36) moves with its floors only.
+inline double SearsRowRun::overlap_now(int s, bool slabs_only) const {
+  const int l = left_slab(s), r = right_slab(s);
+  if (slabs_only) {
+    const ContactSite& site = assembled.sites[s];
+    return u(site.dof_left) - u(site.dof_right) + slabs.disp(l).right - slabs.disp(r).left -
+           gap(s) + gd[s];
+  }
+  return left_point(s).of(u.data()) - right_point(s).of(u.data()) +
+         (l >= 0 ? slabs.disp(l).right : 0.0) - (r >= 0 ? slabs.disp(r).left : 0.0) - gap(s) +
+         gd[s];
+}
+
+inline double SearsRowRun::approach_bound(int s, bool slabs_only) const {
+  const int l = left_slab(s), r = right_slab(s);
+  if (slabs_only) {
+    const ContactSite& site = assembled.sites[s];
+    return u(site.dof_left) - u(site.dof_right) + slabs.right_face_upper(l) -
+           slabs.left_face_lower(r) + gd[s];
+  }
+  return left_point(s).of(u.data()) - right_point(s).of(u.data()) +
+         (l >= 0 ? slabs.right_face_upper(l) : 0.0) - (r >= 0 ? slabs.left_face_lower(r) : 0.0) +
+         gd[s];
+}
 
 }  // namespace pound::sears::detail

@@ -30,7 +30,8 @@ double SlabContactLaw::solve_implicit(double delta_pred_m, double S_step) const 
   // compliance adds to the step's. For a Hertz law this is the scalar root of
   // contact/column_series.hpp (SeriesHertz: delta_c + F(delta_c) / k_col = delta) with the
   // step's compliance beside the column's; a flat law gets k k_col / (k + k_col).
-  const double S = series_compliance_m_per_N > 0.0 ? S_step + series_compliance_m_per_N : S_step;
+  // (At a slab site c = 0 and S_step > 0: S_step + 0 is S_step.)
+  const double S = S_step + series_compliance_m_per_N;
   double f = 0.0;
   if (kind == ContactKind::flat) {
     f = stiffness * delta_pred_m / (1.0 + stiffness * S);

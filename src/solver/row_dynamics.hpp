@@ -122,19 +122,23 @@ class RowDynamics {
   __attribute__((always_inline)) double penetration(const Eigen::VectorXd& y, int i) const {
     return plain_ ? slab_penetration(y, i) : point_penetration(y, i);
   }
+  /// `slabs`: slab_sites(), or a constant where a loop was chosen once per run from it.
   double penetration_rate(const Eigen::VectorXd& y, int i) const {
+    return penetration_rate(y, i, slab_sites_);
+  }
+  double penetration_rate(const Eigen::VectorXd& y, int i, bool slabs) const {
     const auto& s = row_.sites[i];
     const double* v = y.data() + n_;
-    double r = slab_sites_ ? v[s.dof_left] - v[s.dof_right] : s.left.of(v) - s.right.of(v);
+    double r = slabs ? v[s.dof_left] - v[s.dof_right] : s.left.of(v) - s.right.of(v);
     const auto& g = site_ground_[i];
     if (g.first >= 0) r += y(g.first + 1) - y(g.second + 1);
     return r;
   }
   /// The approach (u_L + ug_L) - (u_R + ug_R) of site i's floors [m]: penetration + gap.
-  double approach(const Eigen::VectorXd& y, int i) const {
+  double approach(const Eigen::VectorXd& y, int i) const { return approach(y, i, slab_sites_); }
+  double approach(const Eigen::VectorXd& y, int i, bool slabs) const {
     const auto& s = row_.sites[i];
-    double d =
-        slab_sites_ ? y(s.dof_left) - y(s.dof_right) : s.left.of(y.data()) - s.right.of(y.data());
+    double d = slabs ? y(s.dof_left) - y(s.dof_right) : s.left.of(y.data()) - s.right.of(y.data());
     const auto& g = site_ground_[i];
     if (g.first >= 0) d += y(g.first) - y(g.second);
     return d;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <type_traits>
 
 #include "core/error.hpp"
 
@@ -466,11 +467,20 @@ void RowRun::update_peaks(const Eigen::VectorXd& y0, const Eigen::VectorXd& y1,
   // Free run: the peak approach u_L - u_R of each site from the same interpolant the contact
   // events are located on (find_event), so that a pounding run of this motion touches at a
   // site exactly when this peak exceeds its gap (up to the location tolerance).
-  for (int i = 0; i < ns_ && !pounding; ++i) {
-    const Hermite c{dyn_.approach(y0, i), dyn_.approach(y1, i), h * dyn_.penetration_rate(y0, i),
-                    h * dyn_.penetration_rate(y1, i)};
-    rec_.approach_over_step(i, c);
-  }
+  // The slab-only sites' path (RowDynamics::slab_sites) chosen once per step, not per site.
+  auto approaches = [&](auto slabs) {
+    for (int i = 0; i < ns_; ++i) {
+      const Hermite c{dyn_.approach(y0, i, slabs), dyn_.approach(y1, i, slabs),
+                      h * dyn_.penetration_rate(y0, i, slabs),
+                      h * dyn_.penetration_rate(y1, i, slabs)};
+      rec_.approach_over_step(i, c);
+    }
+  };
+  if (pounding) return;
+  if (dyn_.slab_sites())
+    approaches(std::true_type{});
+  else
+    approaches(std::false_type{});
 }
 
 }  // namespace pound::detail

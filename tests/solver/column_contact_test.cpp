@@ -142,5 +142,36 @@ TEST(ColumnContact, AnOffsetRowAgreesWithAnIndependentIntegration) {
     EXPECT_NEAR(s.floors[i].disp_pounding, ref.peak(i), 1e-4 * ref.peak(i)) << "floor DOF " << i;
 }
 
+// The slab-only paths (issue 38 part 1; RowDynamics::approach and penetration_rate with
+// `slabs` chosen once per run from slab_sites()) take a slab site's floors directly: at every
+// slab site their values are the general SitePoint sums' to the bit (1 x u is u), and a row
+// with a column site does not take them.
+TEST(ColumnContact, SlabSitesApproachAndRateByTheirFloorsAreTheGeneralValuesToTheBit) {
+  BuildingRow row;
+  row.buildings = {test::uniform_building(3, 1.0e5, 4.0e7),
+                   test::uniform_building(2, 0.8e5, 8.0e7)};
+  row.gaps = {{0.01, 0.02}};
+  const AssembledRow a = assemble(row);
+  ASSERT_EQ(a.sites.size(), 2u);
+  RowDynamics dyn(a, a.storeys, false, nullptr);
+  ASSERT_TRUE(dyn.slab_sites());
+  Eigen::VectorXd y(dyn.layout().size);
+  for (int k = 0; k < y.size(); ++k) y(k) = 1e-3 * std::sin(1.7 * k + 0.3) / 3.0;  // not round
+  for (int i = 0; i < 2; ++i) {
+    const ContactSite& s = a.sites[i];
+    const double d = y(s.dof_left) - y(s.dof_right);
+    const double r = y(a.dofs() + s.dof_left) - y(a.dofs() + s.dof_right);
+    EXPECT_EQ(dyn.approach(y, i, true), d);
+    EXPECT_EQ(dyn.approach(y, i, false), d);
+    EXPECT_EQ(dyn.approach(y, i), d);
+    EXPECT_EQ(dyn.penetration_rate(y, i, true), r);
+    EXPECT_EQ(dyn.penetration_rate(y, i, false), r);
+    EXPECT_EQ(dyn.penetration_rate(y, i), r);
+  }
+  const AssembledRow offset = assemble(offset_pair(0.0, 0.05));
+  RowDynamics column_row(offset, offset.storeys, false, nullptr);
+  EXPECT_FALSE(column_row.slab_sites());
+}
+
 }  // namespace
 }  // namespace pound
