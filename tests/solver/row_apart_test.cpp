@@ -21,19 +21,6 @@
 namespace pound {
 namespace {
 
-// The chapter 8 pair, the 5-storey building yielding (bilinear, yield shears 40 % of
-// studies/ch8-yielding.ini's) and the 3-storey one elastic: under El Centro the yielding one
-// needs Dormand-Prince steps where the elastic one needs none. Their shortest periods differ,
-// so their exact steps' grids (T_min / 20) differ.
-BuildingRow yielding_and_elastic(double gap) {
-  BuildingRow row = test::chapter8_pair(gap);
-  Building& b = row.buildings[0];
-  b.hysteresis = "bilinear";
-  b.yield_shears = {442e3, 413e3, 354e3, 266e3, 148e3};
-  b.hardening.assign(5, 0.02);
-  return row;
-}
-
 RowProblem free_problem(const AssembledRow& a, const RowGround& g, double extra = 1.0) {
   RowProblem p;
   p.row = &a;
@@ -60,7 +47,7 @@ RowResult alone(const BuildingRow& row, int b, const RowGround& g, const RowProb
 }
 
 TEST(RowApart, EachBuildingIsItselfAlone) {
-  const BuildingRow row = yielding_and_elastic(0.01);
+  const BuildingRow row = test::yielding_and_elastic_pair(0.01);
   const AssembledRow a = assemble(row);
   const RowGround g = RowGround::uniform(test::elcentro_first(301), 2);
   const RowProblem p = free_problem(a, g);
@@ -94,7 +81,7 @@ TEST(RowApart, EachBuildingIsItselfAlone) {
 }
 
 TEST(RowApart, AgreesWithTheRowSteppedTogether) {
-  const BuildingRow row = yielding_and_elastic(0.01);
+  const BuildingRow row = test::yielding_and_elastic_pair(0.01);
   const AssembledRow a = assemble(row);
   const RowGround g = RowGround::uniform(test::elcentro_first(301), 2);
   const RowProblem p = free_problem(a, g);
@@ -119,7 +106,7 @@ TEST(RowApart, AgreesWithTheRowSteppedTogether) {
 // not close: a pounding run (the row together, with contacts) touches at a gap a little below
 // it and not at one a little above it (the contact is found where the two-grid approach says).
 TEST(RowApart, PeakApproachOnTwoGridsTellsTheFirstTouch) {
-  const BuildingRow row0 = yielding_and_elastic(0.0);
+  const BuildingRow row0 = test::yielding_and_elastic_pair(0.0);
   const AssembledRow a0 = assemble(row0);
   const RowGround g = RowGround::uniform(test::elcentro_first(301), 2);
   const IntegratorSettings s;
@@ -135,7 +122,7 @@ TEST(RowApart, PeakApproachOnTwoGridsTellsTheFirstTouch) {
   c.params.k = 50 * 8.4e7;
   c.params.e = 0.6;
   for (const double f : {1.0 - 1e-5, 1.0 + 1e-5}) {
-    const BuildingRow row = yielding_and_elastic(f * peak);
+    const BuildingRow row = test::yielding_and_elastic_pair(f * peak);
     const AssembledRow a = assemble(row);
     const auto laws = make_site_laws(c, a);
     RowProblem p = free_problem(a, g);
@@ -146,7 +133,7 @@ TEST(RowApart, PeakApproachOnTwoGridsTellsTheFirstTouch) {
 }
 
 TEST(RowApart, EnergyBalanceClosesPerBuilding) {
-  const BuildingRow row = yielding_and_elastic(0.01);
+  const BuildingRow row = test::yielding_and_elastic_pair(0.01);
   const AssembledRow a = assemble(row);
   const RowGround g = RowGround::uniform(test::elcentro_first(301), 2);
   RowProblem p = free_problem(a, g);
@@ -169,7 +156,7 @@ TEST(RowApart, EnergyBalanceClosesPerBuilding) {
 // Each building on its own channel (spatially varying ground): the approach takes the grounds'
 // difference (physics.md section 5a) as the row does.
 TEST(RowApart, BuildingsOnTheirOwnGround) {
-  const BuildingRow row = yielding_and_elastic(0.01);
+  const BuildingRow row = test::yielding_and_elastic_pair(0.01);
   const AssembledRow a = assemble(row);
   GroundMotion m1 = test::elcentro_first(301), m2 = m1;
   for (double& x : m2.accel) x *= 0.7;
@@ -208,7 +195,7 @@ TEST(RowApart, ColumnSitesKeepTheSwayShear) {
 // A building that collapses is held still while the other goes on, as in the row; with an
 // energy balance the run is the row's (whose balance is the one at the first collapse).
 TEST(RowApart, CollapseHoldsTheBuildingAsTheRowDoes) {
-  const BuildingRow row = yielding_and_elastic(0.01);
+  const BuildingRow row = test::yielding_and_elastic_pair(0.01);
   const AssembledRow a = assemble(row);
   const RowGround g = RowGround::uniform(test::elcentro_first(301), 2);
   RowProblem p = free_problem(a, g);
@@ -243,7 +230,7 @@ TEST(RowApart, CollapseHoldsTheBuildingAsTheRowDoes) {
 // On a flexible foundation (its base's sway and rotation after all floors in the row's
 // numbering, first after its own floors alone).
 TEST(RowApart, FlexibleFoundationsMapTheBaseDofs) {
-  BuildingRow row = yielding_and_elastic(0.01);
+  BuildingRow row = test::yielding_and_elastic_pair(0.01);
   row.buildings[0].foundation = test::cone_foundation(7.1, 150, 1800, 0.4, 48e3, 1.6e6);
   row.buildings[1].foundation = test::cone_foundation(5.5, 150, 1800, 0.4, 29e3, 3.48e5);
   const AssembledRow a = assemble(row);

@@ -21,19 +21,6 @@
 namespace pound {
 namespace {
 
-// The chapter 8 pair, the 5-storey building yielding (bilinear) and the 3-storey one elastic
-// (as tests/solver/row_apart_test.cpp): their shortest periods differ, so do their exact
-// steps' grids (T_min / 20), and the yielding one takes Dormand-Prince steps the elastic one
-// does not.
-BuildingRow yielding_and_elastic(double gap) {
-  BuildingRow row = test::chapter8_pair(gap);
-  Building& b = row.buildings[0];
-  b.hysteresis = "bilinear";
-  b.yield_shears = {442e3, 413e3, 354e3, 266e3, 148e3};
-  b.hardening.assign(5, 0.02);
-  return row;
-}
-
 double rel(double a, double b) {
   return std::fabs(a - b) / std::max({std::fabs(a), std::fabs(b), 1e-300});
 }
@@ -47,7 +34,7 @@ GroundMotion elcentro(double scale) {
 
 struct Sample {
   explicit Sample(double gap, bool energy = false, double scale = 1.0)
-      : row(yielding_and_elastic(gap)),
+      : row(test::yielding_and_elastic_pair(gap)),
         a(assemble(row)),
         g(RowGround::uniform(elcentro(scale), 2)) {
     ContactSpec c;
@@ -86,7 +73,7 @@ TEST(RowStepper, AppliesToMixedRowsOnly) {
   EXPECT_TRUE(fork_apart_applies(x.row, x.p));
   x.row.buildings[0].hysteresis = "elastic";
   EXPECT_FALSE(fork_apart_applies(x.row, x.p));
-  EXPECT_FALSE(fork_apart_applies(yielding_and_elastic(0.01), x.free()));  // no laws
+  EXPECT_FALSE(fork_apart_applies(test::yielding_and_elastic_pair(0.01), x.free()));  // no laws
 }
 
 // A gap just under the free run's peak approach: the buildings touch once. The fork's first

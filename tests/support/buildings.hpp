@@ -27,6 +27,20 @@ inline BuildingRow chapter8_pair(double gap) {
   return row;
 }
 
+/// The chapter 8 pair with its 5-storey building yielding (bilinear, yield shears 40 % of
+/// studies/ch8-yielding.ini's, 2 % hardening) and the 3-storey one elastic: under El Centro the
+/// yielding one needs Dormand-Prince steps where the elastic one needs none, and their shortest
+/// periods differ, so do their exact steps' grids (T_min / 20) (the tests of solve_apart and
+/// RowStepper, issue 38).
+inline BuildingRow yielding_and_elastic_pair(double gap) {
+  BuildingRow row = chapter8_pair(gap);
+  Building& b = row.buildings[0];
+  b.hysteresis = "bilinear";
+  b.yield_shears = {442e3, 413e3, 354e3, 266e3, 148e3};
+  b.hardening.assign(5, 0.02);
+  return row;
+}
+
 /// The offset pair of the slab-to-column tests (issue 36): left 2 storeys of 3 m (1e5 kg floors,
 /// 4e7 N/m storeys), right 2 of 3.5 m (0.8e5 kg, 8e7 N/m), fixed bases, damping ratio xi. Sites
 /// by elevation: L's floor 1 (3 m) on R's storey 1 at xi = 6/7, R's floor 1 (3.5 m) on L's
