@@ -20,6 +20,7 @@
 
 #include "../support/buildings.hpp"
 #include "../support/reference_inputs.hpp"
+#include "../support/same_run.hpp"
 #include "simulation/simulate_row.hpp"
 
 namespace pound {
@@ -185,19 +186,6 @@ long steps(const RowSimulation& s) {
   return s.free.steps + s.free.rejected + s.pounding.steps + s.pounding.rejected;
 }
 
-double worst_peaks(const RowSimulation& x, const RowSimulation& y) {
-  double w = 0.0;
-  for (std::size_t i = 0; i < x.floors.size(); ++i) {
-    const FloorResponse &a = x.floors[i], &b = y.floors[i];
-    for (auto [p, q] : {std::pair{a.disp_pounding, b.disp_pounding},
-                        {a.disp_free, b.disp_free},
-                        {a.peak_drift_ratio_pounding, b.peak_drift_ratio_pounding},
-                        {a.peak_drift_ratio_free, b.peak_drift_ratio_free}})
-      w = std::max(w, std::fabs(p - q) / std::fabs(q));
-  }
-  return w;
-}
-
 // The raft at 1e5 1/s: Dormand-Prince needs h < 3.3e-5 s there; the IMEX steps (imex_bases)
 // match a fine reference (rtol 1e-11) as Dormand-Prince does, in fewer steps, but far more than
 // the fixed base's (measured: elastic 18,327 against 25,024 and 5,182 fixed; imk 192,866 against
@@ -216,13 +204,13 @@ TEST(ArkImex, StiffRaftAgreesWithTheReference) {
     const RowSimulation s = test::elcentro_hc_run(raft, imex, false);
     const RowSimulation d = test::elcentro_hc_run(raft, dp, false);
     const RowSimulation r = test::elcentro_hc_run(raft, reference, false);
-    const double w = worst_peaks(s, r);
+    const double w = test::worst_peaks(s, r);
     EXPECT_LT(w, 1e-9);
     EXPECT_LT(steps(s), steps(d));
     std::printf(
         "[ ark      ] %s: peaks within %.2e of the reference (Dormand-Prince %.2e), %ld "
         "steps against %ld (Dormand-Prince) and %ld (fixed base)\n",
-        law.c_str(), w, worst_peaks(d, r), steps(s), steps(d), steps(f));
+        law.c_str(), w, test::worst_peaks(d, r), steps(s), steps(d), steps(f));
   }
 }
 
@@ -238,7 +226,7 @@ TEST(ArkImex, RowsWithoutStiffDashpotsStepAsBefore) {
     const RowSimulation a = test::elcentro_hc_run(row, on, false);
     const RowSimulation b = test::elcentro_hc_run(row, off, false);
     EXPECT_EQ(steps(a), steps(b));
-    EXPECT_EQ(worst_peaks(a, b), 0.0);
+    EXPECT_EQ(test::worst_peaks(a, b), 0.0);
   }
 }
 

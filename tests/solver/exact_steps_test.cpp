@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "../support/buildings.hpp"
+#include "../support/random_branches.hpp"
 #include "solver/linear_step.hpp"
 #include "solver/row_dynamics.hpp"
 
@@ -38,34 +39,19 @@ AssembledRow soil_row(const std::string& law, bool p_delta, bool fixed_right) {
   return assemble(row);
 }
 
-// Each storey driven from rest through random drifts (up to 4 yield drifts): random branches.
+// Each storey on a random branch (test::random_storey_states), its tangent taken up.
 void random_branches(const AssembledRow& a, RowDynamics& dyn, std::mt19937& rng) {
-  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  const std::vector<StoreyState> states = test::random_storey_states(a, rng);
   for (int i = 0; i < a.dofs(); ++i) {
-    const RowStorey& st = a.storeys[i];
-    if (st.foundation) continue;
-    const double uy = std::isfinite(st.p.Fy) ? st.p.Fy / st.p.k0 : 0.01;
-    double d = 0.0;
-    for (int k = 0; k < 4; ++k) {
-      const double d1 = 4.0 * uy * unit(rng);
-      StoreyState next;
-      st.law->advance(st.p, dyn.storey[i], d, d1, next);
-      dyn.storey[i] = next;
-      d = d1;
-    }
+    if (a.storeys[i].foundation) continue;
+    dyn.storey[i] = states[i];
     dyn.storey_changed(i);
   }
 }
 
 Eigen::VectorXd random_state(const AssembledRow& a, const RowDynamics& dyn, std::mt19937& rng) {
-  std::uniform_real_distribution<double> unit(-1.0, 1.0);
-  const int n = a.dofs();
   Eigen::VectorXd y = Eigen::VectorXd::Zero(dyn.layout().size);
-  for (int i = 0; i < n; ++i) {
-    const bool rot = i == a.rot[0] || i == a.rot[1];
-    y(i) = (rot ? 1e-4 : 0.05) * unit(rng);
-    y(n + i) = (rot ? 1e-3 : 0.5) * unit(rng);
-  }
+  test::random_motion(a, rng, y.data(), y.data() + a.dofs());
   return y;
 }
 

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "../support/buildings.hpp"
+#include "../support/random_branches.hpp"
 #include "solver/row_forces.hpp"
 
 namespace pound {
@@ -55,27 +56,6 @@ AssembledRow row_of(const Case& c) {
   return assemble(row);
 }
 
-// Each storey driven from rest through a few random drifts (up to 4 yield drifts), so that the
-// piecewise laws stand on random branches (loading, unloading, capped, ...).
-std::vector<StoreyState> random_states(const AssembledRow& a, std::mt19937& rng) {
-  std::vector<StoreyState> states(a.dofs());
-  std::uniform_real_distribution<double> unit(-1.0, 1.0);
-  for (int i = 0; i < a.dofs(); ++i) {
-    const RowStorey& st = a.storeys[i];
-    if (st.foundation) continue;
-    const double uy = std::isfinite(st.p.Fy) ? st.p.Fy / st.p.k0 : 0.01;
-    double d = 0.0;
-    for (int k = 0; k < 4; ++k) {
-      const double d1 = 4.0 * uy * unit(rng);
-      StoreyState next;
-      st.law->advance(st.p, states[i], d, d1, next);
-      states[i] = next;
-      d = d1;
-    }
-  }
-  return states;
-}
-
 // dv of the O(n) path against -M^-1 (K u + off + C v) of the matrices, to rounding: each
 // entry within 1e-13 of the sum of the magnitudes of its terms.
 void expect_same(const Eigen::MatrixXd& K, const std::vector<double>& off, const Eigen::MatrixXd& C,
@@ -114,7 +94,6 @@ TEST(RowForcesOnBase, StoreyByStoreyForcesAreTheMatrices) {
   cases.push_back(massless);
 
   std::mt19937 rng(29);
-  std::uniform_real_distribution<double> unit(-1.0, 1.0);
   for (const Case& c : cases) {
     const AssembledRow a = row_of(c);
     const int n = a.dofs();
@@ -124,11 +103,7 @@ TEST(RowForcesOnBase, StoreyByStoreyForcesAreTheMatrices) {
     Eigen::VectorXd dv(n), cv(n);
     for (int trial = 0; trial < 20; ++trial) {
       Eigen::VectorXd u(n), v(n);
-      for (int i = 0; i < n; ++i) {
-        const bool rot = i == a.rot[0] || i == a.rot[1];
-        u(i) = (rot ? 1e-4 : 0.05) * unit(rng);
-        v(i) = (rot ? 1e-3 : 0.5) * unit(rng);
-      }
+      test::random_motion(a, rng, u.data(), v.data());
       const std::string what = name_of(c) + ", trial " + std::to_string(trial);
       // The initial stiffness and damping: the assembled K and C themselves.
       const std::vector<double> zero(n, 0.0);
@@ -144,7 +119,7 @@ TEST(RowForcesOnBase, StoreyByStoreyForcesAreTheMatrices) {
               << what << " (damping), DOF " << i;
       }
       // Random branches: the tangent lines and, with tangent damping, their dampers.
-      const std::vector<StoreyState> states = random_states(a, rng);
+      const std::vector<StoreyState> states = test::random_storey_states(a, rng);
       forces.set_lines(states);
       if (forces.tangent_damping()) forces.set_tangent_damping(states);
       Eigen::MatrixXd K, C;
@@ -162,7 +137,6 @@ TEST(RowForcesOnBase, StoreyByStoreyForcesAreTheMatrices) {
 // massless base keep the O(n) path.
 TEST(RowForcesOnBase, DenseBlocksAreTheStoreyByStoreyForces) {
   std::mt19937 rng(38);
-  std::uniform_real_distribution<double> unit(-1.0, 1.0);
   for (int variant = 0; variant < 5; ++variant) {
     Case c;
     c.p_delta = variant == 1 || variant == 3;
@@ -182,11 +156,7 @@ TEST(RowForcesOnBase, DenseBlocksAreTheStoreyByStoreyForces) {
     Eigen::VectorXd dense(n), base(n);
     for (int trial = 0; trial < 20; ++trial) {
       Eigen::VectorXd u(n), v(n);
-      for (int i = 0; i < n; ++i) {
-        const bool rot = i == a.rot[0] || i == a.rot[1];
-        u(i) = (rot ? 1e-4 : 0.05) * unit(rng);
-        v(i) = (rot ? 1e-3 : 0.5) * unit(rng);
-      }
+      test::random_motion(a, rng, u.data(), v.data());
       forces.linear(u.data(), v.data(), ag.data(), dense.data());
       forces.affine(u.data(), v.data(), ag.data(), base.data());
       for (int i = 0; i < n; ++i) {

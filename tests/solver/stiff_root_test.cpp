@@ -18,6 +18,7 @@
 
 #include "../support/buildings.hpp"
 #include "../support/reference_inputs.hpp"
+#include "../support/same_run.hpp"
 #include "simulation/simulate_row.hpp"
 #include "structure/building_on_base.hpp"
 #include "structure/contact_geometry.hpp"
@@ -44,20 +45,6 @@ RowSimulation run(const BuildingRow& row, const IntegratorSettings& integ, bool 
   return test::elcentro_hc_run(row, integ, energy);
 }
 
-// The largest relative difference of the floors' peak displacements and drifts.
-double worst_peaks(const RowSimulation& x, const RowSimulation& y) {
-  double w = 0.0;
-  for (std::size_t i = 0; i < x.floors.size(); ++i) {
-    const FloorResponse &a = x.floors[i], &b = y.floors[i];
-    for (auto [p, q] : {std::pair{a.disp_pounding, b.disp_pounding},
-                        {a.disp_free, b.disp_free},
-                        {a.peak_drift_ratio_pounding, b.peak_drift_ratio_pounding},
-                        {a.peak_drift_ratio_free, b.peak_drift_ratio_free}})
-      w = std::max(w, std::fabs(p - q) / std::fabs(q));
-  }
-  return w;
-}
-
 long steps(const RowSimulation& s) {
   return s.free.steps + s.free.rejected + s.pounding.steps + s.pounding.rejected;
 }
@@ -78,7 +65,7 @@ TEST(StiffRoot, StiffSpringsGiveTheFixedBasesPeaksInItsSteps) {
       const BuildingRow fixed = pair(law, false, 0, 0, 0, 0);
       const BuildingRow stiff = pair(law, true, 1e13, 1e15, 1e3, 1e3, m0, m0);
       const RowSimulation f = run(fixed, integ, energy), s = run(stiff, integ, energy);
-      const double w = worst_peaks(s, f);
+      const double w = test::worst_peaks(s, f);
       EXPECT_LT(w, 1e-4);
       EXPECT_LT(steps(s), 2 * steps(f)) << steps(s) << " against " << steps(f);
       const AssembledRow a = assemble(stiff);
@@ -116,7 +103,7 @@ TEST(StiffRoot, CondensedBaseMatchesTheFirstOrderBaseToTheStatedError) {
     }
     const double bound = 2 * M_PI / (rate * t1);
     const RowSimulation x = run(row, first_order, false), y = run(row, condensed, false);
-    const double w = worst_peaks(y, x);
+    const double w = test::worst_peaks(y, x);
     EXPECT_LT(w, bound);
     EXPECT_LT(w, last);
     last = w;
@@ -155,10 +142,10 @@ TEST(StiffRoot, ABaseThatAContactSiteLoadsIsNotCondensed) {
     const RowSimulation x = run(row, first_order, false), y = run(row, condensed, false);
     ASSERT_GT(x.sites.size(), 0u);
     if (base_loaded) {
-      EXPECT_EQ(worst_peaks(y, x), 0.0);
+      EXPECT_EQ(test::worst_peaks(y, x), 0.0);
       EXPECT_GT(x.sites[loading].impacts, 0);
     } else {
-      EXPECT_GT(worst_peaks(y, x), 1e-8);
+      EXPECT_GT(test::worst_peaks(y, x), 1e-8);
     }
   }
 }

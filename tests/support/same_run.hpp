@@ -7,12 +7,29 @@
 // different instants), within 1e-2 and 2e-3. Returns the impacts of `e` (GoogleTest checks).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "simulation/simulate_row.hpp"
 
 namespace pound::test {
+
+/// The largest relative difference of the floors' peak displacements and drifts, with and
+/// without pounding, of x against y.
+inline double worst_peaks(const RowSimulation& x, const RowSimulation& y) {
+  double w = 0.0;
+  for (std::size_t i = 0; i < x.floors.size(); ++i) {
+    const FloorResponse &a = x.floors[i], &b = y.floors[i];
+    for (auto [p, q] : {std::pair{a.disp_pounding, b.disp_pounding},
+                        {a.disp_free, b.disp_free},
+                        {a.peak_drift_ratio_pounding, b.peak_drift_ratio_pounding},
+                        {a.peak_drift_ratio_free, b.peak_drift_ratio_free}})
+      w = std::max(w, std::fabs(p - q) / std::fabs(q));
+  }
+  return w;
+}
 
 inline int expect_same_run(const RowSimulation& e, const RowSimulation& d,
                            const std::string& what) {
