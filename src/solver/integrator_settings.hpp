@@ -33,6 +33,14 @@ struct IntegratorSettings {
   /// balances the explicit forces (the soft-soil study took more steps, not fewer; docs/speed.md
   /// "IMEX steps on soil"); false: Dormand-Prince throughout.
   bool imex_bases = false;
+  /// Adaptive control on a row with flexible bases (issue 38; docs/integration.md, "Step
+  /// choice"): each base DOF's entries of the error test measured by what they do to its
+  /// building's floors (the sway's and the rotation's lever to the roof, in the floors' scale; a
+  /// velocity error by the displacement it makes within the DOF's own relaxation time) and the
+  /// Dormand-Prince steps kept inside the stability bound of the bases' dashpots. false: every
+  /// base entry against its own atol + rtol |y|, as the floors' (the norm before). Rows on fixed
+  /// bases take the same norm either way.
+  bool base_error_by_floors = true;
 };
 
 }  // namespace pound

@@ -3,6 +3,7 @@
 // row_run.cpp (start, steps, exact steps, recording, the end) and row_events.cpp (locating and
 // applying switching events). Internal to src/solver.
 #include <Eigen/Dense>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -98,6 +99,9 @@ class RowRun {
   }
   double error_norm(const Eigen::VectorXd& y0, const Eigen::VectorXd& y1,
                     const Eigen::VectorXd& err) const;
+  double error_norm_on_soil(const Eigen::VectorXd& y0, const Eigen::VectorXd& y1,
+                            const Eigen::VectorXd& err) const;
+  void set_base_errors();
   int find_event(const Eigen::VectorXd& y0, const Eigen::VectorXd& y1, const Eigen::VectorXd& dy0,
                  const Eigen::VectorXd& dy1, double h, double& theta,
                  const std::vector<char>* ignore = nullptr) const {
@@ -156,6 +160,19 @@ class RowRun {
   // velocities; empty: Dormand-Prince), chosen once per run (set_step_limits).
   ImplicitSet implicit_;
   ArkImexWork ark_work_;
+  // The base DOFs' entries of the error test (IntegratorSettings::base_error_by_floors; empty:
+  // every tested entry against its own scale, as on fixed bases), chosen once per run
+  // (set_base_errors): base DOF d of the building whose floors are [first, end); its error's
+  // lever on the floors wu [-] (1 on a sway, the building's height H [m] on a rotation [rad]),
+  // its velocity's wv = wu tau [s] (tau the DOF's own relaxation time 1 / max(C_dd / M_d,
+  // sqrt(K_dd / M_d)), 0 where the velocity is not a state of its own: massless or condensed).
+  struct BaseEntry {
+    int d, first, end;
+    double wu, wv;
+  };
+  std::vector<BaseEntry> base_entries_;
+  // The largest Dormand-Prince step [s] the bases' dashpots allow (infinity: no bound but h_max).
+  double h_explicit_ = std::numeric_limits<double>::infinity();
 
   // The fork of a free run (solve_free_and_pounding). Until a site comes within kForkMargin of
   // touching, the pounding run's steps are the free run's (no contact is active, no contact

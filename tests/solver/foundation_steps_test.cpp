@@ -56,10 +56,14 @@ TEST(FoundationSteps, ExactStepsPerBuildingAgreeWithDormandPrince) {
       EXPECT_EQ(d.pounding.exact_steps + d.free.exact_steps, 0) << what;
       // (yielding storeys' events hand many grid steps to Dormand-Prince; IMK storeys meet a new
       // tangent stiffness at every excursion, so that few grid points reach a propagator:
-      // there the exact steps must at least cost no steps)
+      // there the exact steps must cost few more steps. Since the base DOFs' error test (issue
+      // 38, RowRun::set_base_errors) the Dormand-Prince steps on these rafts are bounded by
+      // 3 / (C_dd / M_d), below the exact grid's interval, which then takes two: measured 8,447
+      // steps (178 rejected) against 6,849 (208) Dormand-Prince alone; 7,877 (569) against
+      // 7,657 (901) with each entry against its own scale)
       if (law == "imk") {
         EXPECT_GT(e.free.exact_steps, 0) << what;
-        EXPECT_LT(e.free.steps, 1.1 * d.free.steps) << what;
+        EXPECT_LT(e.free.steps, 1.3 * d.free.steps) << what;
       } else {
         EXPECT_GT(e.free.exact_steps, (law == "elastic" ? 0.75 : 0.5) * e.free.steps) << what;
       }
