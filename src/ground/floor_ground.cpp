@@ -46,7 +46,10 @@ void FloorGround::relative(int s, double t, double& du, double& dv) const {
 }
 
 void FloorGround::relative_all(double t, double* du, double* dv) {
-  for (const int c : used_) ground_->trace(c).kinematics(t, vg_[c], ug_[c]);
+  if (t != kin_t_) {  // (the damped Sears path asks again at a step's end: the same numbers)
+    for (const int c : used_) ground_->trace(c).kinematics(t, vg_[c], ug_[c]);
+    kin_t_ = t;
+  }
   for (std::size_t s = 0; s < site_channels_.size(); ++s) {
     const auto& [l, r] = site_channels_[s];
     du[s] = l == r ? 0.0 : ug_[l] - ug_[r];

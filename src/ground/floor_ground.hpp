@@ -5,6 +5,7 @@
 // channels, with their relative ground displacement and velocity. Both solvers use it; a site
 // whose buildings share a channel has no relative ground motion, so that a row on uniform ground
 // computes what it did before. Kernel only: no files, no printing.
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -28,7 +29,10 @@ class FloorGround {
   /// Each channel's acceleration at t [m/s^2], and 0 at index channels() (valid until the next
   /// call of either).
   const double* channel_acc(double t) {
-    for (int c = 0; c < channels_; ++c) agc_[c] = ground_->trace(c).acc(t);
+    if (t != acc_t_) {  // (the solvers ask again at the same t: the same numbers)
+      for (int c = 0; c < channels_; ++c) agc_[c] = ground_->trace(c).acc(t);
+      acc_t_ = t;
+    }
     return agc_.data();
   }
   /// The channels' accelerations of the last channel_acc() or acc() call [m/s^2] (the same
@@ -49,7 +53,7 @@ class FloorGround {
   void relative(int s, double t, double& du, double& dv) const;
   /// relative() of every site at t into du[s], dv[s] (as many as sites), each channel that a
   /// differing site meets evaluated once (the same numbers: a row's sites mostly share a pair
-  /// of channels).
+  /// of channels), and not again where the last call had the same t.
   void relative_all(double t, double* du, double* dv);
 
  private:
@@ -60,6 +64,9 @@ class FloorGround {
   std::vector<double> agc_, ag_;
   std::vector<int> used_;        // the channels that differing sites meet
   std::vector<double> vg_, ug_;  // relative_all's channel velocities [m/s], displacements [m]
+  // The t of agc_ and of vg_, ug_ [s] (NaN: none yet; the ground does not change in a run).
+  double acc_t_ = std::numeric_limits<double>::quiet_NaN();
+  double kin_t_ = std::numeric_limits<double>::quiet_NaN();
 };
 
 }  // namespace pound

@@ -132,6 +132,11 @@ class StationGenerator {
   std::unique_ptr<LowFrequencyPin> pin_;  // step 5
 };
 
+/// The moving sum of p over bins k - h .. k + h (cut at the ends), h = max(1, k / 10), at every
+/// bin k [p's unit]: the smoothing <> of step 2 above, each sum in the order of its bins. Exposed
+/// for tests.
+std::vector<double> moving_power_sum(const std::vector<double>& p);
+
 /// Philox stream of station `station`'s phases (0-based) in phase set `attempt`: attempt +
 /// 65536 station (station 0's is SimqkeGenerator's).
 std::uint32_t station_phase_stream(int station, int attempt);

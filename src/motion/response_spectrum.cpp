@@ -73,6 +73,7 @@ SpectrumCalculator::SpectrumCalculator(std::vector<double> periods, double dampi
       throw InputError("response spectrum: period " + std::to_string(T) +
                        " s; valid: finite periods >= 0 s");
     PerPeriod p;
+    rigid_ = rigid_ || T == 0.0;
     if (T > 0.0) {
       p.omega = 2.0 * M_PI / T;
       if (options.max_step_fraction > 0.0)
@@ -325,10 +326,12 @@ void SpectrumCalculator::peaks(const std::vector<double>& a, std::vector<double>
   const std::size_t np = periods_.size();
   sd.assign(np, 0.0);
   if (sa) sa->assign(np, 0.0);
-  double pga = 0.0;
-  for (double x : a) pga = std::max(pga, std::fabs(x));
-  for (std::size_t i = 0; i < np; ++i)  // T = 0: a rigid oscillator moves with the ground
-    if (per_[i].omega == 0.0 && sa) (*sa)[i] = pga;
+  if (sa && rigid_) {  // T = 0: a rigid oscillator moves with the ground
+    double pga = 0.0;  // (a serial chain over the record: only where a period needs it)
+    for (double x : a) pga = std::max(pga, std::fabs(x));
+    for (std::size_t i = 0; i < np; ++i)
+      if (per_[i].omega == 0.0) (*sa)[i] = pga;
+  }
   const std::size_t nl = lanes_.a11.size();
   // The peaks (no allocation per spectrum for the usual sizes).
   constexpr std::size_t kStackLanes = 256;
@@ -375,8 +378,9 @@ void SpectrumCalculator::compute_psa(const std::vector<double>& accel,
   std::vector<double> sd;
   peaks(accel, sd, nullptr);
   psa.resize(periods_.size());
-  double pga = 0.0;
-  for (double x : accel) pga = std::max(pga, std::fabs(x));
+  double pga = 0.0;  // only with a period 0 (the generator's periods have none)
+  if (rigid_)
+    for (double x : accel) pga = std::max(pga, std::fabs(x));
   for (std::size_t i = 0; i < periods_.size(); ++i) {
     const double w = per_[i].omega;
     psa[i] = w == 0.0 ? pga : w * w * sd[i];

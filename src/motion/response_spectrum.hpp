@@ -103,6 +103,7 @@ class SpectrumCalculator {
   double damping_, dt_;
   SimdPath path_;
   std::vector<PerPeriod> per_;
+  bool rigid_ = false;  // some period is 0: its peak is the record's PGA (computed only then)
   std::vector<std::size_t> lane_of_;  // lane of period i (periods > 0)
   Lanes lanes_;
   Points points_;

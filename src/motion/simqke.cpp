@@ -350,7 +350,10 @@ SimqkeAttempt SimqkeGenerator::iterate(const SimqkeStart& s, GroundMotion m,
       ratio[j] = target[j] / psa[j];
       const double q = psa[j] / target[j];
       max_dev = std::max(max_dev, std::fabs(q - 1.0));
-      if (s.rms_score) sum_sq += std::log(q) * std::log(q);
+      if (s.rms_score) {
+        const double lq = std::log(q);  // one call (the same bits as two)
+        sum_sq += lq * lq;
+      }
     }
     const double score = s.rms_score ? std::sqrt(sum_sq / double(psa.size())) : max_dev;
     if (score < best.score) {
@@ -404,13 +407,21 @@ void SimqkeGenerator::bin_power(const std::vector<double>& ratio, double power,
   out.assign(d.nbins, 1.0);
   // As correct(): a bin of weight 0 takes ratio_j itself (ratio_j + 0 (ratio_j+1 - ratio_j) is
   // ratio_j exactly), whose power is computed once per matching period.
+  // So does a bin whose interpolated ratio comes out as ratio_j (between two equal ratios:
+  // ratio_j + w 0), the same argument of pow: with the dead band of
+  // ground/station_generator.hpp most of a station's ratios are exp(0) = 1 after a few
+  // iterations, and pow costs more than the rest of the correction.
   std::vector<double> held(ratio.size(), -1.0);  // -1: not computed (a power is >= 0 or NaN)
   for (std::size_t k = 1; k < d.nbins; ++k) {
+    const std::size_t j = d.bin_j[k];
     if (d.bin_w[k] != 0.0) {
-      out[k] = std::pow(d.bin_ratio(ratio, k), power);
-      continue;
+      const double x = d.bin_ratio(ratio, k);
+      if (!(x == ratio[j])) {
+        out[k] = std::pow(x, power);
+        continue;
+      }
     }
-    double& h = held[d.bin_j[k]];
+    double& h = held[j];
     if (h < 0.0) h = std::pow(ratio[d.bin_j[k]], power);
     out[k] = h;
   }

@@ -93,5 +93,32 @@ TEST(FloorGround, RelativeAllIsZeroWhereBuildingsShareTheGround) {
   EXPECT_NE(du[2], 0.0);
 }
 
+// The ground is evaluated once per instant (issue 38: the solvers ask again at the same t):
+// asked at the same t again, after other instants and in between, every channel's acceleration
+// and every site's relative motion are the traces' own numbers at that t, bit for bit.
+TEST(FloorGround, AskedAgainAtTheSameTimeGivesThatTimesNumbers) {
+  const GroundMotion a = record(2.0, 9.0, 101, 0.02), b = record(1.5, 7.0, 101, 0.02),
+                     c = record(1.0, 5.0, 81, 0.02);
+  const AssembledRow row = assemble(three_in_a_row());
+  const RowGround ground = RowGround::per_building({a, b, c});
+  FloorGround fg(row, &ground);
+  std::vector<double> du(4), dv(4);
+  for (double t : {0.5, 0.5, 1.23456, 0.5, 1.23456, 1.23456, -0.004, -0.004, 0.0, 2.5, 0.0}) {
+    fg.relative_all(t, du.data(), dv.data());
+    const double* agc = fg.channel_acc(t);
+    for (int ch = 0; ch < 3; ++ch) EXPECT_EQ(agc[ch], ground.trace(ch).acc(t)) << "t " << t;
+    const double* ag = fg.acc(t);
+    for (int i = 0; i < row.dofs(); ++i) EXPECT_EQ(ag[i], agc[fg.channel(i)]);
+    for (int s = 0; s < 4; ++s) {
+      const auto [l, r] = fg.site_channels(s);
+      double vl, ul, vr, ur;
+      ground.trace(l).kinematics(t, vl, ul);
+      ground.trace(r).kinematics(t, vr, ur);
+      EXPECT_EQ(du[s], ul - ur) << "site " << s << " t " << t;
+      EXPECT_EQ(dv[s], vl - vr) << "site " << s << " t " << t;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace pound

@@ -31,6 +31,26 @@ Coherency hv() {
   return make_coherency("harichandran-vanmarcke-1986", {}, "test");
 }
 
+// The innovation's smoothing (step 2 of ground/station_generator.hpp), eight bins' sums side by
+// side since issue 38, against the sums written out one bin after another from the lowest: the
+// same bits, at every length (groups of eight and the rest, the windows cut at both ends).
+TEST(GroundStations, MovingPowerSumIsEachBinsSumInOrder) {
+  for (std::size_t n : {1u, 2u, 3u, 7u, 8u, 9u, 17u, 40u, 129u, 1025u}) {
+    std::vector<double> p(n);
+    for (std::size_t k = 0; k < n; ++k)  // powers over many decades, so that order matters
+      p[k] = std::exp(8.0 * std::sin(0.7 * double(k)) + 3.0 * std::cos(0.13 * double(k)));
+    const std::vector<double> s = moving_power_sum(p);
+    ASSERT_EQ(s.size(), n);
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::size_t h = std::max<std::size_t>(1, k / 10);
+      const std::size_t lo = k > h ? k - h : 0, hi = std::min(n - 1, k + h);
+      double sum = 0.0;
+      for (std::size_t b = lo; b <= hi; ++b) sum += p[b];
+      EXPECT_EQ(s[k], sum) << "n " << n << " bin " << k;
+    }
+  }
+}
+
 TEST(GroundStations, UniformLimitIsSimqkeGeneratorsMotionBitForBit) {
   SimqkeSettings s;
   SimqkeGenerator one(target(), 8.0, s);

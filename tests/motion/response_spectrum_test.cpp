@@ -110,6 +110,33 @@ TEST(MotionResponseSpectrum, ZeroPeriodIsPga) {
   EXPECT_NEAR(r.psa[1] / m.pga(), 1.0, 0.02);  // a stiff oscillator follows the ground
 }
 
+// The PGA is computed only where a period 0 asks for it (issue 38: the generator's periods
+// have none, and the pass over the record cost a twentieth of a spectrum): a period 0 anywhere
+// in the list is the PGA on both entry points, and the other periods have the same bits with
+// and without it, from compute() and from compute_psa().
+TEST(MotionResponseSpectrum, ZeroPeriodIsPgaWhereverItStands) {
+  const GroundMotion m = elcentro();
+  const SpectrumCalculator with({0.5, 0.0, 1.0}, 0.05, m.dt), without({0.5, 1.0}, 0.05, m.dt);
+  const ResponseSpectrum a = with.compute(m.accel), b = without.compute(m.accel);
+  std::vector<double> pa, pb;
+  with.compute_psa(m.accel, pa);
+  without.compute_psa(m.accel, pb);
+  ASSERT_EQ(pa.size(), 3u);
+  ASSERT_EQ(pb.size(), 2u);
+  EXPECT_EQ(a.psa[1], m.pga());
+  EXPECT_EQ(a.sa_abs[1], m.pga());
+  EXPECT_EQ(a.sd[1], 0.0);
+  EXPECT_EQ(pa[1], m.pga());
+  for (int i : {0, 1}) {
+    const int j = i == 0 ? 0 : 2;  // the same period in the list with 0
+    EXPECT_EQ(pb[i], b.psa[i]);
+    EXPECT_EQ(pa[j], pb[i]);
+    EXPECT_EQ(a.psa[j], b.psa[i]);
+    EXPECT_EQ(a.sa_abs[j], b.sa_abs[i]);
+    EXPECT_GT(pb[i], 0.0);
+  }
+}
+
 // The recurrence as first written (before issue 13): each record step split into m equal
 // sub-steps taken one after the other, the peaks looked for at every sub-step's end. The
 // calculator now takes one step of dt and computes the inner points directly from the state at

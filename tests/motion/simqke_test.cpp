@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -67,6 +68,49 @@ TEST(MotionSimqke, BinPowerIsTheInterpolatedRatioToThePower) {
     }
   }
   EXPECT_GT(outside, 100);
+}
+
+// A station's ratios after the dead band (ground/station_generator.hpp) are mostly exp(0) = 1,
+// in runs: a bin between two equal ratios takes their power, computed once (issue 38), which is
+// pow of the interpolated ratio, bit for bit (ratio_j + w 0 is ratio_j); where they differ pow
+// of the interpolated ratio itself.
+TEST(MotionSimqke, BinPowerBetweenEqualRatiosIsTheirPower) {
+  const Ec8Spectrum target(Ec8Type::type1, Ec8Ground::C, 0.35 * kGravity);
+  SimqkeGenerator gen(target, 10.0, SimqkeSettings{});
+  const std::size_t np = gen.match_periods().size();
+  std::vector<double> ratio(np, 1.0);
+  for (std::size_t j = 0; j < np; ++j)
+    if (j % 7 == 3 || j % 11 == 5) ratio[j] = std::exp(0.03 * std::sin(double(j)));
+  ratio[20] = ratio[21] = ratio[22] = 1.37;  // a run of equal ratios other than 1
+  std::vector<double> one, p;
+  gen.bin_power(ratio, 1.0, one);  // the interpolated ratio (pow(x, 1) is x)
+  gen.bin_power(ratio, 1.6, p);
+  ASSERT_EQ(p.size(), gen.fft_bins());
+  // The ratio interpolated linearly in ln T, written out here (to round-off: the bins'
+  // frequencies are formed otherwise in the generator), end values held.
+  const std::vector<double>& T = gen.match_periods();
+  const double lt0 = std::log(T.front()), dlt = std::log(T.back() / T.front()) / double(np - 1);
+  int unit = 0, run = 0, between = 0;
+  for (std::size_t k = 1; k < p.size(); ++k) {
+    const double x = (std::log(1.0 / gen.bin_frequency(k)) - lt0) / dlt;
+    const double xc = std::min(std::max(x, 0.0), double(np - 1));
+    const auto j = std::min(std::size_t(xc), np - 2);
+    EXPECT_NEAR(one[k], ratio[j] + (xc - double(j)) * (ratio[j + 1] - ratio[j]), 1e-12)
+        << "bin " << k;
+    EXPECT_EQ(p[k], std::pow(one[k], 1.6)) << "bin " << k;
+    if (one[k] == 1.0) {
+      EXPECT_EQ(p[k], 1.0);
+      ++unit;
+    } else if (one[k] == 1.37) {
+      EXPECT_EQ(p[k], std::pow(1.37, 1.6));
+      ++run;
+    } else {
+      ++between;
+    }
+  }
+  EXPECT_GT(unit, 100);
+  EXPECT_GT(run, 5);
+  EXPECT_GT(between, 100);
 }
 
 TEST(MotionSimqke, DeterministicForSameInputs) {
