@@ -50,6 +50,43 @@ ModalProperties modal_properties(const Eigen::MatrixXd& M, const Eigen::MatrixXd
   return out;
 }
 
+namespace {
+
+// The fastest root [1/s] of a base DOF on its own, m s^2 + c s + k = 0: (c + sqrt(c^2 - 4 m k))
+// / (2 m) where it is overdamped, |s| = sqrt(k / m) where it oscillates.
+double base_root_rate(double m, double c, double k) {
+  const double disc = c * c - 4.0 * m * k;
+  return disc > 0.0 ? (c + std::sqrt(disc)) / (2.0 * m) : std::sqrt(k / m);
+}
+
+// A base mass so light that its own root is far faster than any mode of the building (issue 38:
+// "a stiff root a foundation brings", here the inertial one, C / m_0 of a raft of 100 kg on a
+// Gazetas footing ~ 6e5 1/s) is dropped: the base is taken as massless, a first-order DOF of
+// its spring and dashpot (the singular-perturbation limit m_0 -> 0; Kokotovic, Khalil & O'Reilly
+// 1986, ch. 1), which both solvers step at the building's own rates, where an explicit step
+// would need h < 3.3 / rate. Threshold: rate x T_min >= kLightBase (T_min the fixed-base
+// building's shortest period), the bound of IntegratorSettings::stiff_root's condensation: the
+// base's lag behind its quasi-static motion is at most 2 pi / kLightBase = 6e-4 of it at the
+// building's highest frequency, and the base's own mode is left out of the response.
+constexpr double kLightBase = 1e4;  // [-]
+
+}  // namespace
+
+void drop_light_base_masses(BaseMatrices& out, const Eigen::VectorXd& fixed_periods, int sway,
+                            int rot) {
+  double t_min = std::numeric_limits<double>::infinity();  // [s]
+  for (int i = 0; i < fixed_periods.size(); ++i)
+    if (fixed_periods(i) > 0.0) t_min = std::min(t_min, fixed_periods(i));
+  if (!std::isfinite(t_min)) return;
+  for (const int d : {sway, rot}) {
+    const double m = out.M(d, d), c = out.C(d, d), k = out.K0(d, d);
+    if (m > 0.0 && base_root_rate(m, c, k) * t_min >= kLightBase) {
+      out.M(d, d) = 0.0;
+      out.light_base.push_back(d);
+    }
+  }
+}
+
 BaseMatrices assemble_on_base(const Building& b) {
   const BuildingMatrices fixed = assemble(b);
   BaseMatrices out;
@@ -108,6 +145,7 @@ BaseMatrices assemble_on_base(const Building& b) {
   out.C = T.transpose() * fixed.C * T;
   out.C(sway, sway) += f.sway_damping;
   out.C(rot, rot) += f.rocking_damping;
+  drop_light_base_masses(out, fixed.periods, sway, rot);
   ModalProperties modes = modal_properties(out.M, out.K0, out.C);
   out.periods = std::move(modes.periods);
   out.damping_ratios = std::move(modes.damping_ratios);

@@ -41,8 +41,18 @@ struct BaseMatrices {
   std::vector<double> heights;  ///< H_j of floor j above the base [m]
   bool flexible = false;        ///< sway and rotation DOFs
   double rayleigh_a1 = 0.0;     ///< the fixed-base building's Rayleigh a1 [s] (tangent damping)
+  /// The base DOFs (n: sway, n + 1: rotation) whose mass or rotary inertia was given but is
+  /// taken as 0 (drop_light_base_masses): too light for their foundation's spring and dashpot.
+  std::vector<int> light_base;
   int dofs() const { return static_cast<int>(M.rows()); }
 };
+
+/// Issue 38: each of the base DOFs sway and rot of `out` whose own root (m s^2 + c s + k, the
+/// diagonal entries) is faster than 1e4 / T_min, T_min the shortest of `fixed_periods` [s], is
+/// taken as massless (its M entry set to 0, its index added to out.light_base): the quasi-static
+/// limit of an inertial root no explicit step could follow.
+void drop_light_base_masses(BaseMatrices& out, const Eigen::VectorXd& fixed_periods, int sway,
+                            int rot);
 
 /// The matrices of `b` on its foundation (b.foundation; fixed: the fixed-base building's).
 BaseMatrices assemble_on_base(const Building& b);

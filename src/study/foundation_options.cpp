@@ -27,7 +27,9 @@ std::vector<OptionSpec> foundation_option_specs() {
       {"building#.soil_shear_velocity", "m/s", "", soil + "shear wave velocity Vs > 0 of the soil"},
       {"building#.soil_density", "kg/m^3", "", soil + "mass density rho > 0 of the soil"},
       {"building#.soil_poisson", "-", "", soil + "Poisson's ratio nu of the soil, in [0, 0.5)"},
-      {"building#.foundation_mass", "kg", "0", all + "mass m_0 >= 0 of the base slab"},
+      {"building#.foundation_mass", "kg", "0",
+       all + "mass m_0 >= 0 of the base slab (a base too light for its spring and dashpot, "
+             "its own root above 1e4 / T_min, is taken as massless: docs/ssi.md)"},
       {"building#.foundation_inertia", "kg m^2", "0",
        all + "rotary inertia I_0 >= 0 of the base about the base"},
       {"building#.floor_inertias", "kg m^2", "0",

@@ -22,6 +22,13 @@ void write_foundation(JsonWriter& w, const SimulationRun& run, const AssembledRo
   for (int i = 0; i < std::min<int>(3, static_cast<int>(periods.size())); ++i) w.value(periods(i));
   w.end_array();
   const FoundationConstants f = foundation_constants(bd.foundation);
+  // A base too light for its spring and dashpot is taken as massless (issue 38; structure/
+  // building_on_base.hpp, drop_light_base_masses): its given mass, or inertia, is then not used.
+  const auto dropped = [&](int dof, double given) {
+    return dof >= 0 && given > 0.0 && a.massless[static_cast<std::size_t>(dof)] != 0;
+  };
+  const bool light = dropped(a.sway[static_cast<std::size_t>(b)], f.foundation_mass) ||
+                     dropped(a.rot[static_cast<std::size_t>(b)], f.foundation_inertia);
   w.key("foundation")
       .begin_object()
       .field("kind", std::string(foundation_kind_name(bd.foundation.kind)))
@@ -32,6 +39,7 @@ void write_foundation(JsonWriter& w, const SimulationRun& run, const AssembledRo
       .field("trapped_rocking_inertia", f.trapped_rocking_inertia)
       .field("foundation_mass", f.foundation_mass)
       .field("foundation_inertia", f.foundation_inertia)
+      .field("light_base_taken_massless", light)
       .end_object();
   for (auto [key, dof] :
        {std::pair{"peak_base_sway_m", a.sway[static_cast<std::size_t>(b)]},

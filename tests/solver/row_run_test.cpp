@@ -7,6 +7,7 @@
 // accuracy, fixed bases keep their norm bit for bit.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <string>
 
@@ -14,6 +15,7 @@
 #include "../support/reference_inputs.hpp"
 #include "../support/same_run.hpp"
 #include "simulation/simulate_row.hpp"
+#include "structure/building.hpp"
 
 namespace pound {
 namespace {
@@ -123,6 +125,36 @@ TEST(RowRunOnSoil, FixedBasesKeepTheirNorm) {
     EXPECT_EQ(steps(a), steps(b));
     EXPECT_EQ(test::worst_peaks(a, b), 0.0);
   }
+}
+
+// A raft too light for its dashpots (issue 38, structure/building_on_base.hpp
+// drop_light_base_masses): where its own root C / m times the buildings' shortest period T
+// reaches 1e4 it is taken as massless, and the run steps at the buildings' rates, not at
+// 3.3 / (C / m). The response is continuous across that bound: rafts with C / m = 2e4 / T (taken
+// massless) and 5e3 / T (integrated, its inertial root followed by Dormand-Prince steps) differ by
+// the raft's lag, O(2 pi / (rate T)): measured 2.0e-4; the massless one in a quarter of the
+// steps (5,112 against 20,732; at 2e4 / T integrated, its steps would be four times the
+// latter's).
+TEST(RowRunOnSoil, ARaftTooLightForItsDashpotsIsTakenMassless) {
+  BuildingRow row = raft_pair("elastic", 1e3);
+  double t = 1e9;  // the buildings' shortest fixed-base period [s]
+  for (const Building& b : row.buildings) t = std::min(t, assemble(b).periods.minCoeff());
+  auto with_rate = [&](double rate_t) {  // rafts whose C / m and C_theta / I are rate_t / t
+    BuildingRow r = row;
+    for (Building& b : r.buildings) {
+      b.foundation.foundation_mass = b.foundation.sway_damping * t / rate_t;
+      b.foundation.foundation_inertia = b.foundation.rocking_damping * t / rate_t;
+    }
+    return r;
+  };
+  const RowSimulation light = test::elcentro_hc_run(with_rate(2e4), IntegratorSettings{}, false);
+  const RowSimulation heavy = test::elcentro_hc_run(with_rate(5e3), IntegratorSettings{}, false);
+  std::printf(
+      "[ on soil  ] rafts at 2e4 / T (massless) and 5e3 / T: peaks within %.2e; steps %ld "
+      "and %ld\n",
+      test::worst_peaks(light, heavy), steps(light), steps(heavy));
+  EXPECT_LT(test::worst_peaks(light, heavy), 2e-3);
+  EXPECT_LT(3 * steps(light), steps(heavy));
 }
 
 }  // namespace

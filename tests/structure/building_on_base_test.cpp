@@ -365,5 +365,29 @@ TEST(BuildingOnBase, StepPeriodLeavesOutOverdampedModes) {
       }
 }
 
+// A base too light for its spring and dashpot (issue 38, drop_light_base_masses): where the
+// base's own root, (c + sqrt(c^2 - 4 m k)) / (2 m) overdamped or sqrt(k / m), times the
+// fixed-base building's shortest period reaches 1e4, its mass is taken as 0; just below, kept.
+// The sway of an SDOF (T = 0.5 s) on springs K_x = 1e9 N/m, C_x = 1e7 N s/m: overdamped for
+// m0 < C^2 / (4 K) = 2.5e4 kg, fast root ~ C / m0, so the bound lies near m0 = C T / 1e4 = 500 kg.
+TEST(BuildingOnBase, ABaseTooLightForItsDashpotIsTakenMassless) {
+  Building b = uniform_building(1, 1e5, 4.0 * M_PI * M_PI * 1e5 / 0.25);
+  const double t = assemble(b).periods(0), cx = 1e7, kx = 1e9;
+  ASSERT_NEAR(t, 0.5, 1e-9);
+  auto rate = [&](double m) { return (cx + std::sqrt(cx * cx - 4.0 * m * kx)) / (2.0 * m); };
+  for (const double m0 : {400.0, 480.0, 520.0, 600.0, 4e4}) {
+    SCOPED_TRACE(m0);
+    b.foundation = test::springs_foundation(kx, 1e12, cx, 1e3, m0, 1e6);
+    const BaseMatrices a = assemble_on_base(b);
+    const bool light = rate(m0) * t >= 1e4;
+    EXPECT_EQ(a.M(1, 1), light ? 0.0 : m0);
+    EXPECT_EQ(a.M(2, 2), 1e6);  // the rotation (its own root slow) keeps its inertia
+    EXPECT_EQ(a.light_base, light ? std::vector<int>{1} : std::vector<int>{});
+    EXPECT_EQ(a.periods.size(), light ? 2 : 3);  // the raft's own mode gone with its mass
+  }
+  EXPECT_GE(rate(480.0) * t, 1e4);  // the cases straddle the bound
+  EXPECT_LT(rate(520.0) * t, 1e4);
+}
+
 }  // namespace
 }  // namespace pound
