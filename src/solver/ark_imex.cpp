@@ -96,8 +96,8 @@ const Ark548& Ark548::get() {
   return t;
 }
 
-ImplicitSet stiff_base_dashpots(const AssembledRow& row, const RowDynamics& dyn, double h_max) {
-  constexpr double kExplicitLimit = 3.3;  // Dormand-Prince: stable for -3.3 < h lambda < 0
+ImplicitSet stiff_base_dashpots(const AssembledRow& row, const RowDynamics& dyn, double h_max,
+                                double from) {
   ImplicitSet set;
   if (row.base_damping.empty()) return set;
   const auto& qs = dyn.quasi_static();
@@ -111,7 +111,7 @@ ImplicitSet stiff_base_dashpots(const AssembledRow& row, const RowDynamics& dyn,
     set.lambda.push_back(row.base_damping[d] * im);
     fastest = std::max(fastest, set.lambda.back());
   }
-  if (!(fastest * h_max >= kExplicitLimit)) set = ImplicitSet{};
+  if (!(fastest * h_max >= std::max(from, kDormandPrinceBound))) set = ImplicitSet{};
   return set;
 }
 

@@ -27,13 +27,18 @@ struct ImplicitSet {
 struct AssembledRow;
 class RowDynamics;
 
+/// Dormand-Prince's stability bound on the negative real axis, -3.3 < h lambda (Hairer & Wanner
+/// II, IV.2, Fig. 2.1) [-].
+inline constexpr double kDormandPrinceBound = 3.3;
+
 /// The implicit set of a row (issue 38): the velocities of its bases with mass whose own
-/// dashpots are too stiff for Dormand-Prince's steps of h_max [s], lambda = C_dd / M_d with
-/// lambda h_max >= 3.3 (its stability bound on the negative real axis, Hairer & Wanner II,
-/// IV.2) for one of them (then every base DOF with mass and a dashpot is in the set). Massless
-/// and quasi-statically condensed base DOFs keep their own treatment (RowDynamics::project,
+/// dashpots are too stiff for Dormand-Prince's steps of h_max [s], lambda = C_dd / M_d [1/s] with
+/// lambda h_max >= from [-] (at least kDormandPrinceBound; IntegratorSettings::imex_from) for
+/// one of them (then every base DOF with mass and a dashpot is in the set). Massless and
+/// quasi-statically condensed base DOFs keep their own treatment (RowDynamics::project,
 /// condense_stiff_roots). Empty otherwise: the row steps by Dormand-Prince, as before.
-ImplicitSet stiff_base_dashpots(const AssembledRow& row, const RowDynamics& dyn, double h_max);
+ImplicitSet stiff_base_dashpots(const AssembledRow& row, const RowDynamics& dyn, double h_max,
+                                double from = kDormandPrinceBound);
 
 /// ARK5(4)8L[2]SA's coefficients (Kennedy & Carpenter 2003): the explicit tableau ae, the
 /// ESDIRK ai (diagonal gamma), the nodes c, the weights b and the embedded weights bh.

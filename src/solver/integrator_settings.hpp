@@ -31,8 +31,16 @@ struct IntegratorSettings {
   /// Runge-Kutta pair ARK5(4)8L[2]SA, implicit in those dashpots on the bases' own velocities
   /// (solver/ark_imex.hpp). Off by default: measured, it loses order where the dashpot's force
   /// balances the explicit forces (the soft-soil study took more steps, not fewer; docs/speed.md
-  /// "IMEX steps on soil"); false: Dormand-Prince throughout.
+  /// "IMEX steps on soil"; imex_from chooses it where the dashpots are far stiffer); false:
+  /// Dormand-Prince throughout, but for imex_from.
   bool imex_bases = false;
+  /// Adaptive control: the same IMEX pair chosen once per run, without imex_bases, where a
+  /// massive base's own dashpot rate C_dd / M_d [1/s] times h_max [s] reaches this [-] (issue
+  /// 38: a heavy raft on stiff soil, where Dormand-Prince is held at 3 / lambda; measured on the
+  /// chapter 8 pair on Gazetas footings, docs/speed.md "IMEX steps on soil": the pair takes
+  /// 0.55-0.91 of Dormand-Prince's CPU time from lambda h_max = 79 to 118, 1.08 (elastic
+  /// storeys) and 0.84 (IMK) at 59, 1.8-4.4 at 6 and 20); infinity: never.
+  double imex_from = 80.0;
   /// Adaptive control on a row with flexible bases (issue 38; docs/integration.md, "Step
   /// choice"): each base DOF's entries of the error test measured by what they do to its
   /// building's floors (the sway's and the rotation's lever to the roof, in the floors' scale; a

@@ -183,7 +183,11 @@ void RowRun::set_step_limits() {
       dyn_.layout().storey_states == 0 && dyn_.quasi_static().empty())
     exact_.enable(row_, h_max_, rec_dt_, p_->exact_cache);
   implicit_ = ImplicitSet{};
-  if (s_.imex_bases && !fixed_ && h_max_known) implicit_ = stiff_base_dashpots(row_, dyn_, h_max_);
+  // The IMEX pair where the dashpots are too stiff for Dormand-Prince (imex_bases: beyond its
+  // stability bound; otherwise where lambda h_max reaches imex_from), from the row's data.
+  if (!fixed_ && h_max_known)
+    implicit_ =
+        stiff_base_dashpots(row_, dyn_, h_max_, s_.imex_bases ? kDormandPrinceBound : s_.imex_from);
   if (fixed_ && !(s_.dt > 0)) throw InputError("fixed-step integration needs dt > 0");
   set_base_errors();
   h_ = fixed_ ? s_.dt : std::min(std::min(h_max_, h_explicit_), 1e-4);

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -186,16 +187,18 @@ long steps(const RowSimulation& s) {
   return s.free.steps + s.free.rejected + s.pounding.steps + s.pounding.rejected;
 }
 
-// The raft at 1e5 1/s: Dormand-Prince needs h < 3.3e-5 s there; the IMEX steps (imex_bases)
-// match a fine reference (rtol 1e-11) as Dormand-Prince does, in fewer steps, but far more than
-// the fixed base's (measured: elastic 18,327 against 26,081 and 5,182 fixed; imk 192,866 against
-// 388,169 and 7,248; Dormand-Prince's steps held inside 3 / lambda, RowRun::set_base_errors):
-// the base velocity's error estimate, which the lost order keeps large.
+// The raft at 1e5 1/s (lambda h_max about 360, above IntegratorSettings::imex_from): Dormand-
+// Prince needs h < 3.3e-5 s there; the IMEX steps, chosen by default from the row's data,
+// match a fine Dormand-Prince reference (rtol 1e-11) as Dormand-Prince does, in fewer steps,
+// but far more than the fixed base's (measured: elastic 18,327 against 26,081 and 5,182 fixed;
+// imk 192,866 against 388,169 and 7,248; Dormand-Prince's steps held inside 3 / lambda,
+// RowRun::set_base_errors): the base velocity's error estimate, which the lost order keeps
+// large.
 TEST(ArkImex, StiffRaftAgreesWithTheReference) {
   for (const std::string law : {"elastic", "imk"}) {
     SCOPED_TRACE(law);
-    IntegratorSettings imex, dp, reference;
-    imex.imex_bases = true;
+    IntegratorSettings imex, dp, reference;  // imex: the defaults
+    dp.imex_from = reference.imex_from = std::numeric_limits<double>::infinity();
     reference.rtol = 1e-11;
     reference.atol = 1e-13;
     BuildingRow fixed = raft_pair(law, 1e5);
@@ -229,6 +232,28 @@ TEST(ArkImex, RowsWithoutStiffDashpotsStepAsBefore) {
     EXPECT_EQ(steps(a), steps(b));
     EXPECT_EQ(test::worst_peaks(a, b), 0.0);
   }
+}
+
+// The IMEX pair is chosen once per run from the row's data (issue 38): by default where a
+// massive base's dashpot rate times h_max reaches imex_from (80; the raft at 1e5 1/s, lambda
+// h_max about 360: the same steps as with imex_bases), Dormand-Prince below it (1e4 1/s, about
+// 36: the same steps as with the IMEX pair never chosen, though imex_bases would take it).
+TEST(ArkImex, ChosenByDefaultWhereTheDashpotIsStiff) {
+  IntegratorSettings deflt, forced, never;
+  forced.imex_bases = true;
+  never.imex_from = std::numeric_limits<double>::infinity();
+  const RowSimulation stiff = test::elcentro_hc_run(raft_pair("elastic", 1e5), deflt, false);
+  const RowSimulation stiff_imex = test::elcentro_hc_run(raft_pair("elastic", 1e5), forced, false);
+  const RowSimulation stiff_dp = test::elcentro_hc_run(raft_pair("elastic", 1e5), never, false);
+  EXPECT_EQ(steps(stiff), steps(stiff_imex));
+  EXPECT_EQ(test::worst_peaks(stiff, stiff_imex), 0.0);
+  EXPECT_NE(steps(stiff), steps(stiff_dp));
+  const RowSimulation mild = test::elcentro_hc_run(raft_pair("elastic", 1e4), deflt, false);
+  const RowSimulation mild_imex = test::elcentro_hc_run(raft_pair("elastic", 1e4), forced, false);
+  const RowSimulation mild_dp = test::elcentro_hc_run(raft_pair("elastic", 1e4), never, false);
+  EXPECT_EQ(steps(mild), steps(mild_dp));
+  EXPECT_EQ(test::worst_peaks(mild, mild_dp), 0.0);
+  EXPECT_NE(steps(mild), steps(mild_imex));
 }
 
 // The energy balance on soil (the raft at 2000 1/s, the soft-soil study's order): the residual
