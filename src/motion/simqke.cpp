@@ -422,7 +422,7 @@ void SimqkeGenerator::bin_power(const std::vector<double>& ratio, double power,
       }
     }
     double& h = held[j];
-    if (h < 0.0) h = std::pow(ratio[d.bin_j[k]], power);
+    if (h < 0.0) h = std::pow(ratio[j], power);
     out[k] = h;
   }
 }

@@ -259,10 +259,9 @@ namespace {
 // root 2 k / (c + sqrt(c^2 - 4 m k)) when overdamped) and (2 pi / (root T))^2 for an oscillating
 // one (root sqrt(k / m), whose inertia the condensation leaves out), at most 2 pi / threshold.
 bool stiff_root(double m, double c, double k, double T, double threshold) {
-  const double disc = c * c - 4.0 * m * k;
-  if (m == 0.0) return k / c * T >= threshold;
-  if (disc > 0.0) return 2.0 * k / (c + std::sqrt(disc)) * T >= threshold;
-  const double x = std::sqrt(k / m) * T;
+  const BaseRoots r = base_roots(m, c, k);  // structure/building_on_base.hpp
+  if (r.real) return r.slow * T >= threshold;
+  const double x = r.slow * T;
   return x * x / (2.0 * M_PI) >= threshold;
 }
 

@@ -109,10 +109,16 @@ double RowRun::error_norm_on_soil(const Eigen::VectorXd& y0, const Eigen::Vector
   for (int i = 0; i < row_.floors; ++i) own(i);
   for (int i = n_; i < n_ + row_.floors; ++i) own(i);
   for (int i = 2 * n_; i < m; ++i) own(i);
+  // The floors' largest |u| once per building (its sway and rotation entries share the range).
+  int first = -1, end = -1;
+  double floors = 0.0;  // [m]
   for (const BaseEntry& b : base_entries_) {
-    double scale = b.wu * std::max(std::fabs(y0(b.d)), std::fabs(y1(b.d)));
-    for (int i = b.first; i < b.end; ++i)
-      scale = std::max(scale, std::max(std::fabs(y0(i)), std::fabs(y1(i))));
+    if (b.first != first || b.end != end) {
+      first = b.first, end = b.end, floors = 0.0;
+      for (int i = first; i < end; ++i)
+        floors = std::max(floors, std::max(std::fabs(y0(i)), std::fabs(y1(i))));
+    }
+    const double scale = std::max(b.wu * std::max(std::fabs(y0(b.d)), std::fabs(y1(b.d))), floors);
     const double sc = s_.atol + s_.rtol * scale;
     const double ru = b.wu * err(b.d) / sc, rv = b.wv * err(n_ + b.d) / sc;
     sum += ru * ru + rv * rv;

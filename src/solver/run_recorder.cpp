@@ -38,17 +38,22 @@ __attribute__((target_clones("avx2", "default"))) void peak_bounds_kernel(
 // The same for a row with flexible foundations (issue 29): the drift of DOF i is
 // u_i + wb_i u_bi + wr_i u_ri (wb_i = -1 on the DOF bi below, wr_i = -h_i on the base rotation
 // ri; weight 0 and the DOF itself where there is none), each coefficient formed in the order of
-// peaks_over_step's scalar quintics, so that every bound has their bits.
+// peaks_over_step's scalar quintics, so that every bound has their bits. The DOFs from nf on
+// (the bases' sway and rotation, after every floor: AssembledRow) are foundation springs, whose
+// drift is their displacement: their bound is the displacement's, not formed twice.
 __attribute__((target_clones("avx2", "default"))) void peak_bounds_general_kernel(
-    int n, const double* __restrict u0, const double* __restrict u1, const double* __restrict v0,
-    const double* __restrict v1, const double* __restrict a0, const double* __restrict a1,
-    const int* __restrict bi, const double* __restrict wb, const int* __restrict ri,
-    const double* __restrict wr, double h, double h2, double* __restrict out) {
+    int n, int nf, const double* __restrict u0, const double* __restrict u1,
+    const double* __restrict v0, const double* __restrict v1, const double* __restrict a0,
+    const double* __restrict a1, const int* __restrict bi, const double* __restrict wb,
+    const int* __restrict ri, const double* __restrict wr, double h, double h2,
+    double* __restrict out) {
   const auto bound = [](double g0, double g1, double m0, double m1, double c0, double c1) {
     return QuinticHermite::absmax_bound(g0, g1, m0, m1, c0, c1);
   };
-  for (int i = 0; i < n; ++i) {
+  for (int i = 0; i < n; ++i)
     out[i] = bound(u0[i], u1[i], h * v0[i], h * v1[i], h2 * a0[i], h2 * a1[i]);
+  for (int i = nf; i < n; ++i) out[n + i] = out[i];
+  for (int i = 0; i < nf; ++i) {
     const int b = bi[i], r = ri[i];
     const double kb = wb[i], kr = wr[i], kbh = kb * h, kbh2 = kb * h2, krh = kr * h, krh2 = kr * h2;
     out[n + i] =
@@ -69,6 +74,7 @@ RunRecorder::RunRecorder(const AssembledRow& row, const std::vector<RowStorey>& 
                          bool contacts, bool history)
     : n_(row.dofs()),
       ns_(static_cast<int>(row.sites.size())),
+      nf_(row.floors),
       contacts_(contacts),
       history_(history) {
   below_.assign(n_, -1);
@@ -178,7 +184,7 @@ void RunRecorder::peaks_over_step_general(const Eigen::VectorXd& y0, const Eigen
   const double *u0 = y0.data(), *u1 = y1.data(), *v0 = u0 + n, *v1 = u1 + n;
   const double *a0 = dy0.data() + n, *a1 = dy1.data() + n;
   double* bound = bounds_.data();
-  peak_bounds_general_kernel(n, u0, u1, v0, v1, a0, a1, g_below_.data(), g_wb_.data(),
+  peak_bounds_general_kernel(n, nf_, u0, u1, v0, v1, a0, a1, g_below_.data(), g_wb_.data(),
                              g_rot_.data(), g_wr_.data(), h, h2, bound);
   for (int i = 0; i < n; ++i) {
     if (any_held_ && held_[i]) continue;

@@ -200,6 +200,7 @@ class RunRecorder {
                           double h, double h2, double* out);
 
   int n_ = 0, ns_ = 0;
+  int nf_ = 0;  // the floor DOFs, [0, nf_); the bases' sway and rotation after them
   bool contacts_ = false, history_ = false;
   std::vector<int> below_;      // per DOF: the floor DOF under its storey, -1 on the ground
   std::vector<double> weight_;  // per DOF: 1 where its storey stands on a floor, 0 on the ground

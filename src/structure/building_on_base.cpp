@@ -52,13 +52,6 @@ ModalProperties modal_properties(const Eigen::MatrixXd& M, const Eigen::MatrixXd
 
 namespace {
 
-// The fastest root [1/s] of a base DOF on its own, m s^2 + c s + k = 0: (c + sqrt(c^2 - 4 m k))
-// / (2 m) where it is overdamped, |s| = sqrt(k / m) where it oscillates.
-double base_root_rate(double m, double c, double k) {
-  const double disc = c * c - 4.0 * m * k;
-  return disc > 0.0 ? (c + std::sqrt(disc)) / (2.0 * m) : std::sqrt(k / m);
-}
-
 // A base mass so light that its own root is far faster than any mode of the building (issue 38:
 // "a stiff root a foundation brings", here the inertial one, C / m_0 of a raft of 100 kg on a
 // Gazetas footing ~ 6e5 1/s) is dropped: the base is taken as massless, a first-order DOF of
@@ -72,6 +65,17 @@ constexpr double kLightBase = 1e4;  // [-]
 
 }  // namespace
 
+BaseRoots base_roots(double m, double c, double k) {
+  if (m == 0.0) return {k / c, k / c, true};
+  const double disc = c * c - 4.0 * m * k;
+  if (disc > 0.0) {
+    const double q = c + std::sqrt(disc);
+    return {2.0 * k / q, q / (2.0 * m), true};
+  }
+  const double w = std::sqrt(k / m);
+  return {w, w, false};
+}
+
 void drop_light_base_masses(BaseMatrices& out, const Eigen::VectorXd& fixed_periods, int sway,
                             int rot) {
   double t_min = std::numeric_limits<double>::infinity();  // [s]
@@ -80,7 +84,7 @@ void drop_light_base_masses(BaseMatrices& out, const Eigen::VectorXd& fixed_peri
   if (!std::isfinite(t_min)) return;
   for (const int d : {sway, rot}) {
     const double m = out.M(d, d), c = out.C(d, d), k = out.K0(d, d);
-    if (m > 0.0 && base_root_rate(m, c, k) * t_min >= kLightBase) {
+    if (m > 0.0 && base_roots(m, c, k).fast * t_min >= kLightBase) {
       out.M(d, d) = 0.0;
       out.light_base.push_back(d);
     }

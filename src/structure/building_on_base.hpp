@@ -47,6 +47,18 @@ struct BaseMatrices {
   int dofs() const { return static_cast<int>(M.rows()); }
 };
 
+/// The rates of a base DOF on its own, m s^2 + c s + k = 0 (its diagonal entries: m [kg or
+/// kg m^2], c [N s/m or N m s], k [N/m or N m]): real roots -s, slow <= fast [1/s]
+/// (2 k / (c + sqrt(c^2 - 4 m k)) and (c + sqrt(c^2 - 4 m k)) / (2 m) where it is overdamped;
+/// k / c for both where m = 0), or, where it oscillates (real = false), |s| = sqrt(k / m) for both.
+/// The one formula behind the stiff-root condensation (RowDynamics::condense_stiff_roots) and
+/// the light-base rule (drop_light_base_masses).
+struct BaseRoots {
+  double slow = 0.0, fast = 0.0;  // [1/s]
+  bool real = true;
+};
+BaseRoots base_roots(double m, double c, double k);
+
 /// Issue 38: each of the base DOFs sway and rot of `out` whose own root (m s^2 + c s + k, the
 /// diagonal entries) is faster than 1e4 / T_min, T_min the shortest of `fixed_periods` [s], is
 /// taken as massless (its M entry set to 0, its index added to out.light_base): the quasi-static
