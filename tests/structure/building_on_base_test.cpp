@@ -389,5 +389,36 @@ TEST(BuildingOnBase, ABaseTooLightForItsDashpotIsTakenMassless) {
   EXPECT_LT(rate(520.0) * t, 1e4);
 }
 
+// base_roots(m, c, k) against the quadratic m s^2 + c s + k = 0 it solves: overdamped, the two
+// real rates r satisfy m r^2 - c r + k = 0 (s = -r) and Vieta's slow + fast = c / m,
+// slow x fast = k / m; oscillating, both are |s| = sqrt(k / m); massless, both k / c (the
+// first-order DOF c x' + k x = 0). The case near critical damping (c^2 = 4 m k (1 + 1e-12))
+// keeps the slow root from cancellation (2 k / (c + sqrt(disc)), not (c - sqrt(disc)) / 2m).
+TEST(BuildingOnBase, BaseRootsSolveTheirQuadratic) {
+  struct Case {
+    double m, c, k;
+  };
+  for (const Case& q : {Case{4.8e4, 1.2e7, 2.0e9}, Case{1.0, 6.0e5, 1.0e8}, Case{100.0, 1e3, 1e13},
+                        Case{4.8e4, 2.0 * std::sqrt(4.8e4 * 2.0e9) * (1.0 + 1e-12), 2.0e9}}) {
+    const BaseRoots r = base_roots(q.m, q.c, q.k);
+    const bool over = q.c * q.c > 4.0 * q.m * q.k;
+    EXPECT_EQ(r.real, over);
+    if (over) {
+      EXPECT_LE(r.slow, r.fast);
+      EXPECT_NEAR(r.slow + r.fast, q.c / q.m, 1e-12 * q.c / q.m);
+      EXPECT_NEAR(r.slow * r.fast, q.k / q.m, 1e-11 * q.k / q.m);
+      for (const double x : {r.slow, r.fast})  // each a root, against the terms' size
+        EXPECT_NEAR(q.m * x * x - q.c * x + q.k, 0.0, 1e-12 * (q.m * x * x + q.c * x + q.k));
+    } else {
+      EXPECT_DOUBLE_EQ(r.slow, std::sqrt(q.k / q.m));
+      EXPECT_DOUBLE_EQ(r.fast, r.slow);
+    }
+  }
+  const BaseRoots massless = base_roots(0.0, 2.0e3, 1.0e13);
+  EXPECT_TRUE(massless.real);
+  EXPECT_DOUBLE_EQ(massless.slow, 1.0e13 / 2.0e3);
+  EXPECT_DOUBLE_EQ(massless.fast, massless.slow);
+}
+
 }  // namespace
 }  // namespace pound
