@@ -84,6 +84,10 @@ struct StationSettings {
   std::vector<double>
       positions;        ///< station coordinates along the row [m], strictly increasing, S >= 1
   Coherency coherency;  ///< lagged coherency (none: fully coherent)
+  /// Stations 2.. with a random target iterate on coarse spectra (SimqkeStart::coarse_stride;
+  /// station_generator.cpp, kCoarseStride); false: on full ones at every iteration (the
+  /// generation before issue 38's coarse iterations, for tests and benchmarks).
+  bool coarse_iterations = true;
 };
 
 class StationGenerator {

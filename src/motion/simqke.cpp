@@ -85,6 +85,12 @@ struct SimqkeGenerator::Impl {
   std::vector<std::size_t> bin_j;  // matching-period interval of bin k
   std::vector<double> bin_w;       // weight of j + 1 in log period
   std::unique_ptr<SpectrumCalculator> spectra;
+  double damping = 0.05;  // of the target [-]
+  // The coarse spectrum of SimqkeStart::coarse_stride (made at its first use): its stride [-],
+  // its periods' indices among the matching periods, ascending, the last one included.
+  int coarse_stride = 0;
+  std::unique_ptr<SpectrumCalculator> coarse;
+  std::vector<std::size_t> coarse_at;
   std::unique_ptr<BaselineCorrector> baseline;
   std::vector<double> held_pow;  // ratio_j^relaxation of the current iteration
   double* real = nullptr;        // nfft reals
@@ -97,6 +103,36 @@ struct SimqkeGenerator::Impl {
     if (r2c) fftw_destroy_plan(r2c);
     if (real) fftw_free(real);
     if (spec) fftw_free(spec);
+  }
+
+  void make_coarse(int stride) {
+    if (coarse_stride == stride) return;
+    const std::vector<double>& all = spectra->periods();
+    std::vector<double> periods;
+    coarse_at.clear();
+    for (std::size_t j = 0; j < all.size(); j += std::size_t(stride)) coarse_at.push_back(j);
+    if (coarse_at.back() + 1 != all.size()) coarse_at.push_back(all.size() - 1);
+    for (std::size_t j : coarse_at) periods.push_back(all[j]);
+    coarse = std::make_unique<SpectrumCalculator>(periods, damping, settings.dt);
+    coarse_stride = stride;
+  }
+
+  // The coarse spectrum of `accel` at every matching period [m/s^2]: computed at coarse_at,
+  // between them ref_j exp(e_j), e = ln(psa / ref) linear in the index (the matching periods are
+  // evenly spaced in ln T) from the two computed neighbours; ref is a full spectrum (an earlier
+  // iteration's), whose period-to-period structure the correction keeps.
+  void coarse_psa(const std::vector<double>& accel, const std::vector<double>& ref,
+                  std::vector<double>& part, std::vector<double>& psa) const {
+    coarse->compute_psa(accel, part);
+    psa.resize(ref.size());
+    for (std::size_t c = 0; c < coarse_at.size(); ++c) {
+      psa[coarse_at[c]] = part[c];
+      if (c == 0) continue;
+      const std::size_t lo = coarse_at[c - 1], hi = coarse_at[c];
+      const double e0 = std::log(part[c - 1] / ref[lo]), e1 = std::log(part[c] / ref[hi]);
+      for (std::size_t j = lo + 1; j < hi; ++j)
+        psa[j] = ref[j] * std::exp(e0 + (e1 - e0) * double(j - lo) / double(hi - lo));
+    }
   }
 
   // Ratio target / computed at bin k, interpolated in log period.
@@ -171,6 +207,7 @@ SimqkeGenerator::SimqkeGenerator(const DesignSpectrum& target, double duration,
   const std::vector<double> periods = simqke_match_periods(settings);
   d.target_psa = target.sample(periods);
   d.spectra = std::make_unique<SpectrumCalculator>(periods, target.damping(), dt);
+  d.damping = target.damping();
   d.baseline = std::make_unique<BaselineCorrector>(d.n, dt);
 
   // First guess of the amplitudes and the bins' places among the matching periods.
@@ -330,7 +367,14 @@ SimqkeAttempt SimqkeGenerator::iterate(const SimqkeStart& s, GroundMotion m,
                                        const Correct& correct) {
   Impl& d = *impl_;
   const std::vector<double>& target = s.target;
-  std::vector<double> psa, ratio(target.size());
+  std::vector<double> psa, ratio(target.size()), part, ref;
+  // Coarse (SimqkeStart::coarse_stride): every iteration scored at d.coarse_at only.
+  const bool coarse = s.coarse_stride > 1;
+  if (coarse) {
+    if (s.full_every < 1) throw InputError("motion generator: full_every must be >= 1");
+    d.make_coarse(s.coarse_stride);
+  }
+  const std::size_t scored = coarse ? d.coarse_at.size() : target.size();
   SimqkeAttempt best;
   // The stall rules count from the last iteration that improved by the start's stall_gain (with
   // stall_gain 0 that is the best iteration).
@@ -338,16 +382,25 @@ SimqkeAttempt SimqkeGenerator::iterate(const SimqkeStart& s, GroundMotion m,
   int stall_it = 0;
   for (int it = 0;; ++it) {
     if (it > 0) correct(m, ratio);
-    d.spectra->compute_psa(m.accel, psa);
+    if (coarse && it % s.full_every != 0) {
+      d.coarse_psa(m.accel, ref, part, psa);
+    } else {
+      d.spectra->compute_psa(m.accel, psa);
+      if (coarse) ref = psa;  // the reference of the coarse iterations after it
+    }
     ++best.spectra;
     // Score: the largest |q - 1| over the matching periods, q = computed / target; for a
-    // random target the RMS of ln q instead (simqke.hpp).
+    // random target the RMS of ln q instead (simqke.hpp). Coarse: over the computed periods.
     double max_dev = 0.0, sum_sq = 0.0;
-    for (std::size_t j = 0; j < psa.size(); ++j) {
+    for (std::size_t j = 0, c = 0; j < psa.size(); ++j) {
       if (!(psa[j] > 0.0) || !std::isfinite(psa[j]))
         throw NumericalError("motion generator: non-positive response spectrum at T = " +
                              std::to_string(d.spectra->periods()[j]) + " s");
       ratio[j] = target[j] / psa[j];
+      if (coarse) {
+        if (j != d.coarse_at[c]) continue;
+        ++c;
+      }
       const double q = psa[j] / target[j];
       max_dev = std::max(max_dev, std::fabs(q - 1.0));
       if (s.rms_score) {
@@ -355,13 +408,15 @@ SimqkeAttempt SimqkeGenerator::iterate(const SimqkeStart& s, GroundMotion m,
         sum_sq += lq * lq;
       }
     }
-    const double score = s.rms_score ? std::sqrt(sum_sq / double(psa.size())) : max_dev;
+    const double score = s.rms_score ? std::sqrt(sum_sq / double(scored)) : max_dev;
     if (score < best.score) {
       best.score = score;
       best.motion = m;
       best.iterations = it;
-      best.match = compare_spectra(psa, target);
-      best.psa = psa;
+      if (!coarse) {
+        best.match = compare_spectra(psa, target);
+        best.psa = psa;
+      }
     }
     if (score < stall_score * (1.0 - s.stall_gain)) {
       stall_score = score;
@@ -375,6 +430,21 @@ SimqkeAttempt SimqkeGenerator::iterate(const SimqkeStart& s, GroundMotion m,
     if (it - stall_it >= 2 * d.settings.stall) break;  // stuck: next phase set
   }
   return best;
+}
+
+void SimqkeGenerator::score(const SimqkeStart& s, SimqkeAttempt& a) const {
+  std::vector<double>& psa = a.psa;
+  spectrum(a.motion, psa);
+  ++a.spectra;
+  double max_dev = 0.0, sum_sq = 0.0;
+  for (std::size_t i = 0; i < psa.size(); ++i) {
+    const double q = psa[i] / s.target[i];
+    max_dev = std::max(max_dev, std::fabs(q - 1.0));
+    const double lq = std::log(q);  // one call (the same bits as two)
+    sum_sq += lq * lq;
+  }
+  a.score = s.rms_score ? std::sqrt(sum_sq / double(psa.size())) : max_dev;
+  a.match = compare_spectra(psa, s.target);
 }
 
 void SimqkeGenerator::transform(const std::vector<double>& accel,

@@ -118,6 +118,15 @@ struct SimqkeStart {
   /// times the score of the last iteration that did [-] (0: any improvement; the best motion
   /// is kept either way).
   double stall_gain = 0.0;
+  /// > 1: coarse iterations. Iterations 0, full_every, 2 full_every, ... take the spectrum at
+  /// every matching period (the reference R); the others at every coarse_stride-th one only (and
+  /// the last), and between those ln(PSA / R) linearly in ln T (R's period-to-period structure
+  /// kept), for the correction. Every iteration is scored over the coarse periods alone. The
+  /// returned attempt is then unscored: its psa is empty and its score the coarse one;
+  /// SimqkeGenerator::score gives it its full spectrum and score. 1: every matching period at
+  /// every iteration [-].
+  int coarse_stride = 1;
+  int full_every = 4;  ///< see coarse_stride, >= 1 [-]
 };
 
 /// The best iteration of one phase set (SimqkeGenerator::match).
@@ -195,6 +204,10 @@ class SimqkeGenerator {
   void correct(GroundMotion& m, const std::vector<double>& ratio);
   /// The pseudo-acceleration of `m` at the matching periods [m/s^2].
   void spectrum(const GroundMotion& m, std::vector<double>& psa) const;
+  /// The spectrum of a.motion at every matching period into a.psa, its score against s.target
+  /// (max |q - 1|, or the RMS of ln q with s.rms_score, as match() scores) and a.match; one
+  /// more evaluation in a.spectra.
+  void score(const SimqkeStart& s, SimqkeAttempt& a) const;
   /// The Fourier transform of a record of the generator's length zero-padded to the FFT length
   /// (unnormalised, fft_bins() values) [m/s^2 x samples].
   void transform(const std::vector<double>& accel, std::vector<std::complex<double>>& x);

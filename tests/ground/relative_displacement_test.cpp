@@ -118,10 +118,10 @@ Relative relative_energy(const PairSet& s, std::size_t j, std::size_t k) {
 
 // Every model at 12 and 50 m, 60 motions each, with random targets (the campaigns' default) and
 // with the design spectrum (docs/ground.md, "The relative displacement of generated pairs";
-// measured ratios of the RMS relative displacement to the model's: random targets 0.81-1.02,
-// design spectrum 0.90-1.11, Abrahamson rock 1.32 and 1.18, 2.83 and 1.38):
+// measured ratios of the RMS relative displacement to the model's: random targets 0.80-1.02,
+// design spectrum 0.90-1.11, Abrahamson rock 1.31 and 1.14, 2.83 and 1.38):
 //  * the generation does not make the pair much more coherent than the model: the ratio is at
-//    least 0.78 (HV86 at 50 m with random targets: 0.81, the pairs a little more coherent than
+//    least 0.78 (HV86 at 50 m with random targets: 0.80, the pairs a little more coherent than
 //    the model at 0.2-1 Hz);
 //  * it is at most 1.10 with random targets, 1.12 with the design spectrum, for every model but
 //    Abrahamson rock, whose prediction (0.14-0.7 mm, about 0.1-0.5 % of the RMS displacement)

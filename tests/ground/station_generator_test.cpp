@@ -370,5 +370,47 @@ TEST(GroundStations, RandomTargetStationsMatchAndCohere) {
   }
 }
 
+// Coarse iterations (issue 38: stations 2.. with a random target take the spectrum at every
+// fourth matching period, in full at every fourth iteration and for the kept one) match as the
+// full iterations do: over 30 random targets, two stations 20 m apart under
+// Harichandran-Vanmarcke, station 2's RMS ln(computed / target) has a mean within 2 % and a
+// median within 0.005 of the full iterations' (measured: mean 0.0958 against 0.0967, median
+// 0.0877 against 0.0892). Station 1 is the same motion either way.
+TEST(GroundStations, CoarseIterationsMatchAsFullOnes) {
+  StationSettings st;
+  st.positions = {0.0, 20.0};
+  st.coherency = hv();
+  StationGenerator coarse(target(), 10.0, SimqkeSettings{}, st);
+  st.coarse_iterations = false;
+  StationGenerator full(target(), 10.0, SimqkeSettings{}, st);
+  VariabilitySettings vs;
+  vs.mode = Variability::spectral;
+  const TargetVariability var(vs, coarse.match_periods());
+  const CounterRng rng(7, stream_id(kTargetStream));
+  std::vector<double> score[2];  // station 2's: 0 full, 1 coarse
+  for (std::uint64_t i = 0; i < 30; ++i) {
+    const std::vector<double> ln = var.ln_factor(var.epsilon(rng, i));
+    const std::vector<GeneratedMotion> f = full.generate(7, i, ln), c = coarse.generate(7, i, ln);
+    EXPECT_EQ(f[0].motion.accel, c[0].motion.accel);  // station 1 as it was
+    for (int k = 0; k < 2; ++k) {
+      const GeneratedMotion& m = (k == 0 ? f : c)[1];
+      double sum = 0.0;
+      for (std::size_t j = 0; j < m.psa.size(); ++j)
+        sum += std::pow(std::log(m.psa[j] / m.target_psa[j]), 2);
+      score[k].push_back(std::sqrt(sum / double(m.psa.size())));
+    }
+  }
+  double mean[2];
+  for (int k = 0; k < 2; ++k) {
+    mean[k] = 0.0;
+    for (double v : score[k]) mean[k] += v / double(score[k].size());
+  }
+  const double med_full = median(score[0]), med_coarse = median(score[1]);
+  std::printf("station 2, RMS score: full mean %.4f median %.4f, coarse mean %.4f median %.4f\n",
+              mean[0], med_full, mean[1], med_coarse);
+  EXPECT_NEAR(mean[1], mean[0], 0.02 * mean[0]);
+  EXPECT_NEAR(med_coarse, med_full, 0.005);
+}
+
 }  // namespace
 }  // namespace pound

@@ -126,6 +126,60 @@ TEST(MotionSimqke, DeterministicForSameInputs) {
   EXPECT_DOUBLE_EQ(a.dt, 0.01);
 }
 
+// Coarse iterations (SimqkeStart::coarse_stride, issue 38): a corrector that scales the motion
+// by 1.1 leaves its spectrum's shape as it is (the oscillators are linear: PSA(1.1^i a) = 1.1^i
+// PSA(a)), so the coarse spectrum, the full one of iteration 0 (the reference) scaled by the
+// computed periods' ratio and interpolated between them, is 1.1^i times it at every matching
+// period, the computed and the skipped alike (to round-off), and so is the ratio the corrector is
+// given. Plain interpolation of ln PSA between the computed periods misses the skipped ones by
+// the spectrum's own roughness (here up to about 10 %). The returned attempt is scored over the
+// coarse periods, its psa empty; score() gives it the full spectrum and score.
+TEST(MotionSimqke, CoarseIterationsKeepTheReferenceShape) {
+  const Ec8Spectrum target(Ec8Type::type1, Ec8Ground::C, 0.35 * kGravity);
+  SimqkeGenerator gen(target, 10.0, SimqkeSettings{});
+  SimqkeStart s = gen.start();
+  s.coarse_stride = 4;
+  s.full_every = 1000;  // the full spectrum at iteration 0 alone
+  std::vector<double> re, im, full, psa;
+  simqke_phasors(11, 0, 0, s.amplitude, re, im);
+  const GroundMotion m0 = gen.synthesise(s, re, im);
+  gen.spectrum(m0, full);
+  const std::size_t np = full.size();
+  int calls = 0;
+  double largest = 0.0, off = 0.0;  // |relative error| of the ratio; of plain interpolation
+  const SimqkeGenerator::Corrector scale = [&](GroundMotion& m, const std::vector<double>& ratio) {
+    const double f = std::pow(1.1, calls);  // the ratio given is of iteration `calls`
+    ASSERT_EQ(ratio.size(), np);
+    for (std::size_t j = 0; j < np; ++j) {
+      largest = std::max(largest, std::fabs(ratio[j] * f * full[j] / s.target[j] - 1.0));
+      if (j % 4 == 2 && j + 2 < np)  // the mid-point in ln T of two computed periods
+        off = std::max(off, std::fabs(std::sqrt(full[j - 2] * full[j + 2]) / full[j] - 1.0));
+    }
+    for (double& a : m.accel) a *= 1.1;
+    ++calls;
+  };
+  SimqkeAttempt a = gen.match(s, m0, scale);
+  EXPECT_GE(calls, 3);
+  EXPECT_LT(largest, 1e-12);
+  EXPECT_GT(off, 0.02);  // the test would see a plain interpolation
+  EXPECT_TRUE(a.psa.empty());
+  // The coarse score of the kept iteration: max |q - 1| over periods 0, 4, 8, ... and the last.
+  const double g = std::pow(1.1, a.iterations);
+  double coarse = 0.0;
+  for (std::size_t j = 0; j < np; ++j)
+    if (j % 4 == 0 || j + 1 == np)
+      coarse = std::max(coarse, std::fabs(g * full[j] / s.target[j] - 1.0));
+  EXPECT_NEAR(a.score, coarse, 1e-12);
+  const int evaluations = a.spectra;
+  gen.score(s, a);
+  gen.spectrum(a.motion, psa);
+  EXPECT_EQ(a.psa, psa);
+  EXPECT_EQ(a.spectra, evaluations + 1);
+  double dev = 0.0;
+  for (std::size_t j = 0; j < np; ++j) dev = std::max(dev, std::fabs(psa[j] / s.target[j] - 1.0));
+  EXPECT_EQ(a.score, dev);
+}
+
 // Issue 4 acceptance: every motion within 0.90-1.20 of the target at 100 log-spaced periods
 // 0.05-4 s (5 %, sub-steps of T/20), the mean within 0.95-1.05, final velocity < 1 cm/s and
 // final displacement < 1 cm.
