@@ -125,13 +125,17 @@ struct SimqkeGenerator::Impl {
                   std::vector<double>& part, std::vector<double>& psa) const {
     coarse->compute_psa(accel, part);
     psa.resize(ref.size());
+    double e0 = 0.0;  // ln(psa / ref) at the interval's lower computed period (one log each)
     for (std::size_t c = 0; c < coarse_at.size(); ++c) {
-      psa[coarse_at[c]] = part[c];
-      if (c == 0) continue;
-      const std::size_t lo = coarse_at[c - 1], hi = coarse_at[c];
-      const double e0 = std::log(part[c - 1] / ref[lo]), e1 = std::log(part[c] / ref[hi]);
-      for (std::size_t j = lo + 1; j < hi; ++j)
-        psa[j] = ref[j] * std::exp(e0 + (e1 - e0) * double(j - lo) / double(hi - lo));
+      const std::size_t hi = coarse_at[c];
+      psa[hi] = part[c];
+      const double e1 = std::log(part[c] / ref[hi]);
+      if (c > 0) {
+        const std::size_t lo = coarse_at[c - 1];
+        for (std::size_t j = lo + 1; j < hi; ++j)
+          psa[j] = ref[j] * std::exp(e0 + (e1 - e0) * double(j - lo) / double(hi - lo));
+      }
+      e0 = e1;
     }
   }
 
